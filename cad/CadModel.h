@@ -1,0 +1,90 @@
+#pragma once
+// CadModel — a CAD file read through OpenCASCADE, behind an interface that does not expose
+// OCCT (the CLI and the tests include this header without OCCT's include path).
+//
+//   CadModel m = CadModel::read("part.step");   // throws InputError naming the file
+//   ShapeSummary before = m.summary();          // what OCCT read, no healing
+//   PrepareReport r = m.prepare(opts);          // fix, sew, fragment (conformal assemblies)
+//   Model model = m.topology();                 // the mesher's view (mesher/model/Model.h)
+//
+// OCCT exceptions never escape: they become InputError (reading) or MeshingError.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "mesher/core/Types.h"
+#include "mesher/model/Model.h"
+
+namespace aniso::cad {
+
+enum class CadFormat { Step, Iges, Brep };
+const char* formatName(CadFormat f);
+
+struct SolidSummary {
+  int id = 0;           ///< 1-based, MapShapes order
+  std::string name;     ///< part name from STEP, else "SOLID<id>"
+  double volume = 0;
+};
+
+/// Counts and measures of a shape, entities counted once each (TopExp::MapShapes).
+struct ShapeSummary {
+  int solids = 0, shells = 0, faces = 0, edges = 0, vertices = 0;
+  double volume = 0;  ///< sum of the solids' volumes
+  double area = 0;    ///< sum of the faces' areas
+  Box3 bbox;
+  std::vector<SolidSummary> solidList;
+};
+
+struct PrepareOptions {
+  bool fix = true;        ///< ShapeFix on the whole shape
+  bool sew = true;        ///< sew loose faces into shells (tolerance relative to model size)
+  bool fragment = true;   ///< general fuse of the solids: conformal interfaces (--no-fragment)
+  /// Sewing tolerance as a fraction of the bounding-box diagonal.
+  double sewRelTolerance = 1e-6;
+};
+
+struct PrepareReport {
+  int facesSewn = 0;                                ///< loose faces joined into shells
+  int sharedFaces = 0;                              ///< faces used by two solids after fragmenting
+  std::vector<std::pair<int, int>> overlappingSolids;  ///< 1-based ids (as read) of solids that overlap
+  std::vector<std::string> warnings;
+};
+
+class CadModel {
+ public:
+  /// Reads a STEP, IGES or BREP file. The reader is chosen by the file's content first
+  /// (STEP "ISO-10303-21", IGES's 80-column S/G/D/P/T records, BREP's "DBRep_DrawableShape"
+  /// or "CASCADE Topology"), by extension second. Throws InputError with a one-line message
+  /// naming the file for a missing, unreadable, empty, non-CAD or shapeless file.
+  static CadModel read(const std::string& path);
+
+  CadModel(CadModel&&) noexcept;
+  CadModel& operator=(CadModel&&) noexcept;
+  ~CadModel();
+
+  const std::string& path() const;
+  CadFormat format() const;
+
+  /// Summary of the current shape (as read, or as prepared after prepare()).
+  ShapeSummary summary() const;
+
+  /// Healing and conformal assembly (see PrepareOptions). Throws MeshingError if OCCT
+  /// fails in a way that leaves no usable shape.
+  PrepareReport prepare(const PrepareOptions& options);
+
+  /// The mesher's topology of the current shape.
+  Model topology() const;
+
+  /// Writes the current shape as BREP (for debugging and for the FreeCAD macro's tests).
+  void writeBrep(const std::string& path) const;
+
+  struct Impl;  // holds the TopoDS_Shape and the part names (cad/detail/CadModelImpl.h)
+  Impl& impl() { return *impl_; }
+  const Impl& impl() const { return *impl_; }
+
+ private:
+  explicit CadModel(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace aniso::cad

@@ -1,0 +1,18 @@
+#pragma once
+// Internal: builds the mesher's Model (mesher/model/Model.h) from an OCCT shape.
+// Ids follow TopExp::MapShapes order of the whole shape, 1-based.
+#include <TopoDS_Shape.hxx>
+
+#include <functional>
+#include <string>
+
+#include "mesher/model/Model.h"
+
+namespace aniso::cad {
+
+/// `solidName(solid, id)` names each solid (see CadModel::Impl::solidName).
+/// Throws MeshingError naming the face when a face has no usable pcurve or surface.
+Model buildTopology(const TopoDS_Shape& shape,
+                    const std::function<std::string(const TopoDS_Shape&, int)>& solidName);
+
+}  // namespace aniso::cad

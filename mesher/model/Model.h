@@ -1,0 +1,100 @@
+#pragma once
+// Model — the boundary representation the mesher consumes (thesis sec. 6.2), independent of
+// OCCT. cad/ builds it from a CAD file; tests build it from analytic geometry.
+//
+// Numbering: every entity vector is indexed 0..n−1 and the entity's public id is index+1,
+// in OCCT's TopExp::MapShapes order when built from CAD (the numbering FreeCAD's FaceN
+// and Gmsh's OCC kernel use). All cross references below are 0-based indices.
+#include <string>
+#include <vector>
+
+#include "mesher/core/Types.h"
+#include "mesher/geometry/ParametricCurve2d.h"
+#include "mesher/geometry/ParametricCurve3d.h"
+#include "mesher/geometry/ParametricSurface.h"
+
+namespace aniso {
+
+struct ModelVertex {
+  Vec3 p;
+  double tolerance = 0;  ///< CAD tolerance of the vertex (model units)
+};
+
+/// The parametric curve of an edge on one of its faces. A seam edge (closed periodic
+/// surface) has two pcurves on the same face: `seamSecond` marks the one that goes with
+/// the edge's REVERSED use in that face.
+struct PCurve {
+  int face = -1;
+  Curve2dPtr curve;
+  double t0 = 0, t1 = 0;  ///< parameter range on this pcurve (same as the edge's, OCCT SameParameter)
+  bool seamSecond = false;
+};
+
+struct ModelEdge {
+  int v0 = -1, v1 = -1;        ///< vertices at t0 and t1 (equal for a closed edge)
+  Curve3dPtr curve;            ///< null for a degenerate edge (a pole)
+  double t0 = 0, t1 = 0;       ///< parameter range used by the edge
+  bool degenerate = false;     ///< collapses to a point in 3D (pole of a sphere, apex of a cone)
+  bool seam = false;           ///< is a seam on at least one face (two pcurves there)
+  double tolerance = 0;
+  std::vector<PCurve> pcurves; ///< one per adjacent face, two on a face where it is a seam
+  std::vector<int> faces;      ///< adjacent faces (each once)
+};
+
+/// One oriented use of an edge in a loop. Walking the loop, the use runs from the edge's
+/// v0 to v1 when !reversed, from v1 to v0 when reversed, with the face on the left in the
+/// face's parametric plane (for a face that is not reversed).
+struct EdgeUse {
+  int edge = -1;
+  bool reversed = false;
+  int pcurve = -1;  ///< index into edges[edge].pcurves
+};
+
+struct Loop {
+  std::vector<EdgeUse> uses;  ///< in walking order
+  bool outer = false;
+};
+
+struct ModelFace {
+  SurfacePtr surface;
+  bool reversed = false;    ///< the face normal is −(pu × pv)
+  std::vector<Loop> loops;  ///< the outer loop first, then the inner loops (holes)
+  Box2 uvBounds;            ///< parametric bounds of the face (trimmed)
+  double tolerance = 0;
+};
+
+struct FaceUse {
+  int face = -1;
+  bool reversed = false;  ///< the face's orientation in this shell
+};
+
+struct ModelShell {
+  std::vector<FaceUse> faces;
+  bool closed = false;  ///< every edge (not degenerate, not seam) used by exactly two faces
+};
+
+struct ModelSolid {
+  std::string name;            ///< STEP part name, or "SOLID<n>"
+  int outerShell = -1;
+  std::vector<int> voidShells; ///< inner shells bounding cavities
+};
+
+struct Model {
+  std::vector<ModelVertex> vertices;
+  std::vector<ModelEdge> edges;
+  std::vector<ModelFace> faces;
+  std::vector<ModelShell> shells;
+  std::vector<ModelSolid> solids;
+  Box3 bbox;
+
+  /// Size of the model: the bounding-box diagonal. Tolerances and sizes relative to the
+  /// model (--hmax-rel, the g_min guard, ...) are taken relative to this.
+  double diagonal() const { return bbox.diagonal(); }
+
+  /// Structural checks: references in range, every loop closed in parametric space within
+  /// tolerance, pcurves present for every (edge, face) use. Returns one message per
+  /// problem, each naming the entity by its 1-based id; empty when valid.
+  std::vector<std::string> validate() const;
+};
+
+}  // namespace aniso
