@@ -1,0 +1,395 @@
+// make_models: writes anisomesh's own sample models as STEP AP214 through XCAF.
+//
+//   make_models OUTDIR        build the four models and write OUTDIR/{bracket,assembly2,plate,cylinder}.step
+//   make_models --check FILE  read FILE with STEPCAFControl_Reader and print solids, volume, part names
+//
+// Output is deterministic: the STEP header (name, time stamp, author, organization,
+// originating system) is set to fixed values before writing, so running twice gives
+// byte-identical files. All dimensions are in millimetres.
+//
+// This is a tool, not library code: it uses OpenCASCADE directly.
+
+#include <APIHeaderSection_MakeHeader.hxx>
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepAlgoAPI_Cut.hxx>
+#include <BRepAlgoAPI_Fuse.hxx>
+#include <BRepBndLib.hxx>
+#include <BRepCheck_Analyzer.hxx>
+#include <BRepFilletAPI_MakeFillet.hxx>
+#include <BRepGProp.hxx>
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeCylinder.hxx>
+#include <BRep_Tool.hxx>
+#include <Bnd_Box.hxx>
+#include <GProp_GProps.hxx>
+#include <IFSelect_ReturnStatus.hxx>
+#include <Interface_Static.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <STEPCAFControl_Controller.hxx>
+#include <STEPCAFControl_Reader.hxx>
+#include <STEPCAFControl_Writer.hxx>
+#include <STEPControl_Writer.hxx>
+#include <ShapeUpgrade_UnifySameDomain.hxx>
+#include <StepData_StepModel.hxx>
+#include <Standard_Failure.hxx>
+#include <TCollection_AsciiString.hxx>
+#include <TCollection_ExtendedString.hxx>
+#include <TCollection_HAsciiString.hxx>
+#include <TDF_Label.hxx>
+#include <TDF_LabelSequence.hxx>
+#include <TDataStd_Name.hxx>
+#include <TDocStd_Document.hxx>
+#include <TopAbs.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopLoc_Location.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Shape.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <XCAFApp_Application.hxx>
+#include <XCAFDoc_DocumentTool.hxx>
+#include <XCAFDoc_ShapeTool.hxx>
+#include <gp_Ax2.hxx>
+#include <gp_Pnt.hxx>
+#include <gp_Trsf.hxx>
+#include <gp_Vec.hxx>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace {
+
+constexpr const char* kTimeStamp = "2024-01-01T00:00:00";
+
+[[noreturn]] void fail(const std::string& msg) { throw std::runtime_error(msg); }
+
+// ---------------------------------------------------------------- checks
+
+void checkShape(const TopoDS_Shape& s, const std::string& what, int expectedSolids) {
+  if (s.IsNull()) fail(what + ": null shape");
+  BRepCheck_Analyzer ana(s);
+  if (!ana.IsValid()) fail(what + ": BRepCheck_Analyzer reports an invalid shape");
+  int solids = 0;
+  for (TopExp_Explorer ex(s, TopAbs_SOLID); ex.More(); ex.Next()) ++solids;
+  if (solids != expectedSolids)
+    fail(what + ": expected " + std::to_string(expectedSolids) + " solid(s), got " + std::to_string(solids));
+  GProp_GProps props;
+  BRepGProp::VolumeProperties(s, props);
+  if (!(props.Mass() > 0.0)) fail(what + ": non-positive volume");
+}
+
+// ---------------------------------------------------------------- geometry
+
+TopoDS_Shape box(double x0, double y0, double z0, double dx, double dy, double dz) {
+  BRepPrimAPI_MakeBox mk(gp_Pnt(x0, y0, z0), dx, dy, dz);
+  mk.Build();
+  if (!mk.IsDone()) fail("box construction failed");
+  return mk.Shape();
+}
+
+TopoDS_Shape cylinder(const gp_Pnt& base, const gp_Dir& axis, double r, double h) {
+  BRepPrimAPI_MakeCylinder mk(gp_Ax2(base, axis), r, h);
+  mk.Build();
+  if (!mk.IsDone()) fail("cylinder construction failed");
+  return mk.Shape();
+}
+
+TopoDS_Shape cut(const TopoDS_Shape& a, const TopoDS_Shape& b, const char* what) {
+  BRepAlgoAPI_Cut op(a, b);
+  if (!op.IsDone() || op.HasErrors()) fail(std::string(what) + ": boolean cut failed");
+  return op.Shape();
+}
+
+// Straight edges whose two end points both satisfy `pred`.
+std::vector<TopoDS_Edge> edgesWhere(const TopoDS_Shape& s,
+                                    const std::function<bool(const gp_Pnt&, const gp_Pnt&)>& pred) {
+  std::vector<TopoDS_Edge> out;
+  TopTools_IndexedMapOfShape edges;
+  TopExp::MapShapes(s, TopAbs_EDGE, edges);
+  for (int i = 1; i <= edges.Extent(); ++i) {
+    const TopoDS_Edge& e = TopoDS::Edge(edges(i));
+    if (BRep_Tool::Degenerated(e)) continue;
+    if (BRepAdaptor_Curve(e).GetType() != GeomAbs_Line) continue;
+    TopoDS_Vertex v1, v2;
+    TopExp::Vertices(e, v1, v2);
+    if (v1.IsNull() || v2.IsNull()) continue;
+    if (pred(BRep_Tool::Pnt(v1), BRep_Tool::Pnt(v2))) out.push_back(e);
+  }
+  return out;
+}
+
+bool near(double a, double b) { return std::abs(a - b) < 1e-4; }
+
+// L-shaped bracket (mm):
+//   base plate   x 0..80, y 0..50, z 0..8
+//   upright      x 0..8,  y 0..50, z 0..60   (overlaps the base's end; overall height 60)
+//   fillets      r 6 on the inner corner edge of the L (x=8, z=8, along y),
+//                r 10 on the two outer vertical edges at the free end of the base (x=80)
+//   holes        two d 8 through the base at (55,15) and (55,35), along z;
+//                one d 12 through the upright at (y 25, z 40), along x
+TopoDS_Shape makeBracket() {
+  const double L = 80, W = 50, T = 8, H = 60;
+  TopoDS_Shape base = box(0, 0, 0, L, W, T);
+  TopoDS_Shape upright = box(0, 0, 0, T, W, H);
+
+  BRepAlgoAPI_Fuse fuse(base, upright);
+  if (!fuse.IsDone() || fuse.HasErrors()) fail("bracket: fuse failed");
+  // Merge the coplanar faces the fuse leaves split (bottom, back, sides).
+  ShapeUpgrade_UnifySameDomain unify(fuse.Shape(), Standard_True, Standard_True, Standard_True);
+  unify.Build();
+  TopoDS_Shape l = unify.Shape();
+
+  // Inner corner of the L: the edge along y at x = T, z = T.
+  auto inner = edgesWhere(l, [&](const gp_Pnt& a, const gp_Pnt& b) {
+    return near(a.X(), T) && near(b.X(), T) && near(a.Z(), T) && near(b.Z(), T);
+  });
+  // Outer vertical edges at the free end of the base: along z at x = L.
+  auto outer = edgesWhere(l, [&](const gp_Pnt& a, const gp_Pnt& b) {
+    return near(a.X(), L) && near(b.X(), L) && near(a.Y(), b.Y()) && !near(a.Z(), b.Z());
+  });
+  if (inner.size() != 1) fail("bracket: expected 1 inner corner edge, found " + std::to_string(inner.size()));
+  if (outer.size() != 2) fail("bracket: expected 2 outer vertical edges, found " + std::to_string(outer.size()));
+
+  BRepFilletAPI_MakeFillet fillet(l);
+  fillet.Add(6.0, inner[0]);
+  for (const auto& e : outer) fillet.Add(10.0, e);
+  fillet.Build();
+  if (!fillet.IsDone()) fail("bracket: fillet failed");
+  TopoDS_Shape s = fillet.Shape();
+
+  const gp_Dir Z(0, 0, 1), X(1, 0, 0);
+  s = cut(s, cylinder(gp_Pnt(55, 15, -1), Z, 4.0, T + 2), "bracket base hole 1");
+  s = cut(s, cylinder(gp_Pnt(55, 35, -1), Z, 4.0, T + 2), "bracket base hole 2");
+  s = cut(s, cylinder(gp_Pnt(-1, 25, 40), X, 6.0, T + 2), "bracket upright hole");
+  return s;
+}
+
+// Thin plate 100 x 60 x 1 with one d 20 through-hole at the centre.
+TopoDS_Shape makePlate() {
+  TopoDS_Shape p = box(0, 0, 0, 100, 60, 1);
+  return cut(p, cylinder(gp_Pnt(50, 30, -1), gp_Dir(0, 0, 1), 10.0, 3.0), "plate hole");
+}
+
+// Cylinder r 10, h 40, axis z from the origin.
+TopoDS_Shape makeCylinder() { return cylinder(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1), 10.0, 40.0); }
+
+// ---------------------------------------------------------------- XCAF / STEP
+
+Handle(TDocStd_Document) newDoc() {
+  Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
+  Handle(TDocStd_Document) doc;
+  app->NewDocument("MDTV-XCAF", doc);
+  if (doc.IsNull()) fail("cannot create an XCAF document");
+  return doc;
+}
+
+void setName(const TDF_Label& l, const char* name) {
+  TDataStd_Name::Set(l, TCollection_ExtendedString(name));
+}
+
+void writeStep(const Handle(TDocStd_Document)& doc, const std::filesystem::path& path) {
+  STEPCAFControl_Writer writer;
+  writer.SetNameMode(Standard_True);
+  writer.SetColorMode(Standard_False);
+  writer.SetLayerMode(Standard_False);
+  writer.SetPropsMode(Standard_False);
+  if (!writer.Transfer(doc, STEPControl_AsIs)) fail(path.string() + ": XCAF transfer failed");
+
+  Handle(StepData_StepModel) model = writer.ChangeWriter().Model();
+  if (model.IsNull()) fail(path.string() + ": no STEP model after transfer");
+  APIHeaderSection_MakeHeader header(model);
+  if (!header.HasFn()) fail(path.string() + ": STEP model has no FILE_NAME header");
+  header.SetName(new TCollection_HAsciiString(path.filename().string().c_str()));
+  header.SetTimeStamp(new TCollection_HAsciiString(kTimeStamp));
+  header.SetAuthorValue(1, new TCollection_HAsciiString("anisomesh"));
+  header.SetOrganizationValue(1, new TCollection_HAsciiString("anisomesh"));
+  header.SetOriginatingSystem(new TCollection_HAsciiString("anisomesh make_models"));
+  header.SetAuthorisation(new TCollection_HAsciiString(""));
+  header.Apply(model);
+
+  if (writer.Write(path.string().c_str()) != IFSelect_RetDone) fail(path.string() + ": STEP write failed");
+  std::cout << "wrote " << path.string() << "\n";
+}
+
+void writeSinglePart(const TopoDS_Shape& s, const char* name, const std::filesystem::path& path) {
+  checkShape(s, name, 1);
+  Handle(TDocStd_Document) doc = newDoc();
+  Handle(XCAFDoc_ShapeTool) st = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
+  TDF_Label l = st->AddShape(s, Standard_False);
+  if (l.IsNull()) fail(std::string(name) + ": cannot add shape to the document");
+  setName(l, name);
+  writeStep(doc, path);
+}
+
+// Two-part assembly: BLOCK (20 x 20 x 10) sits centred on BASE (40 x 40 x 10).
+// BLOCK's bottom face (20 x 20) lies entirely inside BASE's top face (40 x 40).
+// Each part is defined at the origin; the components place them.
+void writeAssembly2(const std::filesystem::path& path) {
+  TopoDS_Shape base = box(0, 0, 0, 40, 40, 10);
+  TopoDS_Shape block = box(0, 0, 0, 20, 20, 10);
+  checkShape(base, "BASE", 1);
+  checkShape(block, "BLOCK", 1);
+
+  gp_Trsf tBlock;
+  tBlock.SetTranslation(gp_Vec(10, 10, 10));
+  // The placed pair, checked as it will appear in the file.
+  {
+    TopoDS_Shape placed = block.Moved(TopLoc_Location(tBlock));
+    checkShape(placed, "BLOCK (placed)", 1);
+    Bnd_Box bb;
+    BRepBndLib::Add(placed, bb);
+    double x0, y0, z0, x1, y1, z1;
+    bb.Get(x0, y0, z0, x1, y1, z1);
+    if (std::abs(z0 - 10.0) > 1e-3) fail("assembly2: BLOCK does not sit on BASE");
+  }
+
+  Handle(TDocStd_Document) doc = newDoc();
+  Handle(XCAFDoc_ShapeTool) st = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
+  TDF_Label assy = st->NewShape();
+  setName(assy, "ASSEMBLY2");
+  TDF_Label lBase = st->AddShape(base, Standard_False);
+  TDF_Label lBlock = st->AddShape(block, Standard_False);
+  setName(lBase, "BASE");
+  setName(lBlock, "BLOCK");
+  TDF_Label cBase = st->AddComponent(assy, lBase, TopLoc_Location());
+  TDF_Label cBlock = st->AddComponent(assy, lBlock, TopLoc_Location(tBlock));
+  if (cBase.IsNull() || cBlock.IsNull()) fail("assembly2: cannot add components");
+  setName(cBase, "BASE");
+  setName(cBlock, "BLOCK");
+  st->UpdateAssemblies();
+
+  checkShape(st->GetShape(assy), "assembly2", 2);
+  writeStep(doc, path);
+}
+
+// ---------------------------------------------------------------- --check
+
+// Round-off below the printed precision would otherwise show up as "-0.00".
+double tidy(double v) { return std::abs(v) < 5e-3 ? 0.0 : v; }
+
+std::string labelName(const TDF_Label& l) {
+  Handle(TDataStd_Name) n;
+  if (!l.FindAttribute(TDataStd_Name::GetID(), n)) return "<unnamed>";
+  return TCollection_AsciiString(n->Get()).ToCString();
+}
+
+int checkFile(const char* file) {
+  STEPCAFControl_Reader reader;
+  reader.SetNameMode(Standard_True);
+  if (reader.ReadFile(file) != IFSelect_RetDone) fail(std::string(file) + ": cannot read STEP file");
+  Handle(TDocStd_Document) doc = newDoc();
+  if (!reader.Transfer(doc)) fail(std::string(file) + ": XCAF transfer from STEP failed");
+
+  Handle(XCAFDoc_ShapeTool) st = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
+  TDF_LabelSequence roots;
+  st->GetFreeShapes(roots);
+  if (roots.IsEmpty()) fail(std::string(file) + ": no shapes");
+
+  int totalSolids = 0;
+  double totalVolume = 0;
+  Bnd_Box bb;
+  std::vector<std::string> parts;
+  std::vector<std::string> details;
+
+  // Walk the assembly structure down to the simple shapes (parts).
+  std::function<void(const TDF_Label&, const TopLoc_Location&, int)> walk =
+      [&](const TDF_Label& l, const TopLoc_Location& loc, int depth) {
+        if (st->IsAssembly(l)) {
+          details.push_back(std::string(2 * depth, ' ') + "assembly " + labelName(l));
+          TDF_LabelSequence comps;
+          st->GetComponents(l, comps);
+          for (int i = 1; i <= comps.Length(); ++i) {
+            TDF_Label ref;
+            if (!st->GetReferredShape(comps(i), ref)) continue;
+            walk(ref, loc * st->GetLocation(comps(i)), depth + 1);
+          }
+          return;
+        }
+        TopoDS_Shape s = st->GetShape(l).Moved(loc);
+        int solids = 0;
+        for (TopExp_Explorer ex(s, TopAbs_SOLID); ex.More(); ex.Next()) ++solids;
+        GProp_GProps props;
+        BRepGProp::VolumeProperties(s, props);
+        BRepBndLib::AddOptimal(s, bb, Standard_False, Standard_False);
+        Bnd_Box pb;
+        BRepBndLib::AddOptimal(s, pb, Standard_False, Standard_False);
+        TopTools_IndexedMapOfShape faces;
+        TopExp::MapShapes(s, TopAbs_FACE, faces);
+        double x0, y0, z0, x1, y1, z1;
+        pb.Get(x0, y0, z0, x1, y1, z1);
+        totalSolids += solids;
+        totalVolume += props.Mass();
+        parts.push_back(labelName(l));
+        char buf[256];
+        std::snprintf(buf, sizeof buf, "part %s: solids %d, faces %d, volume %.3f, bbox [%.2f %.2f %.2f]-[%.2f %.2f %.2f], valid %s",
+                      labelName(l).c_str(), solids, faces.Extent(), props.Mass(), tidy(x0), tidy(y0),
+                      tidy(z0), tidy(x1), tidy(y1), tidy(z1),
+                      BRepCheck_Analyzer(s).IsValid() ? "yes" : "NO");
+        details.push_back(std::string(2 * depth, ' ') + buf);
+      };
+  for (int i = 1; i <= roots.Length(); ++i) walk(roots(i), TopLoc_Location(), 0);
+
+  double x0, y0, z0, x1, y1, z1;
+  bb.Get(x0, y0, z0, x1, y1, z1);
+  std::string names;
+  for (const auto& p : parts) names += (names.empty() ? "" : ",") + p;
+  std::printf("%s: solids %d, volume %.3f mm^3, bbox [%.2f %.2f %.2f]-[%.2f %.2f %.2f], parts %s\n", file,
+              totalSolids, totalVolume, tidy(x0), tidy(y0), tidy(z0), tidy(x1), tidy(y1), tidy(z1),
+              names.c_str());
+  for (const auto& d : details) std::printf("  %s\n", d.c_str());
+  return totalSolids > 0 ? 0 : 1;
+}
+
+// ---------------------------------------------------------------- main
+
+void silenceOcct() {
+  // OCCT's default messenger prints transfer statistics to stdout; keep stdout to
+  // one line per file written.
+  Handle(Message_Messenger) m = Message::DefaultMessenger();
+  m->RemovePrinters(STANDARD_TYPE(Message_Printer));
+}
+
+void configureStep() {
+  STEPCAFControl_Controller::Init();
+  if (!Interface_Static::SetCVal("write.step.schema", "AP214IS")) fail("cannot set write.step.schema");
+  if (!Interface_Static::SetCVal("write.step.unit", "MM")) fail("cannot set write.step.unit");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    silenceOcct();
+    configureStep();
+    if (argc == 3 && std::string(argv[1]) == "--check") return checkFile(argv[2]);
+    if (argc != 2 || argv[1][0] == '-') {
+      std::cerr << "usage: make_models OUTDIR\n       make_models --check FILE\n";
+      return 2;
+    }
+    std::filesystem::path out(argv[1]);
+    std::error_code ec;
+    std::filesystem::create_directories(out, ec);
+    if (!std::filesystem::is_directory(out)) fail("cannot create output directory " + out.string());
+
+    writeSinglePart(makeBracket(), "BRACKET", out / "bracket.step");
+    writeAssembly2(out / "assembly2.step");
+    writeSinglePart(makePlate(), "PLATE", out / "plate.step");
+    writeSinglePart(makeCylinder(), "CYLINDER", out / "cylinder.step");
+    return 0;
+  } catch (const Standard_Failure& e) {
+    std::cerr << "make_models: OCCT exception: " << e.GetMessageString() << "\n";
+  } catch (const std::exception& e) {
+    std::cerr << "make_models: " << e.what() << "\n";
+  }
+  return 1;
+}
