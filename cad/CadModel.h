@@ -40,7 +40,7 @@ struct PrepareOptions {
   bool sew = true;        ///< sew loose faces into shells (tolerance relative to model size)
   bool fragment = true;   ///< general fuse of the solids: conformal interfaces (--no-fragment)
   /// Sewing tolerance as a fraction of the bounding-box diagonal.
-  double sewRelTolerance = 1e-6;
+  double sewRelTolerance = 1e-5;
 };
 
 struct PrepareReport {

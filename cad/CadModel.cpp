@@ -1,0 +1,119 @@
+#include "cad/CadModel.h"
+
+#include <BRepTools.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+
+#include <filesystem>
+#include <fstream>
+#include <system_error>
+
+#include "cad/FormatSniff.h"
+#include "cad/TopologyBuilder.h"
+#include "cad/detail/CadModelImpl.h"
+#include "cad/detail/Prepare.h"
+#include "cad/detail/Readers.h"
+#include "cad/detail/ShapeSummary.h"
+#include "mesher/core/Error.h"
+
+namespace aniso::cad {
+
+const char* formatName(CadFormat f) {
+  switch (f) {
+    case CadFormat::Step: return "STEP";
+    case CadFormat::Iges: return "IGES";
+    case CadFormat::Brep: return "BREP";
+  }
+  return "?";
+}
+
+std::string CadModel::Impl::solidName(const TopoDS_Shape& solid, int id) const {
+  const TopoDS_Shape key = solid.Located(TopLoc_Location());
+  if (nameIndex.IsBound(key)) return names[static_cast<size_t>(nameIndex.Find(key))];
+  return "SOLID" + std::to_string(id);
+}
+
+CadModel::CadModel(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+CadModel::CadModel(CadModel&&) noexcept = default;
+CadModel& CadModel::operator=(CadModel&&) noexcept = default;
+CadModel::~CadModel() = default;
+
+const std::string& CadModel::path() const { return impl_->path; }
+CadFormat CadModel::format() const { return impl_->format; }
+
+namespace {
+
+/// Checks that path is a readable regular file with content; returns its first bytes.
+std::string readHead(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status st = fs::status(path, ec);
+  if (ec || !fs::exists(st)) throw InputError(path + ": no such file");
+  if (fs::is_directory(st)) throw InputError(path + ": is a directory, not a CAD file");
+  if (!fs::is_regular_file(st)) throw InputError(path + ": not a regular file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot be opened for reading");
+  std::string head(4096, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<size_t>(in.gcount()));
+  if (head.empty()) throw InputError(path + ": file is empty");
+  return head;
+}
+
+}  // namespace
+
+CadModel CadModel::read(const std::string& path) {
+  detail::silenceOcctMessages();
+  const std::string head = readHead(path);
+  const std::optional<CadFormat> byExt = formatFromExtension(path);
+  if (!byExt)
+    throw InputError(path + ": unknown CAD file extension (expected .step .stp .igs .iges .brep .brp)");
+  const std::optional<CadFormat> byContent = formatFromContent(head);
+  if (!byContent) {
+    // Binary data or text of another kind: name what the extension promised.
+    throw InputError(path + ": not a " + formatName(*byExt) + " file (content not recognised)");
+  }
+  auto impl = std::make_unique<Impl>();
+  impl->path = path;
+  impl->format = *byContent;
+  switch (impl->format) {
+    case CadFormat::Step: detail::readStep(*impl); break;
+    case CadFormat::Iges: detail::readIges(*impl); break;
+    case CadFormat::Brep: detail::readBrep(*impl); break;
+  }
+  if (impl->shape.IsNull()) throw InputError(path + ": the file contains no shape");
+  TopTools_IndexedMapOfShape faces, edges;
+  TopExp::MapShapes(impl->shape, TopAbs_FACE, faces);
+  TopExp::MapShapes(impl->shape, TopAbs_EDGE, edges);
+  if (faces.IsEmpty() && edges.IsEmpty())
+    throw InputError(path + ": the model is empty (no faces, no edges)");
+  return CadModel(std::move(impl));
+}
+
+ShapeSummary CadModel::summary() const { return detail::summarize(*impl_); }
+
+PrepareReport CadModel::prepare(const PrepareOptions& options) {
+  PrepareReport report;
+  const double diag = detail::exactBoundingBox(impl_->shape).diagonal();
+  if (options.fix) detail::fixShape(*impl_, diag, report);
+  if (options.sew) detail::sewLooseFaces(*impl_, options.sewRelTolerance * diag, report);
+  if (options.fragment) detail::fragmentSolids(*impl_, diag, report);
+  return report;
+}
+
+Model CadModel::topology() const {
+  const Impl& impl = *impl_;
+  return buildTopology(impl.shape, [&impl](const TopoDS_Shape& s, int id) { return impl.solidName(s, id); });
+}
+
+void CadModel::writeBrep(const std::string& path) const {
+  try {
+    if (!BRepTools::Write(impl_->shape, path.c_str()))
+      throw InputError(path + ": cannot write BREP file");
+  } catch (const Standard_Failure& e) {
+    throw InputError(path + ": OpenCASCADE failed writing BREP: " + e.GetMessageString());
+  }
+}
+
+}  // namespace aniso::cad

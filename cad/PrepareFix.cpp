@@ -1,0 +1,43 @@
+#include <ShapeBuild_ReShape.hxx>
+#include <ShapeFix_Shape.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+
+#include "cad/detail/Prepare.h"
+
+namespace aniso::cad::detail {
+
+void fixShape(CadModel::Impl& impl, double diag, PrepareReport& report) {
+  try {
+    Handle(ShapeFix_Shape) fixer = new ShapeFix_Shape(impl.shape);
+    // Fixes may not open gaps larger than a small fraction of the model.
+    fixer->SetMaxTolerance(1e-3 * diag);
+    fixer->Perform();
+    const TopoDS_Shape fixed = fixer->Shape();
+    if (fixed.IsNull()) {
+      report.warnings.push_back("shape fixing produced nothing; the shape is kept as read");
+      return;
+    }
+    // Carry the part names over to the fixed solids.
+    TopTools_IndexedMapOfShape solids;
+    TopExp::MapShapes(impl.shape, TopAbs_SOLID, solids);
+    for (int i = 1; i <= solids.Extent(); ++i) {
+      const TopoDS_Shape key = solids(i).Located(TopLoc_Location());
+      if (!impl.nameIndex.IsBound(key)) continue;
+      const int name = impl.nameIndex.Find(key);
+      TopTools_IndexedMapOfShape images;
+      TopExp::MapShapes(fixer->Context()->Value(solids(i)), TopAbs_SOLID, images);
+      for (int k = 1; k <= images.Extent(); ++k) {
+        const TopoDS_Shape ik = images(k).Located(TopLoc_Location());
+        if (!impl.nameIndex.IsBound(ik)) impl.nameIndex.Bind(ik, name);
+      }
+    }
+    impl.shape = fixed;
+  } catch (const Standard_Failure& e) {
+    report.warnings.push_back(std::string("shape fixing failed (") + e.GetMessageString() +
+                              "); the shape is kept as read");
+  }
+}
+
+}  // namespace aniso::cad::detail

@@ -1,0 +1,118 @@
+// STEP AP203/214/242 through XCAF, so that each solid keeps the name of its part.
+#include <IFSelect_ReturnStatus.hxx>
+#include <Interface_Static.hxx>
+#include <STEPCAFControl_Reader.hxx>
+#include <Standard_Failure.hxx>
+#include <TCollection_AsciiString.hxx>
+#include <TDF_ChildIterator.hxx>
+#include <TDF_Label.hxx>
+#include <TDF_LabelSequence.hxx>
+#include <TDataStd_Name.hxx>
+#include <TDocStd_Document.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <BRep_Builder.hxx>
+#include <XCAFApp_Application.hxx>
+#include <XCAFDoc_DocumentTool.hxx>
+#include <XCAFDoc_ShapeTool.hxx>
+
+#include <fstream>
+#include <sstream>
+
+#include "cad/detail/Readers.h"
+#include "mesher/core/Error.h"
+
+namespace aniso::cad::detail {
+namespace {
+
+std::string labelName(const TDF_Label& label) {
+  Handle(TDataStd_Name) attr;
+  if (!label.FindAttribute(TDataStd_Name::GetID(), attr)) return {};
+  TCollection_AsciiString s(attr->Get());
+  std::string name = s.ToCString();
+  // Trim; STEP writers often leave empty or whitespace names.
+  const auto b = name.find_first_not_of(" \t");
+  if (b == std::string::npos) return {};
+  return name.substr(b, name.find_last_not_of(" \t") - b + 1);
+}
+
+/// Records the part name of every solid of every simple-shape label (parts, not
+/// assemblies), keyed by the solid without its location so that every instance of a part
+/// finds the name.
+void collectPartNames(const Handle(XCAFDoc_ShapeTool)& tool, CadModel::Impl& impl) {
+  TDF_LabelSequence labels;
+  tool->GetShapes(labels);
+  for (int i = 1; i <= labels.Length(); ++i) {
+    const TDF_Label& label = labels.Value(i);
+    if (XCAFDoc_ShapeTool::IsAssembly(label)) continue;
+    const std::string name = labelName(label);
+    if (name.empty()) continue;
+    TopoDS_Shape shape = XCAFDoc_ShapeTool::GetShape(label);
+    TopTools_IndexedMapOfShape solids;
+    TopExp::MapShapes(shape, TopAbs_SOLID, solids);
+    for (int k = 1; k <= solids.Extent(); ++k) {
+      TopoDS_Shape key = solids(k).Located(TopLoc_Location());
+      if (impl.nameIndex.IsBound(key)) continue;
+      impl.names.push_back(name);
+      impl.nameIndex.Bind(key, static_cast<int>(impl.names.size()) - 1);
+    }
+  }
+}
+
+/// A Part 21 file ends with END-ISO-10303-21; a file cut short (a failed download, a full
+/// disk) does not, and OCCT would read what it can without saying so.
+bool hasStepTerminator(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  in.seekg(0, std::ios::end);
+  const std::streamoff size = in.tellg();
+  const std::streamoff tail = std::min<std::streamoff>(size, 4096);
+  in.seekg(size - tail);
+  std::string buf(static_cast<size_t>(tail), '\0');
+  in.read(buf.data(), tail);
+  return buf.find("END-ISO-10303-21") != std::string::npos;
+}
+
+}  // namespace
+
+void readStep(CadModel::Impl& impl) {
+  if (!hasStepTerminator(impl.path))
+    throw InputError(impl.path + ": STEP file is truncated (no END-ISO-10303-21)");
+  try {
+    Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
+    Handle(TDocStd_Document) doc;
+    app->NewDocument("MDTV-XCAF", doc);
+    STEPCAFControl_Reader reader;
+    reader.SetNameMode(true);
+    reader.SetColorMode(false);
+    reader.SetLayerMode(false);
+    const IFSelect_ReturnStatus st = reader.ReadFile(impl.path.c_str());
+    if (st != IFSelect_RetDone) {
+      app->Close(doc);
+      throw InputError(impl.path + ": not a readable STEP file");
+    }
+    if (!reader.Transfer(doc)) {
+      app->Close(doc);
+      throw InputError(impl.path + ": STEP file has no shape OpenCASCADE can transfer");
+    }
+    Handle(XCAFDoc_ShapeTool) tool = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
+    TDF_LabelSequence free;
+    tool->GetFreeShapes(free);
+    if (free.Length() == 1) {
+      impl.shape = XCAFDoc_ShapeTool::GetShape(free.Value(1));
+    } else {
+      TopoDS_Compound c;
+      BRep_Builder b;
+      b.MakeCompound(c);
+      for (int i = 1; i <= free.Length(); ++i) b.Add(c, XCAFDoc_ShapeTool::GetShape(free.Value(i)));
+      impl.shape = c;
+    }
+    collectPartNames(tool, impl);
+    app->Close(doc);
+  } catch (const Standard_Failure& e) {
+    throw InputError(impl.path + ": OpenCASCADE failed reading STEP: " + e.GetMessageString());
+  }
+}
+
+}  // namespace aniso::cad::detail

@@ -1,0 +1,68 @@
+#include "cad/detail/ShapeSummary.h"
+
+#include <BRepBndLib.hxx>
+#include <BRepGProp.hxx>
+#include <Bnd_Box.hxx>
+#include <GProp_GProps.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+
+namespace aniso::cad::detail {
+
+Box3 exactBoundingBox(const TopoDS_Shape& shape) {
+  Box3 box;
+  Bnd_Box b;
+  try {
+    BRepBndLib::AddOptimal(shape, b, /*useTriangulation=*/false, /*useShapeTolerance=*/false);
+  } catch (const Standard_Failure&) {
+    b.SetVoid();
+    BRepBndLib::Add(shape, b, false);
+  }
+  if (b.IsVoid()) return box;
+  double x0, y0, z0, x1, y1, z1;
+  b.Get(x0, y0, z0, x1, y1, z1);
+  box.add(Vec3(x0, y0, z0));
+  box.add(Vec3(x1, y1, z1));
+  return box;
+}
+
+ShapeSummary summarize(const CadModel::Impl& impl) {
+  ShapeSummary s;
+  const TopoDS_Shape& shape = impl.shape;
+  TopTools_IndexedMapOfShape solids, shells, faces, edges, vertices;
+  TopExp::MapShapes(shape, TopAbs_SOLID, solids);
+  TopExp::MapShapes(shape, TopAbs_SHELL, shells);
+  TopExp::MapShapes(shape, TopAbs_FACE, faces);
+  TopExp::MapShapes(shape, TopAbs_EDGE, edges);
+  TopExp::MapShapes(shape, TopAbs_VERTEX, vertices);
+  s.solids = solids.Extent();
+  s.shells = shells.Extent();
+  s.faces = faces.Extent();
+  s.edges = edges.Extent();
+  s.vertices = vertices.Extent();
+  for (int i = 1; i <= solids.Extent(); ++i) {
+    GProp_GProps g;
+    double v = 0;
+    try {
+      BRepGProp::VolumeProperties(solids(i), g);
+      v = g.Mass();
+    } catch (const Standard_Failure&) {
+      v = 0;
+    }
+    s.volume += v;
+    s.solidList.push_back({i, impl.solidName(solids(i), i), v});
+  }
+  for (int i = 1; i <= faces.Extent(); ++i) {
+    GProp_GProps g;
+    try {
+      BRepGProp::SurfaceProperties(faces(i), g);
+      s.area += g.Mass();
+    } catch (const Standard_Failure&) {
+    }
+  }
+  s.bbox = exactBoundingBox(shape);
+  return s;
+}
+
+}  // namespace aniso::cad::detail

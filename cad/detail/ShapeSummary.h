@@ -1,0 +1,14 @@
+#pragma once
+// Internal: counts and measures of an OCCT shape.
+#include <TopoDS_Shape.hxx>
+
+#include "cad/detail/CadModelImpl.h"
+
+namespace aniso::cad::detail {
+
+ShapeSummary summarize(const CadModel::Impl& impl);
+
+/// Bounding box of the shape from its exact geometry (no triangulation, no gap).
+Box3 exactBoundingBox(const TopoDS_Shape& shape);
+
+}  // namespace aniso::cad::detail

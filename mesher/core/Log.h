@@ -1,0 +1,48 @@
+#pragma once
+// The one logging and progress facade of the library (STYLE.md §11). Library code never
+// writes to stdout or stderr: it calls log() and Progress, and the program that links the
+// library installs a LogSink deciding what reaches the terminal. Without a sink, nothing
+// is printed. Thread-safe.
+#include <memory>
+#include <string>
+
+namespace aniso {
+
+enum class LogLevel { Debug = 0, Info = 1, Warning = 2, Error = 3 };
+
+class LogSink {
+ public:
+  virtual ~LogSink() = default;
+  virtual void message(LogLevel level, const std::string& text) = 0;
+  /// A long phase reports progress: done of total units (total 0 = unknown), with an
+  /// optional detail (e.g. the predicted final element count).
+  virtual void progress(const std::string& phase, double done, double total, const std::string& detail) = 0;
+  /// The phase is over (clear a progress line).
+  virtual void progressEnd(const std::string& phase) = 0;
+};
+
+/// Installs the process-wide sink (nullptr: silence). Returns the previous one.
+std::shared_ptr<LogSink> setLogSink(std::shared_ptr<LogSink> sink);
+
+void log(LogLevel level, const std::string& text);
+inline void logInfo(const std::string& t) { log(LogLevel::Info, t); }
+inline void logWarning(const std::string& t) { log(LogLevel::Warning, t); }
+inline void logDebug(const std::string& t) { log(LogLevel::Debug, t); }
+
+/// A phase with progress: construct at the start, update() as work is done; the
+/// destructor ends it. Updates are rate-limited so that hot loops may call update() often.
+class Progress {
+ public:
+  Progress(std::string phase, double total);
+  ~Progress();
+  Progress(const Progress&) = delete;
+  Progress& operator=(const Progress&) = delete;
+  void update(double done, const std::string& detail = {});
+
+ private:
+  std::string phase_;
+  double total_;
+  long long lastNs_ = 0;
+};
+
+}  // namespace aniso

@@ -1,0 +1,48 @@
+#pragma once
+// MeshOptions — every parameter of the meshing process in one struct, passed down by
+// reference; no globals (STYLE.md). Defaults are the thesis' table 3.2.
+#include <optional>
+#include <string>
+
+namespace aniso {
+
+struct SizingParameters {
+  double anisotropy = 5.0;          ///< γ_a, max h_max/h_min of a metric (eq. 2.42)
+  double gradation = 4.0;           ///< γ_M, metric gradation ratio (eq. 2.26–2.32)
+  double curvatureRatio = 0.15;     ///< γ_c, edge length / curvature radius (eq. 2.41)
+  double contourAnisotropy = 2.0;   ///< γ_ac, anisotropy for contour curvature (eq. 2.46);
+                                    ///< the thesis requires γ_ac ≤ γ_a: use contourAnisotropyEff()
+  double hmaxRel = 0.5;             ///< γ_hmax, h_max = γ_hmax · model diagonal
+  double hminRel = 1e-4;            ///< γ_hmin, h_min = γ_hmin · model diagonal
+  double metricDistanceEps = 1e-5;  ///< ε_M, threshold for distance in metric space
+  double metricDifferenceEps = 0.2; ///< ε_δ, threshold for metric difference (3.3.1)
+  double adaptLengthMax = 2.0;      ///< l_Mmax, metric length threshold for adaptation
+  std::optional<double> hmax;       ///< absolute h_max (overrides hmaxRel)
+  std::optional<double> hmin;       ///< absolute h_min (overrides hminRel)
+  std::optional<double> size;       ///< uniform target size: curvature sizing off, h = size
+
+  double contourAnisotropyEff() const { return contourAnisotropy < anisotropy ? contourAnisotropy : anisotropy; }
+  /// h_max for a model of the given diagonal.
+  double hmaxFor(double diagonal) const {
+    if (size) return *size;
+    return hmax ? *hmax : hmaxRel * diagonal;
+  }
+  /// h_min for a model of the given diagonal (never above h_max).
+  double hminFor(double diagonal) const {
+    const double h = hmin ? *hmin : hminRel * diagonal;
+    return h < hmaxFor(diagonal) ? h : hmaxFor(diagonal);
+  }
+  /// Empty when the parameters make sense, else a message naming the first bad one.
+  std::string check() const;
+};
+
+struct MeshOptions {
+  int dim = 0;          ///< 2 or 3; 0 = 3 when the model has solids, else 2
+  int order = 1;        ///< 1 linear, 2 quadratic
+  bool quad = false;    ///< quad-dominant surface meshes
+  int threads = 0;      ///< 0 = all cores
+  SizingParameters sizing;
+  std::string sizingFile;  ///< user sizing sources (--sizing FILE.json)
+};
+
+}  // namespace aniso

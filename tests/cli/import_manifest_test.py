@@ -1,0 +1,37 @@
+#!/usr/bin/python3
+"""Import test: `anisomesh info --json` on every model of ../shared/models equals MANIFEST.json
+(what OCCT reads with no healing): counts exactly, volume and area within 1e-3 relative.
+usage: import_manifest_test.py CLI MODELS_DIR"""
+import json, os, subprocess, sys
+
+cli, models = sys.argv[1], sys.argv[2]
+manifest = json.load(open(os.path.join(models, "MANIFEST.json")))
+failed = []
+for m in manifest:
+    if "error" in m:
+        continue
+    path = os.path.join(models, m["file"])
+    try:
+        p = subprocess.run([cli, "info", "--json", path], capture_output=True, text=True, timeout=300)
+    except subprocess.TimeoutExpired:
+        failed.append(f"{m['file']}: timeout"); continue
+    if p.returncode != 0:
+        failed.append(f"{m['file']}: exit {p.returncode}: {p.stderr.strip()[:200]}"); continue
+    j = json.loads(p.stdout)
+    why = [f"{k} {j[k]} != {m[k]}" for k in ("solids", "shells", "faces", "edges", "vertices") if j[k] != m[k]]
+    for k in ("volume", "area"):
+        ref = m[k]
+        if abs(j[k] - ref) > 1e-3 * max(abs(ref), 1e-300) and not (ref == 0 and abs(j[k]) < 1e-12):
+            why.append(f"{k} {j[k]:.9g} != {ref:.9g}")
+    prep = j.get("prepared", {})
+    if m["solids"] > 0 and prep.get("solids", 0) == 0:
+        why.append("preparation lost the solids")
+    if why:
+        failed.append(f"{m['file']}: " + "; ".join(why))
+    else:
+        print(f"ok {m['file']}", flush=True)
+for f in failed:
+    print("FAIL", f)
+n = sum(1 for m in manifest if "error" not in m)
+print(f"{n - len(failed)} passed, {len(failed)} failed")
+sys.exit(1 if failed else 0)

@@ -1,0 +1,31 @@
+#pragma once
+// The subcommands of the anisomesh program. Each returns the process exit code
+// (0 ok, 2 bad input, 3 meshing failure) or throws InputError / MeshingError, which
+// main() turns into a one-line message and the same codes.
+#include <string>
+
+#include "mesher/core/MeshOptions.h"
+
+namespace aniso::cli {
+
+struct InfoArgs {
+  std::string file;
+  bool json = false;
+  bool fragment = true;
+};
+int runInfo(const InfoArgs& args);
+
+struct MeshArgs {
+  std::string file;
+  std::string output;
+  std::string report;
+  bool binary = false;
+  bool fragment = true;
+  MeshOptions options;
+};
+int runMesh(const MeshArgs& args);
+
+/// Output formats the mesh command writes, by extension.
+bool isKnownOutputExtension(const std::string& path);
+
+}  // namespace aniso::cli

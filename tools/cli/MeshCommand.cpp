@@ -1,0 +1,121 @@
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+#include "cad/CadModel.h"
+#include "io/AtomicFile.h"
+#include "io/Report.h"
+#include "mesher/core/Error.h"
+#include "mesher/core/Log.h"
+#include "tools/cli/Commands.h"
+#include "tools/cli/ModelJson.h"
+
+namespace aniso::cli {
+namespace {
+
+std::string lowerExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+nlohmann::ordered_json optionsJson(const MeshArgs& a) {
+  const SizingParameters& s = a.options.sizing;
+  nlohmann::ordered_json j;
+  j["output"] = a.output;
+  j["dim"] = a.options.dim;
+  j["order"] = a.options.order;
+  j["quad"] = a.options.quad;
+  j["threads"] = a.options.threads;
+  j["fragment"] = a.fragment;
+  j["anisotropy"] = s.anisotropy;
+  j["gradation"] = s.gradation;
+  j["curvature_ratio"] = s.curvatureRatio;
+  j["contour_anisotropy"] = s.contourAnisotropy;
+  j["hmax_rel"] = s.hmaxRel;
+  j["hmin_rel"] = s.hminRel;
+  if (s.size) j["size"] = *s.size;
+  if (s.hmax) j["hmax"] = *s.hmax;
+  if (s.hmin) j["hmin"] = *s.hmin;
+  if (!a.options.sizingFile.empty()) j["sizing"] = a.options.sizingFile;
+  return j;
+}
+
+/// Options that are wrong whatever the model: exit 2 before any work.
+void checkArguments(const MeshArgs& a) {
+  if (!isKnownOutputExtension(a.output))
+    throw InputError(a.output + ": unknown output format (expected .msh .inp .vtu .stl .obj .off .unv)");
+  const std::string bad = a.options.sizing.check();
+  if (!bad.empty()) throw InputError(a.file + ": " + bad);
+  if (!a.options.sizingFile.empty() && !std::filesystem::is_regular_file(a.options.sizingFile))
+    throw InputError(a.options.sizingFile + ": sizing file not found");
+  const auto dir = std::filesystem::path(a.output).parent_path();
+  if (!dir.empty() && !std::filesystem::is_directory(dir))
+    throw InputError(a.output + ": output folder does not exist");
+}
+
+void writeReport(const MeshArgs& a, const io::Report& r) {
+  if (a.report.empty()) return;
+  io::writeFileAtomically(a.report, r.toJson().dump(1) + "\n");
+}
+
+}  // namespace
+
+bool isKnownOutputExtension(const std::string& path) {
+  static const char* known[] = {".msh", ".inp", ".vtu", ".stl", ".obj", ".off", ".unv"};
+  const std::string ext = lowerExtension(path);
+  return std::any_of(std::begin(known), std::end(known), [&](const char* k) { return ext == k; });
+}
+
+int runMesh(const MeshArgs& args) {
+  using Clock = std::chrono::steady_clock;
+  const auto t0 = Clock::now();
+  auto seconds = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
+  checkArguments(args);
+
+  io::Report report;
+  report.input = args.file;
+  report.options = optionsJson(args);
+
+  // Reading and preparing the model: failures here are bad input (exit 2).
+  auto t = Clock::now();
+  cad::CadModel model = cad::CadModel::read(args.file);
+  report.times.emplace_back("read", seconds(t, Clock::now()));
+  t = Clock::now();
+  cad::PrepareOptions popt;
+  popt.fragment = args.fragment;
+  const cad::PrepareReport prep = model.prepare(popt);
+  const cad::ShapeSummary summary = model.summary();
+  report.times.emplace_back("prepare", seconds(t, Clock::now()));
+  for (const std::string& w : prep.warnings) logWarning(args.file + ": " + w);
+
+  int dim = args.options.dim;
+  if (dim == 0) dim = summary.solids > 0 ? 3 : 2;
+  if (dim == 3 && summary.solids == 0)
+    throw InputError(args.file + ": nothing to mesh in 3D: the model has no solids (use --dim 2)");
+  if (summary.faces == 0) throw InputError(args.file + ": nothing to mesh: the model has no faces");
+  report.options["dim"] = dim;
+  nlohmann::ordered_json m = summaryJson(summary);
+  m.update(prepareJson(prep));
+  report.extra["model"] = m;
+
+  // The mesher's view of the model: built and validated before any meshing.
+  t = Clock::now();
+  const Model topo = model.topology();
+  report.times.emplace_back("topology", seconds(t, Clock::now()));
+  for (const std::string& problem : topo.validate()) {
+    const auto colon = problem.find(':');
+    report.failures.push_back({colon == std::string::npos ? "model" : problem.substr(0, colon),
+                               colon == std::string::npos ? problem : problem.substr(colon + 2)});
+  }
+
+  // The surface and volume meshers are not in this build yet: say so, write no mesh.
+  report.status = io::RunStatus::Failed;
+  report.failures.push_back({"model", "meshing is not available yet in this build (dim " + std::to_string(dim) + ")"});
+  report.totalSeconds = seconds(t0, Clock::now());
+  writeReport(args, report);
+  throw MeshingError(args.file + ": meshing is not available yet in this build");
+}
+
+}  // namespace aniso::cli

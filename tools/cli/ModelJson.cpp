@@ -1,0 +1,49 @@
+#include "tools/cli/ModelJson.h"
+
+#include <sstream>
+
+namespace aniso::cli {
+
+nlohmann::ordered_json summaryJson(const cad::ShapeSummary& s) {
+  nlohmann::ordered_json j;
+  j["solids"] = s.solids;
+  j["shells"] = s.shells;
+  j["faces"] = s.faces;
+  j["edges"] = s.edges;
+  j["vertices"] = s.vertices;
+  j["volume"] = s.volume;
+  j["area"] = s.area;
+  j["bbox"] = {{"min", {s.bbox.lo.x(), s.bbox.lo.y(), s.bbox.lo.z()}},
+               {"max", {s.bbox.hi.x(), s.bbox.hi.y(), s.bbox.hi.z()}},
+               {"diagonal", s.bbox.diagonal()}};
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const auto& so : s.solidList) list.push_back({{"id", so.id}, {"name", so.name}, {"volume", so.volume}});
+  j["solid_list"] = list;
+  return j;
+}
+
+nlohmann::ordered_json prepareJson(const cad::PrepareReport& r) {
+  nlohmann::ordered_json j;
+  j["sewn_faces"] = r.facesSewn;
+  j["shared_faces"] = r.sharedFaces;
+  nlohmann::ordered_json ov = nlohmann::ordered_json::array();
+  for (const auto& [a, b] : r.overlappingSolids) ov.push_back({a, b});
+  j["overlapping_solids"] = ov;
+  j["warnings"] = r.warnings;
+  return j;
+}
+
+std::string summaryText(const cad::ShapeSummary& s, const std::string& in) {
+  std::ostringstream o;
+  o.precision(10);
+  o << in << "solids " << s.solids << ", shells " << s.shells << ", faces " << s.faces << ", edges " << s.edges
+    << ", vertices " << s.vertices << "\n";
+  o << in << "volume " << s.volume << ", area " << s.area << "\n";
+  o << in << "bounding box [" << s.bbox.lo.x() << ", " << s.bbox.lo.y() << ", " << s.bbox.lo.z() << "] - ["
+    << s.bbox.hi.x() << ", " << s.bbox.hi.y() << ", " << s.bbox.hi.z() << "], diagonal " << s.bbox.diagonal() << "\n";
+  for (const auto& so : s.solidList)
+    o << in << "  solid " << so.id << " \"" << so.name << "\" volume " << so.volume << "\n";
+  return o.str();
+}
+
+}  // namespace aniso::cli
