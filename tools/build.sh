@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# Configures and builds anisomesh (Release) in build/. Used by run.sh and test.sh.
+set -euo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+jobs=$(nproc 2>/dev/null || echo 2)
+cmake -S "$here" -B "$here/build" -DCMAKE_BUILD_TYPE=Release > "$here/build.log" 2>&1 || { cat "$here/build.log" >&2; exit 1; }
+cmake --build "$here/build" -j"$jobs" >> "$here/build.log" 2>&1 || { tail -60 "$here/build.log" >&2; exit 1; }

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# usage: tools/run.sh [MODEL] [anisomesh mesh options]
+# Installs what is missing (apt-get), builds Release, meshes MODEL (default: the bracket in
+# models/) and prints the report.
+set -uo pipefail
+here=$(cd "$(dirname "$0")/.." && pwd)
+"$here/tools/setup.sh" || exit 1
+"$here/tools/build.sh" || exit 1
+model=${1:-$here/models/bracket.step}
+[ $# -gt 0 ] && shift
+out=${ANISOMESH_OUT:-$here/build/out}
+mkdir -p "$out"
+name=$(basename "$model"); name=${name%.*}
+"$here/build/anisomesh" info "$model"
+"$here/build/anisomesh" mesh "$model" -o "$out/$name.msh" --report "$out/$name.report.json" "$@"
+rc=$?
+[ -f "$out/$name.report.json" ] && cat "$out/$name.report.json"
+exit $rc
