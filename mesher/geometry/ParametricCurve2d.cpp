@@ -1,6 +1,8 @@
 // General methods of ParametricCurve2d (thesis sec. 2.4.3, 6.2.2).
 #include "mesher/geometry/ParametricCurve2d.h"
 
+#include <Eigen/Geometry>
+
 #include <cmath>
 
 #include "mesher/geometry/AdaptivePolyline.h"

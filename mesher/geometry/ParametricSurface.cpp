@@ -1,6 +1,9 @@
 // General methods of ParametricSurface (thesis sec. 2.2.1, 2.4.2, 6.2.1).
 #include "mesher/geometry/ParametricSurface.h"
 
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
