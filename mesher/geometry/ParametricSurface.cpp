@@ -175,7 +175,7 @@ Vec2 ParametricSurface::project(const Vec3& x, const Vec2& start) const {
   // Levenberg–Marquardt on f(s) = ½|p(s) − x|² with the exact Hessian
   // JᵀJ + Σ r·p_ij (quadratic convergence also for points off the surface), Marquardt
   // scaling of the damping (robust where pu or pv vanish, at poles) and acceptance only of
-  // steps that decrease f (backtracking by raising the damping).
+  // steps that decrease f, or at round-off level |∇f| (backtracking by raising the damping).
   const SurfaceDomain dom = domain();
   const double eu = usableExtent(dom.u0, dom.u1), ev = usableExtent(dom.v0, dom.v1);
   Vec2 s = clampToDomain(dom, start);
@@ -211,11 +211,23 @@ Vec2 ParametricSurface::project(const Vec3& x, const Vec2& start) const {
       const Vec2 sn = clampToDomain(dom, s + step);
       if (sn == s) return s;  // blocked by the domain boundary
       const SurfaceD2 dn = d2(sn);
-      const double fn = finite(dn.p) ? 0.5 * (dn.p - x).squaredNorm() : HUGE_VAL;
-      if (fn < f) {
+      if (!finite(dn.p)) { lambda *= 10; continue; }
+      // Change of f computed as ½ (pn − p)·(rn + r), more accurate than a difference of two
+      // squared norms. When it is within the round-off of the points (|p| ε |r|), f cannot
+      // decide any more and the step is judged by the gradient norm instead.
+      const Vec3 rn = dn.p - x;
+      const double change = 0.5 * (dn.p - d.p).dot(rn + r);
+      const double noise = 16 * std::numeric_limits<double>::epsilon() *
+                           (d.p.norm() + x.norm()) * (r.norm() + rn.norm());
+      bool better = change < -noise;
+      if (!better && change <= noise) {
+        const Vec2 gradN(dn.pu.dot(rn), dn.pv.dot(rn));
+        better = gradN.norm() < grad.norm();
+      }
+      if (better) {
         s = sn;
         d = dn;
-        f = fn;
+        f = 0.5 * rn.squaredNorm();
         lambda = std::max(lambda * 0.3, 1e-12);
         accepted = true;
       } else {
