@@ -132,27 +132,40 @@ SurfaceD2 OcctSurface::d2(const Vec2& uv) const {
   return {toVec(p), toVec(pu), toVec(pv), toVec(puu), toVec(puv), toVec(pvv)};
 }
 
-bool OcctSurface::isStationary(const Vec3& x, const Vec2& uv) const {
-  const SurfaceD1 d = d1(uv);
+bool OcctSurface::isLocalMinimum(const Vec3& x, const Vec2& uv) const {
+  const SurfaceD2 d = d2(uv);
   const Vec3 r = x - d.p;
   const double scale = d.p.norm() + d.pu.norm() + d.pv.norm();
   const double rn = r.norm();
   if (rn <= kOnSurface * scale) return true;
+  // First order: the gradient of ½|p − x|² vanishes in every free direction. A direction
+  // is not free where p_i vanishes (a pole) or where the domain bound clamps the iteration
+  // and the distance still decreases outwards.
   const Vec3* tangents[2] = {&d.pu, &d.pv};
   const bool periodic[2] = {domain_.uPeriodic, domain_.vPeriodic};
   const double lo[2] = {domain_.u0, domain_.v0}, hi[2] = {domain_.u1, domain_.v1};
+  bool free[2] = {true, true};
   for (int i = 0; i < 2; ++i) {
     const double tn = tangents[i]->norm();
-    if (tn <= kOnSurface * scale) continue;  // singular direction (a pole): no condition
+    if (tn <= kOnSurface * scale) continue;
     const double c = r.dot(*tangents[i]) / (rn * tn);
     if (std::abs(c) <= kStationaryCosine) continue;
-    // At a clamped bound the distance may still decrease outwards.
-    const double span = hi[i] - lo[i];
-    const double eps = 1e-12 * (std::abs(span) + std::abs(uv[i]));
-    if (!periodic[i] && c < 0 && uv[i] <= lo[i] + eps) continue;
-    if (!periodic[i] && c > 0 && uv[i] >= hi[i] - eps) continue;
-    return false;
+    const double eps = 1e-12 * (std::abs(hi[i] - lo[i]) + std::abs(uv[i]));
+    const bool clamped = !periodic[i] && ((c < 0 && uv[i] <= lo[i] + eps) ||
+                                          (c > 0 && uv[i] >= hi[i] - eps));
+    if (!clamped) return false;
+    free[i] = false;
   }
+  // Second order: the Hessian JᵀJ − r·p_ij is positive semi-definite on the free
+  // directions (rejects the farthest point and saddles, where the gradient vanishes too).
+  Mat2 h;
+  h(0, 0) = d.pu.dot(d.pu) - r.dot(d.puu);
+  h(0, 1) = h(1, 0) = d.pu.dot(d.pv) - r.dot(d.puv);
+  h(1, 1) = d.pv.dot(d.pv) - r.dot(d.pvv);
+  const double eps = kOnSurface * (d.pu.squaredNorm() + d.pv.squaredNorm() + rn * scale);
+  if (free[0] && h(0, 0) < -eps) return false;
+  if (free[1] && h(1, 1) < -eps) return false;
+  if (free[0] && free[1] && h(0, 0) * h(1, 1) - h(0, 1) * h(0, 1) < -eps * eps) return false;
   return true;
 }
 
@@ -185,7 +198,7 @@ Vec2 OcctSurface::project(const Vec3& x, const Vec2& start) const {
   Vec2 uv = start;
   try {
     uv = ParametricSurface::project(x, start);
-    if (isStationary(x, uv)) return uv;
+    if (isLocalMinimum(x, uv)) return uv;
   } catch (...) {
     // An evaluation failed during the iteration: the global search below decides.
   }

@@ -37,11 +37,12 @@ class OcctSurface final : public ParametricSurface {
   SurfaceDomain domain() const override { return domain_; }
   std::unique_ptr<ParametricSurface> clone() const override;
 
-  /// The general Gauss–Newton projection (start-nearest, periodic parameters unwrapped near
-  /// `start`); when it stops at a point that is not stationary (neither the gradient of the
-  /// distance vanishes nor a clamped domain bound explains it), OCCT's global extrema search
-  /// (GeomAPI_ProjectPointOnSurf) is tried and the nearer of the two answers is returned,
-  /// unwrapped near `start`. Never throws.
+  /// The general damped Newton projection (start-nearest, periodic parameters unwrapped near
+  /// `start`); when it stops at a point that is not a local minimum of the distance (the
+  /// gradient does not vanish and no clamped domain bound explains it, or the Hessian is
+  /// not positive semi-definite: a saddle or the farthest point, where the iteration
+  /// cannot move), OCCT's global extrema search (GeomAPI_ProjectPointOnSurf) is tried and
+  /// the nearer of the two answers is returned, unwrapped near `start`. Never throws.
   Vec2 project(const Vec3& x, const Vec2& start) const override;
 
   const std::string& name() const { return name_; }
@@ -52,7 +53,7 @@ class OcctSurface final : public ParametricSurface {
   OcctSurface(const Handle(Geom_Surface)& surface, const SurfaceDomain& domain,
               std::string name);
   [[noreturn]] void fail(const char* what, const Vec2& uv, const char* occtMessage) const;
-  bool isStationary(const Vec3& x, const Vec2& uv) const;
+  bool isLocalMinimum(const Vec3& x, const Vec2& uv) const;
   std::optional<Vec2> globalProject(const Vec3& x, const Vec2& start) const;
 
   Handle(Geom_Surface) surface_;

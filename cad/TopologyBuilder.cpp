@@ -185,9 +185,13 @@ Loop walkWire(const ShapeMaps& maps, const Model& model, const TopoDS_Wire& wire
   for (TopExp_Explorer x(wire, TopAbs_EDGE); x.More(); x.Next())
     if (isForwardOrReversed(x.Current().Orientation())) ++expected;
   try {
-    for (BRepTools_WireExplorer w(wire, face); w.More(); w.Next())
-      if (isForwardOrReversed(w.Orientation()))
-        loop.uses.push_back(makeUse(maps, model, w.Current(), w.Orientation(), fi, faceReversed));
+    // The occurrence's orientation is Current().Orientation() (composed with the wire's);
+    // WireExplorer::Orientation() is that of the current vertex, unreliable on closed edges.
+    for (BRepTools_WireExplorer w(wire, face); w.More(); w.Next()) {
+      const TopAbs_Orientation o = w.Current().Orientation();
+      if (isForwardOrReversed(o))
+        loop.uses.push_back(makeUse(maps, model, w.Current(), o, fi, faceReversed));
+    }
   } catch (const Standard_Failure&) {
     loop.uses.clear();  // fall back to the stored order below
   }
