@@ -9,28 +9,44 @@ namespace aniso {
 
 namespace {
 
+constexpr double kStationary = 1e-12;
+
+/// eval(t), with a throwing evaluation reported as a non-finite sample.
+DistanceSample safeEval(const std::function<DistanceSample(double)>& eval, double t) {
+  try {
+    return eval(t);
+  } catch (...) {
+    return DistanceSample{HUGE_VAL, 0, 0};
+  }
+}
+
 struct Best {
   double t = 0, g = HUGE_VAL;
 };
 
-/// Safeguarded Newton on g' inside [a, b], starting at t; returns the best point seen.
+/// Safeguarded Newton on g' inside [a, b], starting at t. Returns the converged iterate
+/// (g' = 0 to round-off, more precise than comparing values of g, which is flat there), or
+/// the point of lowest g seen when the iteration stops without converging.
 Best refineBracket(const std::function<DistanceSample(double)>& eval, double a, double b,
                    double t, const DistanceSample& first) {
   Best best{t, first.g};
   const double eps = 1e-15 * std::max({1.0, std::abs(a), std::abs(b)});
   DistanceSample s = first;
-  for (int it = 0; it < 100 && b - a > eps; ++it) {
+  for (int it = 0; it < 100; ++it) {
+    if (std::abs(s.dg) <= kStationary * s.dgScale) return {t, s.g};
     if (s.dg > 0) b = t;
     else if (s.dg < 0) a = t;
-    else break;
+    else return {t, s.g};
+    if (b - a <= eps) return {t, s.g};
     double tn = (s.ddg > 0 && std::isfinite(s.ddg)) ? t - s.dg / s.ddg : 0.5 * (a + b);
     if (!(tn > a && tn < b)) tn = 0.5 * (a + b);
     const double move = std::abs(tn - t);
+    const DistanceSample sn = safeEval(eval, tn);
+    if (!std::isfinite(sn.g)) break;
     t = tn;
-    s = eval(t);
-    if (!std::isfinite(s.g)) break;
+    s = sn;
     if (s.g < best.g) best = {t, s.g};
-    if (move <= eps) break;
+    if (move <= eps) return {t, s.g};
   }
   return best;
 }
@@ -52,7 +68,7 @@ double nearestParameter(const std::function<DistanceSample(double)>& eval, doubl
   t.insert(std::upper_bound(t.begin(), t.end(), ts), ts);
   t.erase(std::unique(t.begin(), t.end()), t.end());
   std::vector<DistanceSample> s(t.size());
-  for (size_t i = 0; i < t.size(); ++i) s[i] = eval(t[i]);
+  for (size_t i = 0; i < t.size(); ++i) s[i] = safeEval(eval, t[i]);
 
   std::vector<Best> candidates;
   double gMax = 0;

@@ -15,7 +15,8 @@ double ParametricCurve3d::project(const Vec3& p, double ts, double t0, double t1
   const auto eval = [&](double t) {
     const Curve3dD2 d = d2(t);
     const Vec3 r = d.p - p;
-    return DistanceSample{0.5 * r.squaredNorm(), r.dot(d.d1), d.d1.squaredNorm() + r.dot(d.d2)};
+    return DistanceSample{0.5 * r.squaredNorm(), r.dot(d.d1), d.d1.squaredNorm() + r.dot(d.d2),
+                          r.norm() * d.d1.norm()};
   };
   return nearestParameter(eval, ts, t0, t1);
 }

@@ -71,6 +71,71 @@ Vec2 clampToDomain(const SurfaceDomain& d, Vec2 uv) {
   return uv;
 }
 
+/// The Levenberg–Marquardt iteration of ParametricSurface::project from s (see there).
+/// `best` always holds the best point found so far, also when an evaluation throws.
+Vec2 descendFrom(const ParametricSurface& surf, const SurfaceDomain& dom, const Vec3& x, Vec2& best) {
+  const double eu = usableExtent(dom.u0, dom.u1), ev = usableExtent(dom.v0, dom.v1);
+  Vec2& s = best;
+  SurfaceD2 d = surf.d2(s);
+  if (!finite(d.p)) return s;
+  double f = 0.5 * (d.p - x).squaredNorm();
+  double lambda = 1e-3;
+  for (int it = 0; it < 200 && f > 0; ++it) {
+    const Vec3 r = d.p - x;
+    const Vec2 grad(d.pu.dot(r), d.pv.dot(r));
+    Mat2 h;
+    h(0, 0) = d.pu.dot(d.pu) + r.dot(d.puu);
+    h(0, 1) = h(1, 0) = d.pu.dot(d.pv) + r.dot(d.puv);
+    h(1, 1) = d.pv.dot(d.pv) + r.dot(d.pvv);
+    const double hs = std::max({std::abs(h(0, 0)), std::abs(h(1, 1)), d.pu.squaredNorm(),
+                                d.pv.squaredNorm(), std::numeric_limits<double>::min()});
+    const Vec2 diag(std::max(std::abs(h(0, 0)), 1e-10 * hs), std::max(std::abs(h(1, 1)), 1e-10 * hs));
+    bool accepted = false;
+    for (int tries = 0; tries < 40 && !accepted; ++tries) {
+      Mat2 a = h;
+      a(0, 0) += lambda * diag.x();
+      a(1, 1) += lambda * diag.y();
+      const double det = a.determinant();
+      const bool pd = a(0, 0) > 0 && det > 1e-14 * a(0, 0) * a(1, 1);
+      if (!pd) { lambda = std::max(lambda * 10, 1e-6); continue; }
+      const Vec2 step = -a.inverse() * grad;
+      // Converged when the step is negligible relative to the domain and the position.
+      if (std::abs(step.x()) <= 1e-14 * std::max(eu, std::abs(s.x())) &&
+          std::abs(step.y()) <= 1e-14 * std::max(ev, std::abs(s.y())))
+        return s;
+      const Vec2 sn = clampToDomain(dom, s + step);
+      if (sn == s) return s;  // blocked by the domain boundary
+      const SurfaceD2 dn = surf.d2(sn);
+      if (!finite(dn.p)) { lambda *= 10; continue; }
+      // Change of f computed as ½ (pn − p)·(rn + r), more accurate than a difference of two
+      // squared norms. When it is within the round-off of the points (|p| ε |r|), f cannot
+      // decide any more and the step is judged by the gradient norm instead.
+      const Vec3 rn = dn.p - x;
+      const double change = 0.5 * (dn.p - d.p).dot(rn + r);
+      const double noise = 16 * std::numeric_limits<double>::epsilon() *
+                           (d.p.norm() + x.norm()) * (r.norm() + rn.norm());
+      bool better = change < -noise;
+      if (!better && change <= noise) {
+        const Vec2 gradN(dn.pu.dot(rn), dn.pv.dot(rn));
+        better = gradN.norm() < grad.norm();
+      }
+      if (better) {
+        s = sn;
+        d = dn;
+        f = 0.5 * rn.squaredNorm();
+        lambda = std::max(lambda * 0.3, 1e-12);
+        accepted = true;
+      } else {
+        lambda *= 10;
+        if (lambda > 1e16) return s;
+      }
+    }
+    if (!accepted) return s;
+  }
+  return s;
+}
+
+
 }  // namespace
 
 double PrincipalCurvatures::maxAbs() const { return std::max(std::abs(k1), std::abs(k2)); }
@@ -176,68 +241,16 @@ Vec2 ParametricSurface::project(const Vec3& x, const Vec2& start) const {
   // JᵀJ + Σ r·p_ij (quadratic convergence also for points off the surface), Marquardt
   // scaling of the damping (robust where pu or pv vanish, at poles) and acceptance only of
   // steps that decrease f, or at round-off level |∇f| (backtracking by raising the damping).
-  const SurfaceDomain dom = domain();
-  const double eu = usableExtent(dom.u0, dom.u1), ev = usableExtent(dom.v0, dom.v1);
-  Vec2 s = clampToDomain(dom, start);
-  if (!s.allFinite()) s = Vec2(0.5 * (dom.u0 + dom.u1), 0.5 * (dom.v0 + dom.v1));
-  if (!x.allFinite()) return s;
-  SurfaceD2 d = d2(s);
-  if (!finite(d.p)) return s;
-  double f = 0.5 * (d.p - x).squaredNorm();
-  double lambda = 1e-3;
-  for (int it = 0; it < 200 && f > 0; ++it) {
-    const Vec3 r = d.p - x;
-    const Vec2 grad(d.pu.dot(r), d.pv.dot(r));
-    Mat2 h;
-    h(0, 0) = d.pu.dot(d.pu) + r.dot(d.puu);
-    h(0, 1) = h(1, 0) = d.pu.dot(d.pv) + r.dot(d.puv);
-    h(1, 1) = d.pv.dot(d.pv) + r.dot(d.pvv);
-    const double hs = std::max({std::abs(h(0, 0)), std::abs(h(1, 1)), d.pu.squaredNorm(),
-                                d.pv.squaredNorm(), std::numeric_limits<double>::min()});
-    const Vec2 diag(std::max(std::abs(h(0, 0)), 1e-10 * hs), std::max(std::abs(h(1, 1)), 1e-10 * hs));
-    bool accepted = false;
-    for (int tries = 0; tries < 40 && !accepted; ++tries) {
-      Mat2 a = h;
-      a(0, 0) += lambda * diag.x();
-      a(1, 1) += lambda * diag.y();
-      const double det = a.determinant();
-      const bool pd = a(0, 0) > 0 && det > 1e-14 * a(0, 0) * a(1, 1);
-      if (!pd) { lambda = std::max(lambda * 10, 1e-6); continue; }
-      const Vec2 step = -a.inverse() * grad;
-      // Converged when the step is negligible relative to the domain and the position.
-      if (std::abs(step.x()) <= 1e-14 * std::max(eu, std::abs(s.x())) &&
-          std::abs(step.y()) <= 1e-14 * std::max(ev, std::abs(s.y())))
-        return s;
-      const Vec2 sn = clampToDomain(dom, s + step);
-      if (sn == s) return s;  // blocked by the domain boundary
-      const SurfaceD2 dn = d2(sn);
-      if (!finite(dn.p)) { lambda *= 10; continue; }
-      // Change of f computed as ½ (pn − p)·(rn + r), more accurate than a difference of two
-      // squared norms. When it is within the round-off of the points (|p| ε |r|), f cannot
-      // decide any more and the step is judged by the gradient norm instead.
-      const Vec3 rn = dn.p - x;
-      const double change = 0.5 * (dn.p - d.p).dot(rn + r);
-      const double noise = 16 * std::numeric_limits<double>::epsilon() *
-                           (d.p.norm() + x.norm()) * (r.norm() + rn.norm());
-      bool better = change < -noise;
-      if (!better && change <= noise) {
-        const Vec2 gradN(dn.pu.dot(rn), dn.pv.dot(rn));
-        better = gradN.norm() < grad.norm();
-      }
-      if (better) {
-        s = sn;
-        d = dn;
-        f = 0.5 * rn.squaredNorm();
-        lambda = std::max(lambda * 0.3, 1e-12);
-        accepted = true;
-      } else {
-        lambda *= 10;
-        if (lambda > 1e16) return s;
-      }
-    }
-    if (!accepted) return s;
+  Vec2 s = start;
+  try {
+    const SurfaceDomain dom = domain();
+    s = clampToDomain(dom, start);
+    if (!s.allFinite()) s = Vec2(0.5 * (dom.u0 + dom.u1), 0.5 * (dom.v0 + dom.v1));
+    if (!x.allFinite()) return s;
+    return descendFrom(*this, dom, x, s);
+  } catch (...) {
+    return s;  // an evaluation threw: the best point so far (the contract: never throws)
   }
-  return s;
 }
 
 }  // namespace aniso
