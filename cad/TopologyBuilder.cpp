@@ -20,7 +20,8 @@
 //    root of the shape) is REVERSED, i.e. in that shell its normal is −(pu × pv); same
 //    meaning as ModelFace.reversed.
 //  - Edges with INTERNAL or EXTERNAL orientation in a face get a pcurve on it but are in no
-//    loop and do not count for a shell's closedness.
+//    loop and do not count for a shell's closedness. A face itself met as INTERNAL or
+//    EXTERNAL is treated as FORWARD (reversed = false).
 #include "cad/TopologyBuilder.h"
 
 #include <BRepBndLib.hxx>
@@ -208,8 +209,12 @@ Loop walkWire(const ShapeMaps& maps, const Model& model, const TopoDS_Wire& wire
 
 void buildFace(const ShapeMaps& maps, int fi, Model& model) {
   const std::string name = entityName("face", fi);
-  const TopoDS_Face& face = TopoDS::Face(maps.faces(fi + 1));
-  const TopoDS_Face forwardFace = TopoDS::Face(face.Oriented(TopAbs_FORWARD));
+  const TopoDS_Face forwardFace = TopoDS::Face(maps.faces(fi + 1).Oriented(TopAbs_FORWARD));
+  // A face met as INTERNAL or EXTERNAL (a loose face stored so) has no side: its loops are
+  // taken as for FORWARD (composing INTERNAL would make every edge INTERNAL).
+  const TopoDS_Face face = isForwardOrReversed(maps.faces(fi + 1).Orientation())
+                               ? TopoDS::Face(maps.faces(fi + 1))
+                               : forwardFace;
   ModelFace& mf = model.faces[fi];
   mf.surface = std::make_shared<OcctSurface>(forwardFace, name);
   mf.reversed = face.Orientation() == TopAbs_REVERSED;
