@@ -30,7 +30,10 @@ struct SolidSummary {
 struct ShapeSummary {
   int solids = 0, shells = 0, faces = 0, edges = 0, vertices = 0;
   double volume = 0;  ///< sum of the solids' volumes
-  double area = 0;    ///< sum of the faces' areas
+  double area = 0;    ///< area of every face occurrence (OCCT GProp of the whole shape)
+  double uniqueFaceArea = 0;  ///< area of every distinct face once
+  double exposedArea = 0;     ///< area of the faces bounding exactly one solid (the outer
+                              ///< boundary of the union when the solids are conformal)
   Box3 bbox;
   std::vector<SolidSummary> solidList;
 };

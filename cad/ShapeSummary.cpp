@@ -6,6 +6,7 @@
 #include <GProp_GProps.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 
 namespace aniso::cad::detail {
@@ -53,13 +54,30 @@ ShapeSummary summarize(const CadModel::Impl& impl) {
     s.volume += v;
     s.solidList.push_back({i, impl.solidName(solids(i), i), v});
   }
+  // area: every face occurrence, as OCCT's GProp integrates a shape (a face shared by two
+  // solids counts twice); uniqueFaceArea: every face once.
+  try {
+    GProp_GProps g;
+    BRepGProp::SurfaceProperties(shape, g);
+    s.area = g.Mass();
+  } catch (const Standard_Failure&) {
+    s.area = 0;
+  }
+  TopTools_IndexedDataMapOfShapeListOfShape faceSolids;
+  TopExp::MapShapesAndAncestors(shape, TopAbs_FACE, TopAbs_SOLID, faceSolids);
   for (int i = 1; i <= faces.Extent(); ++i) {
     GProp_GProps g;
     try {
       BRepGProp::SurfaceProperties(faces(i), g);
-      s.area += g.Mass();
     } catch (const Standard_Failure&) {
+      continue;
     }
+    s.uniqueFaceArea += g.Mass();
+    const int k = faceSolids.FindIndex(faces(i));
+    if (k == 0) continue;
+    TopTools_IndexedMapOfShape distinct;
+    for (const TopoDS_Shape& so : faceSolids(k)) distinct.Add(so);
+    if (distinct.Extent() == 1) s.exposedArea += g.Mass();
   }
   s.bbox = exactBoundingBox(shape);
   return s;

@@ -6,6 +6,10 @@ import json, os, subprocess, sys
 
 cli, models = sys.argv[1], sys.argv[2]
 manifest = json.load(open(os.path.join(models, "MANIFEST.json")))
+# Conformal preparation: for the multi-solid models, the faces bounding one solid only must
+# have the area of the outer boundary of the union (shared/tools/assemblies.json).
+asm_path = os.path.join(models, "..", "tools", "assemblies.json")
+assemblies = {a["file"]: a for a in json.load(open(asm_path))} if os.path.exists(asm_path) else {}
 failed = []
 for m in manifest:
     if "error" in m:
@@ -26,6 +30,14 @@ for m in manifest:
     prep = j.get("prepared", {})
     if m["solids"] > 0 and prep.get("solids", 0) == 0:
         why.append("preparation lost the solids")
+    a = assemblies.get(m["file"])
+    if a:
+        if prep.get("solids") != a["solids"]:
+            why.append(f"prepared solids {prep.get('solids')} != {a['solids']}")
+        if abs(prep.get("exposed_area", 0) - a["outer_area"]) > 1e-3 * a["outer_area"]:
+            why.append(f"prepared exposed area {prep.get('exposed_area')} != outer area {a['outer_area']} (not conformal)")
+        if abs(prep.get("volume", 0) - a["union_volume"]) > 1e-3 * a["union_volume"]:
+            why.append(f"prepared volume {prep.get('volume')} != union volume {a['union_volume']}")
     if why:
         failed.append(f"{m['file']}: " + "; ".join(why))
     else:

@@ -13,6 +13,8 @@ nlohmann::ordered_json summaryJson(const cad::ShapeSummary& s) {
   j["vertices"] = s.vertices;
   j["volume"] = s.volume;
   j["area"] = s.area;
+  j["unique_face_area"] = s.uniqueFaceArea;
+  j["exposed_area"] = s.exposedArea;
   j["bbox"] = {{"min", {s.bbox.lo.x(), s.bbox.lo.y(), s.bbox.lo.z()}},
                {"max", {s.bbox.hi.x(), s.bbox.hi.y(), s.bbox.hi.z()}},
                {"diagonal", s.bbox.diagonal()}};
