@@ -1,6 +1,7 @@
 #pragma once
 // Internal: builds the mesher's Model (mesher/model/Model.h) from an OCCT shape.
-// Ids follow TopExp::MapShapes order of the whole shape, 1-based.
+// Ids follow TopExp::MapShapes order of the whole shape, 1-based. The orientation and seam
+// conventions are those of mesher/model/Model.h, detailed at the top of TopologyBuilder.cpp.
 #include <TopoDS_Shape.hxx>
 
 #include <functional>

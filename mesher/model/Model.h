@@ -27,7 +27,7 @@ struct PCurve {
   int face = -1;
   Curve2dPtr curve;
   double t0 = 0, t1 = 0;  ///< parameter range on this pcurve (same as the edge's, OCCT SameParameter)
-  bool seamSecond = false;
+  bool seamSecond = false;  ///< the pcurve OCCT gives the REVERSED edge in the FORWARD face
 };
 
 struct ModelEdge {
@@ -42,8 +42,12 @@ struct ModelEdge {
 };
 
 /// One oriented use of an edge in a loop. Walking the loop, the use runs from the edge's
-/// v0 to v1 when !reversed, from v1 to v0 when reversed, with the face on the left in the
-/// face's parametric plane (for a face that is not reversed).
+/// v0 to v1 when !reversed, from v1 to v0 when reversed. Loops follow the face as
+/// oriented: for a face that is not reversed the face lies on the left of every use in the
+/// (u,v) plane (outer loop counter-clockwise, holes clockwise); for a reversed face it lies
+/// on the right. In both cases the face is on the left seen from its oriented normal in 3D.
+/// On a seam, `pcurve` points at the pcurve of this use (see PCurve::seamSecond).
+/// Edges that are INTERNAL or EXTERNAL to a face have pcurves but appear in no loop.
 struct EdgeUse {
   int edge = -1;
   bool reversed = false;
@@ -65,7 +69,7 @@ struct ModelFace {
 
 struct FaceUse {
   int face = -1;
-  bool reversed = false;  ///< the face's orientation in this shell
+  bool reversed = false;  ///< the face's orientation in this shell (same meaning as ModelFace::reversed)
 };
 
 struct ModelShell {
