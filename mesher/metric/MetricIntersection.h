@@ -14,10 +14,11 @@
 // 𝓜_min = L Q diag(max(1, Λ_i)) Qᵀ Lᵀ. More than two metrics: all are converted to
 // tensors, intersected one by one, converted back once (sec. 2.3.2).
 //
-// Guarantees: for every vector v, |M_min v| ≥ |M_k v| (containment) and for each input
-// there is a direction (a common eigenvector) with equality (touching). The operation is
-// commutative up to round-off; intersecting a metric with a coarser one returns it
-// unchanged (exactly, see `tolerance`). For surfaces only sizing components M_s are
+// Guarantees: for every vector v, |M_min v| ≥ |M_k v| (containment: the result's unit
+// ellipse lies inside each input's). Touching: when neither input ellipse contains the
+// other, the result touches both (equality along a common eigenvector); when one lies
+// inside the other, the result is that inner input (returned exactly, see `tol`), which
+// then touches only itself. The operation is commutative up to round-off. For surfaces only sizing components M_s are
 // intersected (sec. 2.3.2). No heap allocation; throws MeshingError if round-off makes a
 // result non-SPD (only for absurdly ill-conditioned input).
 #include <span>
