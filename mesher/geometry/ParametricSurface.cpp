@@ -135,7 +135,6 @@ Vec2 descendFrom(const ParametricSurface& surf, const SurfaceDomain& dom, const 
   return s;
 }
 
-
 }  // namespace
 
 double PrincipalCurvatures::maxAbs() const { return std::max(std::abs(k1), std::abs(k2)); }

@@ -159,6 +159,18 @@ TEST(Surface, TorusCurvature) {
   }
 }
 
+TEST(Surface, UmbilicDirectionsAreGOrthogonal) {
+  // A plane with skew axes: k1 = k2 = 0, dir1 = u, dir2 G-orthogonal to it.
+  const PlaneSurface skew(Vec3::Zero(), Vec3(2, 0, 0), Vec3(1, 1, 0.5), 0, 1, 0, 1);
+  const PrincipalCurvatures pc = skew.curvature({0.5, 0.5});
+  EXPECT_EQ(pc.k1, 0);
+  EXPECT_EQ(pc.k2, 0);
+  EXPECT_NEAR(pc.dir1.x(), 1, 1e-15);
+  EXPECT_NEAR(pc.dir1.dot(skew.firstFundamentalForm({0.5, 0.5}) * pc.dir2), 0, 1e-12);
+  EXPECT_NEAR(pc.d3_1.dot(pc.d3_2), 0, 1e-12);
+  EXPECT_NEAR(pc.dir2.norm(), 1, 1e-15);
+}
+
 TEST(Surface, SaddleCurvatureDirections) {
   // z = u v: at the origin k = ±1 along the diagonals.
   const ExpressionSurface saddle("u", "v", "u*v", SurfaceDomain{-1, 1, -1, 1});
