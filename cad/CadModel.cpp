@@ -72,7 +72,8 @@ CadModel CadModel::read(const std::string& path) {
   const std::optional<CadFormat> byContent = formatFromContent(head);
   if (!byContent) {
     // Binary data or text of another kind: name what the extension promised.
-    throw InputError(path + ": not a " + formatName(*byExt) + " file (content not recognised)");
+    const char* article = *byExt == CadFormat::Iges ? "an " : "a ";
+    throw InputError(path + ": not " + article + formatName(*byExt) + " file (content not recognised)");
   }
   auto impl = std::make_unique<Impl>();
   impl->path = path;

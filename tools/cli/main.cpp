@@ -60,6 +60,12 @@ int main(int argc, char** argv) {
   meshCmd->add_option("--report", mesh.report, "Write the JSON run report here");
   meshCmd->fallthrough();
 
+  // CLI11 reports an unknown command as a missing one: name it instead.
+  if (argc > 1 && argv[1][0] != '-' &&
+      app.get_subcommands([&](CLI::App* sub) { return sub->get_name() == argv[1]; }).empty()) {
+    std::fprintf(stderr, "anisomesh: unknown command '%s' (see anisomesh --help)\n", argv[1]);
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
