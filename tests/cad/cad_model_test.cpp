@@ -1,0 +1,114 @@
+// CadModel: reading, part names, preparation (conformal assemblies), topology.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "cad/CadModel.h"
+#include "mesher/core/Error.h"
+
+using namespace aniso;
+using namespace aniso::cad;
+
+namespace {
+const std::string kModels = std::string(ANISOMESH_SOURCE_DIR) + "/models/";
+const std::string kShared = std::string(ANISOMESH_SHARED_DIR) + "/models/";
+}  // namespace
+
+TEST(CadModel, ReadsStepWithPartName) {
+  CadModel m = CadModel::read(kModels + "bracket.step");
+  EXPECT_EQ(m.format(), CadFormat::Step);
+  const ShapeSummary s = m.summary();
+  ASSERT_EQ(s.solids, 1);
+  EXPECT_EQ(s.solidList[0].name, "BRACKET");
+  EXPECT_NEAR(s.volume, 51133.894, 0.01);
+  EXPECT_NEAR(s.bbox.diagonal(), std::sqrt(80.0 * 80 + 50 * 50 + 60 * 60), 1e-6);
+}
+
+TEST(CadModel, AssemblyBecomesConformalAndKeepsNames) {
+  CadModel m = CadModel::read(kModels + "assembly2.step");
+  const ShapeSummary before = m.summary();
+  ASSERT_EQ(before.solids, 2);
+  const PrepareReport r = m.prepare({});
+  EXPECT_EQ(r.sharedFaces, 1);
+  EXPECT_TRUE(r.overlappingSolids.empty());
+  const ShapeSummary after = m.summary();
+  ASSERT_EQ(after.solids, 2);
+  std::vector<std::string> names{after.solidList[0].name, after.solidList[1].name};
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"BASE", "BLOCK"}));
+  EXPECT_NEAR(after.volume, 20000.0, 1e-6 * 20000);
+  // The block's bottom (20×20) is imprinted on the base's top: exposed area is the union's.
+  const double unionArea = 2 * 40 * 40 + 4 * 40 * 10 + 4 * 20 * 10;
+  EXPECT_NEAR(after.exposedArea, unionArea, 1e-6 * unionArea);
+  // One face used by both solids in the mesher's topology too.
+  const Model topo = m.topology();
+  EXPECT_TRUE(topo.validate().empty());
+  ASSERT_EQ(topo.solids.size(), 2u);
+  std::vector<int> uses(topo.faces.size(), 0);
+  for (const ModelShell& sh : topo.shells)
+    for (const FaceUse& fu : sh.faces) ++uses[fu.face];
+  EXPECT_EQ(std::count(uses.begin(), uses.end(), 2), 1);
+}
+
+TEST(CadModel, NoFragmentKeepsSolidsApart) {
+  CadModel m = CadModel::read(kModels + "assembly2.step");
+  PrepareOptions o;
+  o.fragment = false;
+  EXPECT_EQ(m.prepare(o).sharedFaces, 0);
+  EXPECT_EQ(m.summary().faces, 12);
+}
+
+TEST(CadModel, ReadsIgesAndSewsLooseFaces) {
+  CadModel m = CadModel::read(kShared + "cube1000.igs");
+  EXPECT_EQ(m.format(), CadFormat::Iges);
+  EXPECT_EQ(m.summary().shells, 0);
+  const PrepareReport r = m.prepare({});
+  EXPECT_EQ(r.facesSewn, 6);
+  EXPECT_EQ(m.summary().shells, 1);
+  const Model topo = m.topology();
+  ASSERT_EQ(topo.shells.size(), 1u);
+  EXPECT_TRUE(topo.shells[0].closed);
+}
+
+TEST(CadModel, ContentDecidesTheReader) {
+  // A BREP file named .step is read as BREP.
+  const auto tmp = std::filesystem::temp_directory_path() / "anisomesh_box_as.step";
+  std::filesystem::copy_file(kShared + "box.brep", tmp, std::filesystem::copy_options::overwrite_existing);
+  CadModel m = CadModel::read(tmp.string());
+  EXPECT_EQ(m.format(), CadFormat::Brep);
+  EXPECT_EQ(m.summary().solids, 1);
+  std::filesystem::remove(tmp);
+}
+
+TEST(CadModel, BadFilesAreInputErrors) {
+  const auto dir = std::filesystem::temp_directory_path();
+  EXPECT_THROW(CadModel::read((dir / "anisomesh_no_such_file.step").string()), InputError);
+  const auto empty = dir / "anisomesh_empty.brep";
+  std::ofstream(empty).close();
+  EXPECT_THROW(CadModel::read(empty.string()), InputError);
+  // A STEP file cut short is refused, not read in part.
+  std::ifstream in(kModels + "bracket.step");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto cut = dir / "anisomesh_cut.step";
+  std::ofstream(cut) << text.substr(0, text.size() / 2);
+  try {
+    CadModel::read(cut.string());
+    FAIL() << "truncated file accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("truncated"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find(cut.string()), std::string::npos);
+  }
+  std::filesystem::remove(empty);
+  std::filesystem::remove(cut);
+}
+
+TEST(CadModel, BrepRoundTrip) {
+  CadModel m = CadModel::read(kModels + "cylinder.step");
+  const auto out = std::filesystem::temp_directory_path() / "anisomesh_cyl.brep";
+  m.writeBrep(out.string());
+  CadModel back = CadModel::read(out.string());
+  EXPECT_NEAR(back.summary().volume, m.summary().volume, 1e-9 * m.summary().volume);
+  std::filesystem::remove(out);
+}
