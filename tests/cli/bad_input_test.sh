@@ -57,6 +57,10 @@ check bad-format 2 format mesh "$good" -o "$t/out.unknownformat"
 check no-output 2 output mesh "$good"
 check no-folder 2 folder mesh "$good" -o "$t/nofolder/out.msh"
 check missing-sizing 2 sizing mesh "$good" -o "$t/out.msh" --sizing "$t/nosuch.json"
+echo '{"sources": [{"type": "cone", "h": 1}]}' > "$t/badsizing.json"
+check bad-sizing-source 2 'sources\[0\].type' mesh "$good" -o "$t/out.msh" --sizing "$t/badsizing.json"
+echo '{"global": {"h": -1}}' > "$t/negsizing.json"
+check negative-sizing 2 'global.h' mesh "$good" -o "$t/out.msh" --sizing "$t/negsizing.json"
 check dim3-on-shell 2 solids mesh "$shell" -o "$t/out.msh" --dim 3
 check unknown-option 2 no-such-option mesh "$good" -o "$t/out.msh" --no-such-option
 check unknown-command 2 frobnicate frobnicate "$good"

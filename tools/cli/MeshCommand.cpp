@@ -7,6 +7,7 @@
 #include "io/AnalyticModel.h"
 #include "io/AtomicFile.h"
 #include "io/Report.h"
+#include "io/SizingFile.h"
 #include "mesher/core/Error.h"
 #include "mesher/core/Log.h"
 #include "tools/cli/Commands.h"
@@ -49,8 +50,7 @@ void checkArguments(const MeshArgs& a) {
     throw InputError(a.output + ": unknown output format (expected .msh .inp .vtu .stl .obj .off .unv)");
   const std::string bad = a.options.sizing.check();
   if (!bad.empty()) throw InputError(a.file + ": " + bad);
-  if (!a.options.sizingFile.empty() && !std::filesystem::is_regular_file(a.options.sizingFile))
-    throw InputError(a.options.sizingFile + ": sizing file not found");
+  if (!a.options.sizingFile.empty()) (void)io::readSizingFile(a.options.sizingFile);  // throws on a bad file
   const auto dir = std::filesystem::path(a.output).parent_path();
   if (!dir.empty() && !std::filesystem::is_directory(dir))
     throw InputError(a.output + ": output folder does not exist");

@@ -1,0 +1,122 @@
+#include "io/SizingFile.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "mesher/core/Error.h"
+
+namespace aniso::io {
+namespace {
+
+using nlohmann::json;
+
+struct Reader {
+  const std::string& path;
+  [[noreturn]] void fail(const std::string& what) const { throw InputError(path + ": " + what); }
+  double number(const json& j, const std::string& where) const {
+    if (!j.is_number() || !std::isfinite(j.get<double>())) fail(where + " must be a finite number");
+    return j.get<double>();
+  }
+  Vec3 vec3(const json& j, const std::string& where) const {
+    if (!j.is_array() || j.size() != 3) fail(where + " must be [x, y, z]");
+    return {number(j[0], where), number(j[1], where), number(j[2], where)};
+  }
+  const json& field(const json& j, const char* key, const std::string& where) const {
+    if (!j.contains(key)) fail(where + " has no \"" + key + "\"");
+    return j.at(key);
+  }
+  /// "h": a length or three lengths with optional "directions".
+  Metric3d metric(const json& j, const std::string& where) const {
+    const json& h = field(j, "h", where);
+    if (h.is_number()) {
+      const double v = number(h, where + ".h");
+      if (v <= 0) fail(where + ".h must be positive");
+      return Metric3d::isotropic(v);
+    }
+    const Vec3 l = vec3(h, where + ".h");
+    if ((l.array() <= 0).any()) fail(where + ".h must be positive");
+    Vec3 e[3] = {Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ()};
+    if (j.contains("directions")) {
+      const json& d = j["directions"];
+      if (!d.is_array() || d.size() != 3) fail(where + ".directions must be three vectors");
+      for (int i = 0; i < 3; ++i) {
+        e[i] = vec3(d[i], where + ".directions");
+        if (e[i].norm() == 0) fail(where + ".directions must be non-zero");
+        e[i].normalize();
+      }
+      for (int i = 0; i < 3; ++i)
+        if (std::abs(e[i].dot(e[(i + 1) % 3])) > 1e-6) fail(where + ".directions must be orthogonal");
+    }
+    return Metric3d::fromDirections(e[0], e[1], e[2], l[0], l[1], l[2]);
+  }
+};
+
+double distanceToSegment(const Vec3& x, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double len2 = ab.squaredNorm();
+  const double t = len2 > 0 ? std::clamp((x - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  return (x - (a + t * ab)).norm();
+}
+
+}  // namespace
+
+bool SizingSource::contains(const Vec3& x) const {
+  switch (kind) {
+    case Kind::Point: return (x - a).norm() <= radius;
+    case Kind::Segment: return distanceToSegment(x, a, b) <= radius;
+    case Kind::Box: return (x.array() >= a.array()).all() && (x.array() <= b.array()).all();
+  }
+  return false;
+}
+
+SizingFile readSizingFile(const std::string& path) {
+  Reader r{path};
+  if (!std::filesystem::is_regular_file(path)) r.fail("sizing file not found");
+  std::ifstream in(path);
+  json j;
+  try {
+    j = json::parse(in);
+  } catch (const json::exception& e) {
+    r.fail(std::string("not a valid JSON sizing file: ") + e.what());
+  }
+  if (!j.is_object()) r.fail("a sizing file must be a JSON object");
+  SizingFile out;
+  if (j.contains("global")) out.global = r.metric(j["global"], "global");
+  if (j.contains("sources")) {
+    if (!j["sources"].is_array()) r.fail("sources must be an array");
+    int k = 0;
+    for (const json& s : j["sources"]) {
+      const std::string where = "sources[" + std::to_string(k++) + "]";
+      SizingSource src;
+      const std::string type = s.value("type", "");
+      if (type == "point") {
+        src.kind = SizingSource::Kind::Point;
+        src.a = r.vec3(r.field(s, "at", where), where + ".at");
+      } else if (type == "segment") {
+        src.kind = SizingSource::Kind::Segment;
+        src.a = r.vec3(r.field(s, "from", where), where + ".from");
+        src.b = r.vec3(r.field(s, "to", where), where + ".to");
+      } else if (type == "box") {
+        src.kind = SizingSource::Kind::Box;
+        src.a = r.vec3(r.field(s, "min", where), where + ".min");
+        src.b = r.vec3(r.field(s, "max", where), where + ".max");
+        if ((src.a.array() > src.b.array()).any()) r.fail(where + ".min must not exceed .max");
+      } else {
+        r.fail(where + ".type must be \"point\", \"segment\" or \"box\"");
+      }
+      if (s.contains("radius")) {
+        src.radius = r.number(s["radius"], where + ".radius");
+        if (src.radius < 0) r.fail(where + ".radius must not be negative");
+      }
+      src.metric = r.metric(s, where);
+      out.sources.push_back(src);
+    }
+  }
+  if (!out.global && out.sources.empty()) r.fail("the sizing file defines no global size and no sources");
+  return out;
+}
+
+}  // namespace aniso::io
