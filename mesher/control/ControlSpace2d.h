@@ -9,6 +9,7 @@
 //
 // Thread safety: getMetric() is const and must be safe to call from several threads at
 // once on a control space that is no longer being modified.
+#include <cstdint>
 #include <memory>
 
 #include "mesher/core/Types.h"
@@ -31,6 +32,9 @@ class ControlSpace2d {
   virtual SurfaceMetricAt getMetric(const Vec2& uv) const = 0;
   /// The parametric rectangle this control space covers.
   virtual Box2 bounds() const = 0;
+  /// A value that changes whenever the metric field changes (adaptive control spaces);
+  /// constant for immutable ones. Lets query caches (MetricQueryCache.h) detect staleness.
+  virtual std::uint64_t revision() const { return 0; }
 };
 
 using ControlSpace2dPtr = std::shared_ptr<ControlSpace2d>;
