@@ -1,0 +1,127 @@
+#include "mesher/delaunay3d/SpatialSort.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "mesher/core/Error.h"
+
+namespace aniso::del3d {
+namespace {
+
+constexpr std::uint64_t kNonFiniteKey = ~std::uint64_t{0};
+
+// Cells per axis: about 2^(log2(n)/3 + 4), i.e. thousands of cells per point, which is as
+// local as a finer curve for the walk and cheaper to compute.
+int curveBits(std::size_t n) {
+  int log2n = 0;
+  while ((std::size_t{1} << log2n) < n && log2n < 63) ++log2n;
+  return std::clamp(log2n / 3 + 4, 4, 21);
+}
+
+std::uint64_t splitmix(std::uint64_t& s) {
+  std::uint64_t z = (s += 0x9E3779B97F4A7C15ull);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+// Hilbert keys of all points over their common bounding box.
+std::vector<std::uint64_t> hilbertKeys(std::span<const Vec3> points) {
+  Box3 box;
+  for (const Vec3& p : points)
+    if (p.allFinite()) box.add(p);
+  std::vector<std::uint64_t> keys(points.size(), kNonFiniteKey);
+  if (box.empty()) return keys;
+  const int bits = curveBits(points.size());
+  const double cells = static_cast<double>(1u << bits);
+  Vec3 scale;
+  for (int a = 0; a < 3; ++a) {
+    const double ext = box.hi[a] - box.lo[a];
+    scale[a] = ext > 0 ? cells / ext : 0.0;
+  }
+  const std::uint32_t maxCell = (1u << bits) - 1;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const Vec3& p = points[k];
+    if (!p.allFinite()) continue;
+    std::uint32_t c[3];
+    for (int a = 0; a < 3; ++a) {
+      const double q = (p[a] - box.lo[a]) * scale[a];
+      c[a] = std::min(maxCell, static_cast<std::uint32_t>(std::max(0.0, q)));
+    }
+    keys[k] = hilbertIndex(c[0], c[1], c[2], bits);
+  }
+  return keys;
+}
+
+// Sorts order[begin, end) by (key, index): deterministic, and the pairs sort in cache.
+void sortRange(std::vector<std::uint32_t>& order, std::size_t begin, std::size_t end,
+               const std::vector<std::uint64_t>& keys, std::vector<std::pair<std::uint64_t, std::uint32_t>>& buf) {
+  buf.clear();
+  for (std::size_t k = begin; k < end; ++k) buf.emplace_back(keys[order[k]], order[k]);
+  std::sort(buf.begin(), buf.end());
+  for (std::size_t k = begin; k < end; ++k) order[k] = buf[k - begin].second;
+}
+
+}  // namespace
+
+// Skilling, "Programming the Hilbert curve" (AIP Conf. Proc. 707, 2004): axes to the
+// transposed Hilbert index, then bit interleaving.
+std::uint64_t hilbertIndex(std::uint32_t x, std::uint32_t y, std::uint32_t z, int bits) {
+  std::uint32_t X[3] = {x, y, z};
+  const std::uint32_t m = 1u << (bits - 1);
+  for (std::uint32_t q = m; q > 1; q >>= 1) {
+    const std::uint32_t p = q - 1;
+    for (int i = 0; i < 3; ++i) {
+      if (X[i] & q) {
+        X[0] ^= p;
+      } else {
+        const std::uint32_t t = (X[0] ^ X[i]) & p;
+        X[0] ^= t;
+        X[i] ^= t;
+      }
+    }
+  }
+  for (int i = 1; i < 3; ++i) X[i] ^= X[i - 1];
+  std::uint32_t t = 0;
+  for (std::uint32_t q = m; q > 1; q >>= 1)
+    if (X[2] & q) t ^= q - 1;
+  for (int i = 0; i < 3; ++i) X[i] ^= t;
+  std::uint64_t key = 0;
+  for (int b = bits - 1; b >= 0; --b)
+    for (int i = 0; i < 3; ++i) key = (key << 1) | ((X[i] >> b) & 1u);
+  return key;
+}
+
+std::vector<std::uint32_t> hilbertOrder(std::span<const Vec3> points) {
+  if (points.size() >= 0xFFFFFFFFull) throw MeshingError("hilbertOrder: too many points");
+  const std::vector<std::uint64_t> keys = hilbertKeys(points);
+  std::vector<std::uint32_t> order(points.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<std::uint32_t>(k);
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> buf;
+  sortRange(order, 0, order.size(), keys, buf);
+  return order;
+}
+
+std::vector<std::uint32_t> brioOrder(std::span<const Vec3> points, std::uint64_t seed, double ratio,
+                                     std::size_t minRound) {
+  if (points.size() >= 0xFFFFFFFFull) throw MeshingError("brioOrder: too many points");
+  if (!(ratio > 0 && ratio < 1)) throw MeshingError("brioOrder: ratio must be in (0, 1)");
+  const std::vector<std::uint64_t> keys = hilbertKeys(points);
+  std::vector<std::uint32_t> order(points.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<std::uint32_t>(k);
+  std::uint64_t s = seed;
+  for (std::size_t k = order.size(); k > 1; --k) std::swap(order[k - 1], order[splitmix(s) % k]);
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> buf;
+  buf.reserve(order.size());
+  std::size_t end = order.size();
+  while (end > 0) {
+    std::size_t begin = end > minRound ? static_cast<std::size_t>(std::floor(static_cast<double>(end) * ratio)) : 0;
+    if (begin < minRound / 2) begin = 0;
+    sortRange(order, begin, end, keys, buf);
+    end = begin;
+  }
+  return order;
+}
+
+}  // namespace aniso::del3d

@@ -1,0 +1,89 @@
+#include "mesher/delaunay3d/TetMesh.h"
+
+#include "mesher/core/Error.h"
+
+namespace aniso::del3d {
+
+VertexId TetMesh::addVertex(const Vec3& p) {
+  if (vtet_.size() >= kFreeMark) throw MeshingError("TetMesh: too many vertices");
+  xyz_.push_back(p.x());
+  xyz_.push_back(p.y());
+  xyz_.push_back(p.z());
+  vtet_.push_back(kNone);
+  return VertexId(static_cast<std::uint32_t>(vtet_.size() - 1));
+}
+
+int TetMesh::localIndex(TetId t, VertexId v) const {
+  const std::uint32_t* tv = tetVertices(t);
+  for (int i = 0; i < 4; ++i)
+    if (tv[i] == v.index) return i;
+  return -1;
+}
+
+void TetMesh::setConstrained(TetId t, int i, bool on) {
+  if (on) certified_ = false;
+  setConstrainedBit(t, i, on);
+  const std::uint32_t code = adjacentCode(t, i);
+  if (code != kNone) setConstrainedBit(codeTet(code), codeFace(code), on);
+}
+
+TetId TetMesh::createTet(VertexId a, VertexId b, VertexId c, VertexId d) {
+  std::uint32_t t;
+  if (freeHead_ != kNone) {
+    t = freeHead_;
+    freeHead_ = tn_[4 * std::size_t{t}];
+    tf_[t] = 0;
+  } else {
+    if (tf_.size() >= kMaxTets) throw MeshingError("TetMesh: too many tetrahedra");
+    t = static_cast<std::uint32_t>(tf_.size());
+    tv_.resize(tv_.size() + 4);
+    tn_.resize(tn_.size() + 4);
+    tf_.push_back(0);
+  }
+  const std::size_t k = 4 * std::size_t{t};
+  tv_[k] = a.index;
+  tv_[k + 1] = b.index;
+  tv_[k + 2] = c.index;
+  tv_[k + 3] = d.index;
+  tn_[k] = tn_[k + 1] = tn_[k + 2] = tn_[k + 3] = kNone;
+  ++live_;
+  return TetId(t);
+}
+
+void TetMesh::freeTet(TetId t) {
+  const std::size_t k = 4 * std::size_t{t.index};
+  tv_[k] = kFreeMark;
+  tv_[k + 1] = tv_[k + 2] = tv_[k + 3] = kNone;
+  tn_[k] = freeHead_;
+  tn_[k + 1] = tn_[k + 2] = tn_[k + 3] = kNone;
+  tf_[t.index] = 0;
+  freeHead_ = t.index;
+  --live_;
+}
+
+void TetMesh::reserve(std::size_t vertices, std::size_t tets) {
+  xyz_.reserve(3 * vertices);
+  vtet_.reserve(vertices);
+  tv_.reserve(4 * tets);
+  tn_.reserve(4 * tets);
+  tf_.reserve(tets);
+}
+
+void TetMesh::clear() {
+  xyz_.clear();
+  vtet_.clear();
+  tv_.clear();
+  tn_.clear();
+  tf_.clear();
+  freeHead_ = kNone;
+  live_ = 0;
+  certified_ = false;
+}
+
+std::size_t TetMesh::memoryBytes() const {
+  return xyz_.capacity() * sizeof(double) + vtet_.capacity() * sizeof(std::uint32_t) +
+         tv_.capacity() * sizeof(std::uint32_t) + tn_.capacity() * sizeof(std::uint32_t) +
+         tf_.capacity() * sizeof(std::uint8_t);
+}
+
+}  // namespace aniso::del3d
