@@ -20,7 +20,7 @@ DelaunayResult buildDelaunay(TetMesh& mesh, std::span<const Vec3> points, const 
   for (const Vec3& p : points)
     if (p.allFinite()) bounds.add(p);
   if (bounds.empty()) throw MeshingError("buildDelaunay: no finite point");
-  if (options.reserve) mesh.reserve(points.size() + 8, points.size() * 27 / 4 + 64);
+  if (options.reserve) mesh.reserve(points.size() + 8, points.size() * 7 + 64);
   const Mat3* m = options.transform.isIdentity(0.0) ? nullptr : &options.transform;
   res.box = createEnclosingBox(mesh, bounds, options.boxMargin, m);
 

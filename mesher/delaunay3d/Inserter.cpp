@@ -156,39 +156,51 @@ void Inserter::growCavity() {
 // Builds the cavity faces and the new tets' vertices; true when every new tet is positive,
 // no constrained face is interior to the cavity and no vertex would be stranded.
 bool Inserter::collectBoundary() {
-  boundary_.clear();
   nextStamp();
   cavityVertices_ = 0;
+  const std::size_t cap = 4 * cavity_.size() + 1;  // + 1: matchEdges' dummy
+  if (boundary_.size() < cap) boundary_.resize(std::max(cap, 2 * boundary_.size()));
+  std::size_t nb = 0;
   bool ok = true;
+  // Written without data-dependent branches where the outcome is a coin flip (new
+  // vertex or not, neighbour in the cavity or not): every face is written to the next
+  // slot, and the slot is kept only for a cavity face.
   for (const TetId t : cavity_) {
     const std::uint32_t* tv = mesh_.tetVertices(t);
+    std::uint32_t loc[4];
     for (int i = 0; i < 4; ++i) {
-      if (vstamp_[tv[i]] != stamp_) {
-        vstamp_[tv[i]] = stamp_;
-        vlocal_[tv[i]] = cavityVertices_++;
-      }
+      const std::uint32_t v = tv[i];
+      const bool isNew = vstamp_[v] != stamp_;
+      loc[i] = isNew ? cavityVertices_ : vlocal_[v];
+      vstamp_[v] = stamp_;
+      vlocal_[v] = loc[i];
+      cavityVertices_ += isNew ? 1u : 0u;
     }
+    const std::uint8_t flags = mesh_.flags(t);
     for (int i = 0; i < 4; ++i) {
       const std::uint32_t code = mesh_.adjacentCode(t, i);
-      if (code != kNone && mesh_.hasMark(codeTet(code), kInCavity)) {
-        if (mesh_.isConstrained(t, i)) ok = false;
-        continue;
+      const bool hull = code == kNone;
+      const bool inside = !hull && (mesh_.flags(TetId(hull ? 0u : code >> 2)) & kInCavity);
+      const bool constrained = (flags >> i) & 1u;
+      BoundaryFace& f = boundary_[nb];
+      for (int m = 0; m < 4; ++m) {
+        f.v[m] = tv[m];
+        f.l[m] = loc[m];
       }
-      // Faces shared with a tested, rejected tet are visible from p in a Delaunay mesh
-      // (identity metric): p outside that tet's circumsphere puts it on our side.
-      const bool certain = certified_ && code != kNone && !mesh_.isConstrained(t, i);
-      if (!certain && faceOrient(mesh_, tv, i, p_) <= 0) ok = false;
-      BoundaryFace& f = boundary_.emplace_back();
-      for (int m = 0; m < 4; ++m) f.v[m] = tv[m];
       f.v[i] = kNone;  // the new vertex, known at commit
-      for (int m = 0; m < 4; ++m) f.l[m] = vlocal_[tv[m]];
       f.outer = code;
       f.face = static_cast<std::uint8_t>(i);
-      f.constrained = mesh_.isConstrained(t, i);
+      f.constrained = constrained;
+      nb += inside ? 0 : 1;
+      ok = ok && !(inside && constrained);
+      // Faces shared with a tested, rejected tet are visible from p in a Delaunay mesh
+      // (identity metric): p outside that tet's circumsphere puts it on our side.
+      if (!inside && (!certified_ || hull || constrained) && faceOrient(mesh_, tv, i, p_) <= 0) ok = false;
     }
   }
+  nb_ = nb;
   // A ball bounded by F triangles has F/2 + 2 boundary vertices; more means one is inside.
-  return ok && cavityVertices_ == boundary_.size() / 2 + 2;
+  return ok && cavityVertices_ == nb / 2 + 2;
 }
 
 // Slow path (rounding of M·p, constrained faces, non-Delaunay meshes): drops offending
@@ -265,11 +277,10 @@ bool Inserter::matchEdges() {
   // Branch-free pairing (the first/second outcome is a coin flip for the predictor): the
   // first face on an edge writes its link into a dummy face past the end, and gets its
   // own link when the second one arrives.
-  const std::size_t nf = boundary_.size();
-  boundary_.emplace_back();
+  const std::size_t nf = nb_;
   const std::uint32_t dummy = static_cast<std::uint32_t>(4 * nf);
   std::size_t matched = 0;
-  bool bad = false;
+  std::uint32_t bad = 0;
   for (std::size_t k = 0; k < nf; ++k) {
     BoundaryFace& f = boundary_[k];
     for (int e = 0; e < 3; ++e) {
@@ -277,35 +288,35 @@ bool Inserter::matchEdges() {
       const std::uint32_t a = std::min(f.l[x], f.l[y]), b = std::max(f.l[x], f.l[y]);
       PairSlot& s = pairs_[std::size_t{b} * (b - 1) / 2 + a];
       const std::uint32_t ref = static_cast<std::uint32_t>(4 * k + j);
-      const bool first = s.stamp != stamp_;
-      const bool third = !first && s.ref == kNone;
-      const std::uint32_t other = (first || third) ? dummy : s.ref;
+      // Masks, not branches: all ones when this is the first face on the edge / a third.
+      const std::uint32_t sref = s.ref;
+      const std::uint32_t first = 0u - static_cast<std::uint32_t>(s.stamp != stamp_);
+      const std::uint32_t third = ~first & (0u - static_cast<std::uint32_t>(sref == kNone));
+      const std::uint32_t toDummy = first | third;
+      const std::uint32_t other = (dummy & toDummy) | (sref & ~toDummy);
       s.stamp = stamp_;
-      s.ref = first ? ref : kNone;
+      s.ref = (ref & first) | (kNone & ~first);
       f.link[j] = other;
       boundary_[other >> 2].link[other & 3u] = ref;
-      matched += !first;
+      matched += ~first & 1u;
       bad |= third;
     }
   }
-  boundary_.pop_back();
-  return !bad && 2 * matched == 3 * nf;
+  return bad == 0 && 2 * matched == 3 * nf;
 }
 
 bool Inserter::matchEdgesHashed() {
-  const std::size_t halfEdges = 3 * boundary_.size();
+  const std::size_t halfEdges = 3 * nb_;
   std::size_t size = 64;
   while (size < 2 * halfEdges) size *= 2;
   if (edges_.size() < size) edges_.resize(size);
   const std::uint32_t mask = static_cast<std::uint32_t>(size - 1);
   nextStamp();
   std::size_t matched = 0;
-  for (std::size_t k = 0; k < boundary_.size(); ++k) {
+  for (std::size_t k = 0; k < nb_; ++k) {
     const BoundaryFace& f = boundary_[k];
-    for (int j = 0; j < 4; ++j) {
-      if (j == f.face) continue;
-      int x, y;
-      otherTwo(f.face, j, x, y);
+    for (int e = 0; e < 3; ++e) {
+      const int j = kSideFaces[f.face][e][0], x = kSideFaces[f.face][e][1], y = kSideFaces[f.face][e][2];
       const std::uint32_t a = std::min(f.v[x], f.v[y]), b = std::max(f.v[x], f.v[y]);
       std::uint32_t h = edgeHash(a, b) & mask;
       for (;;) {
@@ -337,11 +348,12 @@ void Inserter::commit() {
   removed_.assign(cavity_.begin(), cavity_.end());
   for (const TetId t : cavity_) mesh_.freeTet(t);
   newTets_.clear();
-  for (BoundaryFace& f : boundary_) {
+  for (std::size_t k = 0; k < nb_; ++k) {
+    BoundaryFace& f = boundary_[k];
     f.v[f.face] = nv.index;
     newTets_.push_back(mesh_.createTet(VertexId(f.v[0]), VertexId(f.v[1]), VertexId(f.v[2]), VertexId(f.v[3])));
   }
-  for (std::size_t k = 0; k < boundary_.size(); ++k) {
+  for (std::size_t k = 0; k < nb_; ++k) {
     const BoundaryFace& f = boundary_[k];
     const TetId t = newTets_[k];
     const int i = f.face;

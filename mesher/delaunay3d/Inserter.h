@@ -107,7 +107,8 @@ class Inserter {
 
   std::vector<TetId> cavity_;
   std::vector<TetId> rejected_;
-  std::vector<BoundaryFace> boundary_;
+  std::vector<BoundaryFace> boundary_;  // first nb_ entries used
+  std::size_t nb_ = 0;
   std::vector<EdgeSlot> edges_;
   std::vector<PairSlot> pairs_;
   std::vector<TetId> newTets_;

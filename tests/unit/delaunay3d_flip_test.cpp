@@ -12,6 +12,7 @@
 #include "mesher/delaunay3d/FlipT23.h"
 #include "mesher/delaunay3d/FlipT32.h"
 #include "mesher/delaunay3d/FlipT44.h"
+#include "mesher/delaunay3d/Inserter.h"
 #include "mesher/delaunay3d/LocalRetriangulation.h"
 #include "mesher/delaunay3d/RemoveTets.h"
 #include "mesher/delaunay3d/Validate.h"
@@ -315,4 +316,46 @@ TEST(Delaunay3dFlips, ReplaceTetsRejectsMismatchedBoundaries) {
   EXPECT_THROW(replaceTets(mesh, old, one, out), MeshingError);
   EXPECT_EQ(tetSets(mesh), before);
   EXPECT_TRUE(validate(mesh).empty());
+}
+
+TEST(Delaunay3dFlips, InsertionIntoAFlippedNonDelaunayMeshStaysValid) {
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<Vec3> pts(400);
+  for (Vec3& p : pts) p = Vec3(u(rng), u(rng), u(rng));
+  TetMesh mesh;
+  buildDelaunay(mesh, std::span(pts).first(200));
+  EXPECT_TRUE(mesh.certifiedDelaunay());
+  std::size_t flips = 0;
+  for (int it = 0; it < 4000; ++it) {
+    const TetId t(static_cast<std::uint32_t>(rng() % mesh.tetSlots()));
+    Flip23Plan p;
+    if (mesh.isAlive(t) && canFlip23(mesh, t, static_cast<int>(rng() % 4), &p)) {
+      flip23(mesh, p);
+      ++flips;
+    }
+  }
+  ASSERT_GT(flips, 100u);
+  EXPECT_FALSE(mesh.certifiedDelaunay());
+  ValidateOptions d;
+  d.checkDelaunay = true;
+  d.maxProblems = 100000;
+  ASSERT_GT(validate(mesh, d).size(), 50u);  // far from Delaunay now
+  Inserter ins(mesh);
+  std::size_t inserted = 0;
+  for (std::size_t k = 200; k < pts.size(); ++k) {
+    const InsertResult r = ins.insert(pts[k]);
+    ASSERT_NE(r.status, InsertStatus::Outside);
+    ASSERT_NE(r.status, InsertStatus::Duplicate);
+    inserted += r.status == InsertStatus::Inserted;
+    const auto problems = validate(mesh);
+    ASSERT_TRUE(problems.empty()) << k << "\n" << joined(problems);
+  }
+  EXPECT_GT(inserted, 150u);
+  // Every vertex that was in the mesh is still in some tet.
+  for (std::uint32_t v = 0; v < mesh.numVertices(); ++v) {
+    const TetId t = mesh.vertexTet(VertexId(v));
+    ASSERT_TRUE(t.valid()) << v;
+    ASSERT_GE(mesh.localIndex(t, VertexId(v)), 0);
+  }
 }

@@ -138,6 +138,7 @@ TEST(Delaunay3d, TwoHundredThousandRandomPoints) {
   EXPECT_EQ(r.refused, 0u);
   EXPECT_EQ(r.duplicates, 0u);
   EXPECT_EQ(mesh.numVertices(), pts.size() + 8);
+  EXPECT_TRUE(mesh.certifiedDelaunay());
   for (std::size_t k = 0; k < pts.size(); k += 997) ASSERT_EQ(mesh.point(r.vertexOf[k]), pts[k]);
   const auto problems = validate(mesh, delaunayCheck());
   EXPECT_TRUE(problems.empty()) << joined(problems);
@@ -239,6 +240,7 @@ TEST(Delaunay3d, AnisotropicMetricGivesMetricDelaunay) {
   opt.transform = m;
   const DelaunayResult res = buildDelaunay(mesh, pts, opt);
   EXPECT_EQ(res.inserted, pts.size());
+  EXPECT_FALSE(mesh.certifiedDelaunay());  // Delaunay for M, not for the identity
   const auto problems = validate(mesh, delaunayCheck(m));
   EXPECT_TRUE(problems.empty()) << joined(problems);
   // It is a different triangulation from the isotropic one.
@@ -286,6 +288,7 @@ TEST(Delaunay3d, ConstrainedFacesAreNeverCrossed) {
     ASSERT_TRUE(problems.empty()) << k << "\n" << joined(problems);
   }
   EXPECT_GT(inserted, 250u);
+  EXPECT_FALSE(mesh.certifiedDelaunay());
   const auto faces = allFaces(mesh);
   for (const Triple& f : fixed) EXPECT_TRUE(faces.count({f, true})) << f[0] << " " << f[1] << " " << f[2];
   // The faces not constrained are still locally Delaunay wherever the cavities could grow:
