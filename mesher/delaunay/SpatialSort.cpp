@@ -26,9 +26,9 @@ void radixSort(std::vector<std::pair<std::uint32_t, std::uint32_t>>& a) {
   }
 }
 
-/// Sorts idx[first, last) by the Hilbert index of the points over `box`; non-finite last.
-void sortRange(std::span<const Vec2> pts, const Box2& box, std::vector<std::uint32_t>& idx, std::size_t first,
-               std::size_t last) {
+/// Hilbert keys of all points over `box`, computed in point order (sequential access);
+/// non-finite points get the largest key.
+std::vector<std::uint32_t> hilbertKeys(std::span<const Vec2> pts, const Box2& box) {
   const double cells = std::ldexp(1.0, kBits);
   const Vec2 size = box.size();
   const double sx = size.x() > 0 ? cells / size.x() : 0.0, sy = size.y() > 0 ? cells / size.y() : 0.0;
@@ -36,23 +36,23 @@ void sortRange(std::span<const Vec2> pts, const Box2& box, std::vector<std::uint
     const double q = std::floor((v - lo) * s);
     return static_cast<std::uint32_t>(std::clamp(q, 0.0, cells - 1));
   };
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> keyed;
-  std::vector<std::uint32_t> nonFinite;
-  keyed.reserve(last - first);
-  for (std::size_t k = first; k < last; ++k) {
-    const Vec2& p = pts[idx[k]];
-    if (!p.allFinite()) {
-      nonFinite.push_back(idx[k]);
-      continue;
-    }
-    const auto key = static_cast<std::uint32_t>(
-        hilbertIndex(quantise(p.x(), box.lo.x(), sx), quantise(p.y(), box.lo.y(), sy), kBits));
-    keyed.emplace_back(key, idx[k]);
+  std::vector<std::uint32_t> keys(pts.size());
+  for (std::size_t k = 0; k < pts.size(); ++k) {
+    const Vec2& p = pts[k];
+    keys[k] = p.allFinite() ? static_cast<std::uint32_t>(hilbertIndex(quantise(p.x(), box.lo.x(), sx),
+                                                                       quantise(p.y(), box.lo.y(), sy), kBits))
+                            : 0xFFFFFFFFu;
   }
+  return keys;
+}
+
+/// Sorts idx[first, last) by key (stable).
+void sortRange(const std::vector<std::uint32_t>& keys, std::vector<std::uint32_t>& idx, std::size_t first,
+               std::size_t last, std::vector<std::pair<std::uint32_t, std::uint32_t>>& keyed) {
+  keyed.clear();
+  for (std::size_t k = first; k < last; ++k) keyed.emplace_back(keys[idx[k]], idx[k]);
   radixSort(keyed);
-  std::size_t k = first;
-  for (const auto& e : keyed) idx[k++] = e.second;
-  for (std::uint32_t v : nonFinite) idx[k++] = v;
+  for (std::size_t k = first; k < last; ++k) idx[k] = keyed[k - first].second;
 }
 
 Box2 finiteBox(std::span<const Vec2> pts) {
@@ -86,7 +86,13 @@ std::uint64_t hilbertIndex(std::uint32_t x, std::uint32_t y, int bits) {
 std::vector<std::uint32_t> hilbertOrder(std::span<const Vec2> points) {
   std::vector<std::uint32_t> idx(points.size());
   std::iota(idx.begin(), idx.end(), 0u);
-  sortRange(points, finiteBox(points), idx, 0, idx.size());
+  const std::vector<std::uint32_t> keys = hilbertKeys(points, finiteBox(points));
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> keyed;
+  keyed.reserve(points.size());
+  sortRange(keys, idx, 0, idx.size(), keyed);
+  // Non-finite points share the largest key with finite ones in the last cell: move them last.
+  if (std::any_of(keys.begin(), keys.end(), [](std::uint32_t k) { return k == 0xFFFFFFFFu; }))
+    std::stable_partition(idx.begin(), idx.end(), [&](std::uint32_t i) { return points[i].allFinite(); });
   return idx;
 }
 
@@ -98,12 +104,14 @@ std::vector<std::uint32_t> brioOrder(std::span<const Vec2> points, std::uint64_t
   // Non-finite points go last (they are refused by the insertion anyway).
   const auto mid = std::stable_partition(idx.begin(), idx.end(), [&](std::uint32_t i) { return points[i].allFinite(); });
   const std::size_t n = static_cast<std::size_t>(mid - idx.begin());
-  const Box2 box = finiteBox(points);
+  const std::vector<std::uint32_t> keys = hilbertKeys(points, finiteBox(points));
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> keyed;
+  keyed.reserve(n);
   // Round boundaries from the end: [n/2, n), [n/4, n/2), … down to minRound.
   std::size_t hi = n;
   while (hi > 0) {
     const std::size_t lo = hi / 2 >= std::max<std::size_t>(minRound, 1) ? hi / 2 : 0;
-    sortRange(points, box, idx, lo, hi);
+    sortRange(keys, idx, lo, hi, keyed);
     hi = lo;
   }
   return idx;

@@ -4,8 +4,11 @@
 // whose SIGN is exact for the given double coordinates (the magnitude is only an
 // approximation): a fast floating-point evaluation with a forward error bound first, and
 // an exact evaluation with expansion arithmetic when the bound cannot certify the sign.
-// Inputs must be finite; no overflow/underflow handling beyond what doubles give for
-// coordinates in [1e-140, 1e140].
+// Inputs must be finite. Every finite input is handled exactly: coordinates far from 1 in
+// magnitude are rescaled by a power of two (signs are invariant), and coordinates that
+// span too many binades for floating-point expansions fall back to big-integer arithmetic
+// (Predicates.cpp explains the ranges). The returned magnitude may then be that of the
+// rescaled input, or clamped to stay a nonzero double.
 //
 // Conventions (all determinants of differences, so translation-invariant):
 //   orient2d(a,b,c)     > 0  iff a, b, c are in counter-clockwise order
