@@ -21,7 +21,7 @@ void tensorArray(std::ostream& o, const char* name, const std::vector<Mat3>& v) 
 
 }  // namespace
 
-void writeControlSpaceVtu(const ControlSpaceGrid& g, const std::string& path) {
+void writeControlSpaceVtu(const ControlSpaceGrid& g, const std::string& path, const std::vector<int>* cellFace) {
   const size_t np = g.points.size(), nc = g.cellCount();
   if (g.cells.size() != nc * static_cast<size_t>(g.cellSize))
     throw MeshingError(path + ": inconsistent control space grid (cells)");
@@ -47,7 +47,14 @@ void writeControlSpaceVtu(const ControlSpaceGrid& g, const std::string& path) {
   for (size_t c = 0; c < nc; ++c) o << vtkType << '\n';
   o << "</DataArray>\n</Cells>\n<CellData Scalars=\"level\">\n<DataArray type=\"Int32\" Name=\"level\" format=\"ascii\">\n";
   for (int l : g.cellLevel) o << l << '\n';
-  o << "</DataArray>\n</CellData>\n";
+  o << "</DataArray>\n";
+  if (cellFace) {
+    if (cellFace->size() != nc) throw MeshingError(path + ": inconsistent control space grid (faces)");
+    o << "<DataArray type=\"Int32\" Name=\"face\" format=\"ascii\">\n";
+    for (int f : *cellFace) o << f << '\n';
+    o << "</DataArray>\n";
+  }
+  o << "</CellData>\n";
   if (hasMetric) {
     o << "<PointData Tensors=\"metric\" Scalars=\"h1\">\n";
     tensorArray(o, "metric", g.metric);

@@ -6,11 +6,14 @@
 // directions, plus "Mp" when the parameterization tensor is cached. Points of a 2D control
 // space are written at (u, v, 0). Atomic: nothing is left behind on failure.
 #include <string>
+#include <vector>
 
 #include "mesher/control/ControlSpaceGrid.h"
 
 namespace aniso::io {
 
-void writeControlSpaceVtu(const ControlSpaceGrid& grid, const std::string& path);
+/// `cellFace`, when given, is written as the cell data "face" (one CAD face id per cell).
+void writeControlSpaceVtu(const ControlSpaceGrid& grid, const std::string& path,
+                          const std::vector<int>* cellFace = nullptr);
 
 }  // namespace aniso::io

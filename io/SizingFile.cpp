@@ -54,25 +54,9 @@ struct Reader {
   }
 };
 
-double distanceToSegment(const Vec3& x, const Vec3& a, const Vec3& b) {
-  const Vec3 ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double t = len2 > 0 ? std::clamp((x - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (x - (a + t * ab)).norm();
-}
-
 }  // namespace
 
-bool SizingSource::contains(const Vec3& x) const {
-  switch (kind) {
-    case Kind::Point: return (x - a).norm() <= radius;
-    case Kind::Segment: return distanceToSegment(x, a, b) <= radius;
-    case Kind::Box: return (x.array() >= a.array()).all() && (x.array() <= b.array()).all();
-  }
-  return false;
-}
-
-SizingFile readSizingFile(const std::string& path) {
+UserSizing readSizingFile(const std::string& path) {
   Reader r{path};
   if (!std::filesystem::is_regular_file(path)) r.fail("sizing file not found");
   std::ifstream in(path);
@@ -83,7 +67,7 @@ SizingFile readSizingFile(const std::string& path) {
     r.fail(std::string("not a valid JSON sizing file: ") + e.what());
   }
   if (!j.is_object()) r.fail("a sizing file must be a JSON object");
-  SizingFile out;
+  UserSizing out;
   if (j.contains("global")) out.global = r.metric(j["global"], "global");
   if (j.contains("sources")) {
     if (!j["sources"].is_array()) r.fail("sources must be an array");

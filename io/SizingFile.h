@@ -14,32 +14,13 @@
 // the coordinate axes). "radius" (≥ 0, default 0) widens a point or segment source into a
 // ball or capsule. Inside a source's region the mesh metric is intersected with the
 // source's metric (it can only make elements smaller).
-#include <optional>
 #include <string>
-#include <vector>
 
-#include "mesher/core/Types.h"
-#include "mesher/metric/Metric.h"
+#include "mesher/sizing/UserSizing.h"
 
 namespace aniso::io {
 
-struct SizingSource {
-  enum class Kind { Point, Segment, Box } kind = Kind::Point;
-  Vec3 a = Vec3::Zero();  ///< point, segment start, box min
-  Vec3 b = Vec3::Zero();  ///< segment end, box max
-  double radius = 0;
-  Metric3d metric;
-
-  /// Is x inside the region of the source (ball, capsule, box)?
-  bool contains(const Vec3& x) const;
-};
-
-struct SizingFile {
-  std::optional<Metric3d> global;
-  std::vector<SizingSource> sources;
-};
-
 /// Reads and checks a sizing file; throws InputError naming the file and the field.
-SizingFile readSizingFile(const std::string& path);
+UserSizing readSizingFile(const std::string& path);
 
 }  // namespace aniso::io

@@ -25,6 +25,16 @@ struct MeshArgs {
 };
 int runMesh(const MeshArgs& args);
 
+struct SizingArgs {
+  std::string file;
+  std::string output;
+  int face = 0;  ///< 1-based; 0 = every face, mapped to 3D
+  bool fragment = true;
+  std::string sizingFile;
+  SizingParameters params;
+};
+int runSizing(const SizingArgs& args);
+
 /// Output formats the mesh command writes, by extension.
 bool isKnownOutputExtension(const std::string& path);
 

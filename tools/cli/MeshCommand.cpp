@@ -3,15 +3,12 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "cad/CadModel.h"
-#include "io/AnalyticModel.h"
 #include "io/AtomicFile.h"
 #include "io/Report.h"
 #include "io/SizingFile.h"
 #include "mesher/core/Error.h"
-#include "mesher/core/Log.h"
 #include "tools/cli/Commands.h"
-#include "tools/cli/ModelJson.h"
+#include "tools/cli/ModelInput.h"
 
 namespace aniso::cli {
 namespace {
@@ -80,40 +77,17 @@ int runMesh(const MeshArgs& args) {
   report.options = optionsJson(args);
 
   // Reading and preparing the model: failures here are bad input (exit 2).
-  auto t = Clock::now();
+  ModelInput in = loadModel(args.file, args.fragment);
+  report.times = in.times;
+  report.extra["model"] = in.summary;
   int dim = args.options.dim;
-  Model topo;
-  if (io::isAnalyticModelPath(args.file)) {
-    io::AnalyticModel am = io::readAnalyticModel(args.file);
-    report.times.emplace_back("read", seconds(t, Clock::now()));
-    if (dim == 3) throw InputError(args.file + ": nothing to mesh in 3D: an analytic model is a surface (use --dim 2)");
-    dim = 2;
-    report.extra["model"] = {{"name", am.name}, {"faces", am.model.faces.size()}, {"edges", am.model.edges.size()},
-                             {"analytic_sizing", am.sizing.has_value()}};
-    topo = std::move(am.model);
-  } else {
-    cad::CadModel model = cad::CadModel::read(args.file);
-    report.times.emplace_back("read", seconds(t, Clock::now()));
-    t = Clock::now();
-    cad::PrepareOptions popt;
-    popt.fragment = args.fragment;
-    const cad::PrepareReport prep = model.prepare(popt);
-    const cad::ShapeSummary summary = model.summary();
-    report.times.emplace_back("prepare", seconds(t, Clock::now()));
-    for (const std::string& w : prep.warnings) logWarning(args.file + ": " + w);
-    if (dim == 0) dim = summary.solids > 0 ? 3 : 2;
-    if (dim == 3 && summary.solids == 0)
-      throw InputError(args.file + ": nothing to mesh in 3D: the model has no solids (use --dim 2)");
-    if (summary.faces == 0) throw InputError(args.file + ": nothing to mesh: the model has no faces");
-    nlohmann::ordered_json m = summaryJson(summary);
-    m.update(prepareJson(prep));
-    report.extra["model"] = m;
-    // The mesher's view of the model: built and validated before any meshing.
-    t = Clock::now();
-    topo = model.topology();
-    report.times.emplace_back("topology", seconds(t, Clock::now()));
-  }
+  if (dim == 0) dim = in.solids > 0 ? 3 : 2;
+  if (dim == 3 && in.solids == 0)
+    throw InputError(args.file + (in.analytic ? ": nothing to mesh in 3D: an analytic model is a surface (use --dim 2)"
+                                              : ": nothing to mesh in 3D: the model has no solids (use --dim 2)"));
+  if (in.model.faces.empty()) throw InputError(args.file + ": nothing to mesh: the model has no faces");
   report.options["dim"] = dim;
+  const Model& topo = in.model;
   for (const std::string& problem : topo.validate()) {
     const auto colon = problem.find(':');
     report.failures.push_back({colon == std::string::npos ? "model" : problem.substr(0, colon),

@@ -60,6 +60,16 @@ int main(int argc, char** argv) {
   meshCmd->add_option("--report", mesh.report, "Write the JSON run report here");
   meshCmd->fallthrough();
 
+  cli::SizingArgs sizing;
+  CLI::App* sizingCmd = app.add_subcommand("sizing", "Write the initial control space (the metric field) as VTU");
+  sizingCmd->add_option("FILE", sizing.file, "STEP, IGES, BREP or .json analytic model")->required();
+  sizingCmd->add_option("-o,--output", sizing.output, "Output .vtu file")->required();
+  sizingCmd->add_option("--face", sizing.face, "Only this face (1-based), in its parametric plane")->check(CLI::PositiveNumber);
+  addSizingOptions(*sizingCmd, sizing.params);
+  sizingCmd->add_option("--sizing", sizing.sizingFile, "User sizing sources (JSON)");
+  sizingCmd->add_flag("!--no-fragment", sizing.fragment, "Do not make touching solids conformal");
+  sizingCmd->fallthrough();
+
   // CLI11 reports an unknown command as a missing one: name it instead.
   if (argc > 1 && argv[1][0] != '-' &&
       app.get_subcommands([&](CLI::App* sub) { return sub->get_name() == argv[1]; }).empty()) {
@@ -78,6 +88,7 @@ int main(int argc, char** argv) {
   try {
     if (infoCmd->parsed()) return cli::runInfo(info);
     if (meshCmd->parsed()) return cli::runMesh(mesh);
+    if (sizingCmd->parsed()) return cli::runSizing(sizing);
   } catch (const InputError& e) {
     std::fprintf(stderr, "anisomesh: %s\n", e.what());
     return 2;

@@ -1,0 +1,109 @@
+#include "mesher/sizing/FaceControlSpace.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "mesher/control/CSAnalytic2d.h"
+#include "mesher/core/Error.h"
+#include "mesher/metric/ContourCurvatureMetric.h"
+#include "mesher/metric/CurvatureSizing.h"
+#include "mesher/metric/SurfaceCurvatureMetric.h"
+
+namespace aniso {
+namespace {
+
+std::string faceName(int face) { return "face " + std::to_string(face + 1); }
+
+/// The face's (u, v) rectangle, widened by a hair so that boundary points are inside.
+Box2 faceBounds(const ModelFace& f, int face) {
+  Box2 b = f.uvBounds;
+  if (b.empty() || !(b.size().array() > 0).all() || !b.lo.allFinite() || !b.hi.allFinite())
+    throw MeshingError(faceName(face) + ": empty parametric bounds");
+  const Vec2 pad = 1e-9 * b.size() + Vec2::Constant(1e-12);
+  b.lo -= pad;
+  b.hi += pad;
+  return b;
+}
+
+/// Contour curvature of every edge use of the face, inserted as point sources (alg. 3.2
+/// step 6). Straight pieces carry no information (h_max everywhere) and are skipped.
+void insertContourCurvature(CSQuadtree2d& cs, const Model& model, int face, const ParametricSurface& surface,
+                            double gMin, const CurvatureSizing& sizing) {
+  const double flat = 0.999 * sizing.hMax;
+  for (const Loop& loop : model.faces[face].loops) {
+    for (const EdgeUse& use : loop.uses) {
+      const ModelEdge& e = model.edges[use.edge];
+      if (e.degenerate) continue;
+      const PCurve& pc = e.pcurves[use.pcurve];
+      // Probe at the polyline vertices (chord deviation 1e-3), refined so that probes are
+      // at most h(κ)/2 apart in space where the contour curves.
+      const std::vector<double> ts = pc.curve->polyline(pc.t0, pc.t1, &surface, 1e-3);
+      for (size_t i = 0; i + 1 < ts.size(); ++i) {
+        const Vec3 a = surface.point(pc.curve->point(ts[i]));
+        const Vec3 b = surface.point(pc.curve->point(ts[i + 1]));
+        const double kappa = std::max(pc.curve->curvature(ts[i], surface), pc.curve->curvature(ts[i + 1], surface));
+        const double h = sizing.length(kappa);
+        const int n = std::clamp(static_cast<int>(std::ceil(2 * (b - a).norm() / h)), 1, 1000);
+        for (int k = 0; k < n; ++k) {
+          const double t = ts[i] + (ts[i + 1] - ts[i]) * k / n;
+          const Metric2d m = contourCurvatureSizing(*pc.curve, t, surface, gMin, sizing);
+          if (m.angleLengths().h1 >= flat) continue;
+          cs.insertDiscreteSource(pc.curve->point(t), m);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+
+double parameterizationGuard(const SizingParameters& params, double modelDiagonal) {
+  const double hmin = params.hminFor(modelDiagonal);
+  return hmin * hmin;
+}
+
+std::unique_ptr<CSQuadtree2d> buildFaceControlSpace(const FaceSizingInput& in) {
+  const Model& model = *in.model;
+  const int face = in.face;
+  const ModelFace& f = model.faces.at(static_cast<size_t>(face));
+  const double diag = model.diagonal();
+  const CurvatureSizing sizing = CurvatureSizing::from(in.params, diag);
+  const double gMin = parameterizationGuard(in.params, diag);
+  const Box2 bounds = faceBounds(f, face);
+  // Every evaluation below uses a private clone of the surface (thread safety).
+  const std::shared_ptr<ParametricSurface> surface = f.surface->clone();
+
+  try {
+    auto cs = std::make_unique<CSQuadtree2d>(bounds, in.params);
+    // 3: surface curvature (or the uniform size).
+    if (in.params.size) {
+      const double h = *in.params.size;
+      cs->setContinuousSource(CSAnalytic2d(bounds, [h](const Vec2&) { return Metric2d::isotropic(h); }));
+    } else {
+      cs->setContinuousSource(CSAnalytic2d(
+          bounds, [&](const Vec2& uv) { return surfaceCurvatureSizing(*surface, uv, gMin, sizing); }));
+    }
+    // 4: the user's control spaces.
+    if (in.analytic) cs->superpose(*in.analytic);
+    if (in.user && !in.user->empty()) {
+      const UserSizing& user = *in.user;
+      const Metric2d none = Metric2d::isotropic(sizing.hMax);
+      cs->setContinuousSource(CSAnalytic2d(bounds, [&](const Vec2& uv) {
+        const SurfaceD1 d = surface->d1(uv);
+        const std::optional<Metric3d> m3 = user.metricAt(d.p);
+        if (!m3) return none;
+        return restrictToSurface(*m3, d.pu, d.pv, surface->parameterizationTensor(uv, gMin));
+      }));
+    }
+    // 6: contour curvature.
+    if (!in.params.size) insertContourCurvature(*cs, model, face, *surface, gMin, sizing);
+    // 7, 8.
+    cs->adaptToParameterization(*surface, gMin);
+    cs->smoothGradation(in.params.gradation);
+    return cs;
+  } catch (const MeshingError& e) {
+    throw MeshingError(faceName(face) + ": building the control space failed: " + e.what());
+  }
+}
+
+}  // namespace aniso

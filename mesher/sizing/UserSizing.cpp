@@ -1,0 +1,46 @@
+#include "mesher/sizing/UserSizing.h"
+
+#include <algorithm>
+
+#include <Eigen/LU>
+
+#include "mesher/metric/MetricIntersection.h"
+
+namespace aniso {
+namespace {
+double distanceToSegment(const Vec3& x, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double len2 = ab.squaredNorm();
+  const double t = len2 > 0 ? std::clamp((x - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  return (x - (a + t * ab)).norm();
+}
+}  // namespace
+
+bool SizingSource::contains(const Vec3& x) const {
+  switch (kind) {
+    case Kind::Point: return (x - a).norm() <= radius;
+    case Kind::Segment: return distanceToSegment(x, a, b) <= radius;
+    case Kind::Box: return (x.array() >= a.array()).all() && (x.array() <= b.array()).all();
+  }
+  return false;
+}
+
+std::optional<Metric3d> UserSizing::metricAt(const Vec3& x) const {
+  std::optional<Metric3d> m = global;
+  for (const SizingSource& s : sources) {
+    if (!s.contains(x)) continue;
+    m = m ? intersect(*m, s.metric) : s.metric;
+  }
+  return m;
+}
+
+Metric2d restrictToSurface(const Metric3d& m3, const Vec3& pu, const Vec3& pv, const Mat2& mp) {
+  Eigen::Matrix<double, 3, 2> j;
+  j.col(0) = pu;
+  j.col(1) = pv;
+  const Mat2 mpInv = mp.inverse();
+  const Eigen::Matrix<double, 3, 2> mj = m3.matrix() * j * mpInv;
+  return Metric2d::fromTensor(mj.transpose() * mj);
+}
+
+}  // namespace aniso

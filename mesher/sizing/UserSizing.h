@@ -1,0 +1,42 @@
+#pragma once
+// The user's sizing in model coordinates (read from --sizing FILE.json by io/SizingFile):
+// a global metric and extended metric sources (thesis sec. 3.2.2, fig. 3.3). Inside a
+// source's region the mesh metric is intersected with the source's metric, so a source
+// can only make elements smaller.
+#include <optional>
+#include <vector>
+
+#include "mesher/core/Types.h"
+#include "mesher/metric/Metric.h"
+
+namespace aniso {
+
+struct SizingSource {
+  enum class Kind { Point, Segment, Box } kind = Kind::Point;
+  Vec3 a = Vec3::Zero();  ///< point, segment start, box min
+  Vec3 b = Vec3::Zero();  ///< segment end, box max
+  double radius = 0;      ///< ball / capsule radius (point, segment)
+  Metric3d metric;
+
+  /// Is x inside the region of the source (ball, capsule, box)?
+  bool contains(const Vec3& x) const;
+};
+
+struct UserSizing {
+  std::optional<Metric3d> global;
+  std::vector<SizingSource> sources;
+
+  bool empty() const { return !global && sources.empty(); }
+  /// The intersection of the global metric and of every source containing x; nothing
+  /// when none applies at x.
+  std::optional<Metric3d> metricAt(const Vec3& x) const;
+};
+
+/// The 2D sizing component M_s (acting on S^R, see mesher/metric/SurfaceMetric.h) that a 3D
+/// metric M3 induces on a surface at a point with first derivatives J = [pu pv] and
+/// parameterization tensor M_p: lengths measured in the tangent plane agree,
+/// |M_s M_p y| = |M3 J y| for every parametric vector y, i.e.
+/// M_s² = M_p⁻¹ Jᵀ M3² J M_p⁻¹.
+Metric2d restrictToSurface(const Metric3d& m3, const Vec3& pu, const Vec3& pv, const Mat2& mp);
+
+}  // namespace aniso

@@ -1,0 +1,52 @@
+#include "tools/cli/ModelInput.h"
+
+#include <chrono>
+
+#include "cad/CadModel.h"
+#include "mesher/control/CSAnalytic2d.h"
+#include "mesher/core/Log.h"
+#include "tools/cli/ModelJson.h"
+
+namespace aniso::cli {
+
+ModelInput loadModel(const std::string& file, bool fragment) {
+  using Clock = std::chrono::steady_clock;
+  auto since = [](Clock::time_point a) { return std::chrono::duration<double>(Clock::now() - a).count(); };
+  ModelInput in;
+  auto t = Clock::now();
+  if (io::isAnalyticModelPath(file)) {
+    io::AnalyticModel am = io::readAnalyticModel(file);
+    in.times.emplace_back("read", since(t));
+    in.analytic = true;
+    in.analyticSizing = am.sizing;
+    in.summary = {{"name", am.name}, {"faces", am.model.faces.size()}, {"edges", am.model.edges.size()},
+                  {"analytic_sizing", am.sizing.has_value()}};
+    in.model = std::move(am.model);
+    return in;
+  }
+  cad::CadModel model = cad::CadModel::read(file);
+  in.times.emplace_back("read", since(t));
+  t = Clock::now();
+  cad::PrepareOptions popt;
+  popt.fragment = fragment;
+  const cad::PrepareReport prep = model.prepare(popt);
+  const cad::ShapeSummary summary = model.summary();
+  in.times.emplace_back("prepare", since(t));
+  for (const std::string& w : prep.warnings) logWarning(file + ": " + w);
+  in.solids = summary.solids;
+  in.summary = summaryJson(summary);
+  in.summary.update(prepareJson(prep));
+  t = Clock::now();
+  in.model = model.topology();
+  in.times.emplace_back("topology", since(t));
+  return in;
+}
+
+std::unique_ptr<ControlSpace2d> analyticControlSpace(const ModelInput& in) {
+  if (!in.analyticSizing) return nullptr;
+  const io::AnalyticSizing& s = *in.analyticSizing;
+  const ModelFace& f = in.model.faces.at(0);
+  return std::make_unique<CSAnalytic2d>(f.uvBounds, s.angle, s.h1, s.h2);
+}
+
+}  // namespace aniso::cli
