@@ -61,6 +61,7 @@ DelaunayResult buildDelaunay(TetMesh& mesh, std::span<const Vec3> points, const 
         break;
       case InsertStatus::Outside:  // cannot happen inside the enclosing box
       case InsertStatus::Refused:
+      case InsertStatus::Pointless:  // not asked for
         ++res.refused;
         break;
     }

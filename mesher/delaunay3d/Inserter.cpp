@@ -368,8 +368,10 @@ void Inserter::commit() {
   last_ = newTets_.back();
 }
 
-InsertResult Inserter::insert(const Vec3& p, TetId start, const Mat3* transform) {
+InsertResult Inserter::insert(const Vec3& p, const InsertOptions& options) {
   InsertResult res;
+  TetId start = options.start;
+  const Mat3* transform = options.transform;
   p_[0] = p.x();
   p_[1] = p.y();
   p_[2] = p.z();
@@ -414,6 +416,12 @@ InsertResult Inserter::insert(const Vec3& p, TetId start, const Mat3* transform)
   if (!ok) {
     certified_ = false;  // pruned cavity: the result need not be Delaunay
     ok = pruneCavity();
+  }
+  if (ok && options.mustRemove.valid() &&
+      !(mesh_.isAlive(options.mustRemove) && mesh_.hasMark(options.mustRemove, kInCavity))) {
+    clearMarks();
+    res.status = InsertStatus::Pointless;
+    return res;
   }
   ok = ok && matchEdges();
   if (!ok) {

@@ -14,17 +14,22 @@
 //     tested non-conflicting tet when the mesh is TetMesh::certifiedDelaunay() and M = I,
 //     where the empty-sphere property guarantees it). A tet owning a face that fails is
 //     dropped from the cavity, and so are tets that would delete a constrained face or
-//     leave a vertex inside the cavity (a "stranded" vertex); this repeats until stable.
-//     If K_c itself must be dropped, the insertion is refused and the mesh is untouched.
+//     leave a vertex inside the cavity (a "stranded" vertex — impossible when every
+//     cavity tet strictly contains the point in its circumsphere, so only a guard against
+//     the rounding of M·x); this repeats until stable. If K_c itself must be dropped, the
+//     insertion is refused and the mesh is untouched. (The thesis also drops tets whose
+//     new tet would have a volume below ϵ_M; here the exact sign is the criterion and
+//     quality is left to the caller.)
 //  4. The cavity is replaced by one tet per cavity face joined to the point; the new
 //     tets are linked to each other through the edges of the cavity faces: a triangular
 //     table indexed by the pair of local vertex numbers (a hash table of edges for very
 //     large cavities), reset by a time stamp, so nothing is cleared per insertion.
 //
-// The result is always a valid mesh: a refused, duplicate or outside point leaves it
-// unchanged. For the identity (or any constant M with exact coordinates) and no
-// constrained faces, the mesh stays Delaunay in metric space; note that M is applied in
-// floating point, so ties in metric space are decided on the rounded transformed points.
+// The result is always a valid mesh: a refused, duplicate, outside or pointless point
+// leaves it unchanged. With a constant M, no constrained faces and a mesh that was
+// Delaunay for M (e.g. from createEnclosingBox with the same M), the mesh stays Delaunay
+// for M; M is applied in floating point (TransformPoint.h), so "Delaunay for M" means
+// for the rounded transformed points, the same ones validate() checks.
 // Scratch buffers live in the Inserter and are reused: no heap allocation per insertion
 // once they have grown to the largest cavity. One Inserter per mesh; not thread-safe.
 #include <cstdint>
@@ -41,6 +46,19 @@ enum class InsertStatus {
   Duplicate,  ///< the point equals an existing vertex (InsertResult::vertex); nothing changed
   Outside,    ///< the point is outside the mesh (see LocateStatus::Outside); nothing changed
   Refused,    ///< the containing tet could not be kept in a star-shaped cavity; nothing changed
+  Pointless,  ///< InsertOptions::mustRemove would survive the insertion; nothing changed
+};
+
+struct InsertOptions {
+  /// A live tet to begin the walk from (invalid: the last tet created by this Inserter,
+  /// else any live tet), e.g. from SeedOctree::seed.
+  TetId start;
+  /// The matrix M of the in-sphere test (nullptr = identity), typically the symmetric
+  /// positive-definite Metric3d::matrix() at the point.
+  const Mat3* transform = nullptr;
+  /// Refinement mode (thesis sec. 5.2.1): cancel the insertion, status Pointless, unless
+  /// this tet is in the final cavity (the point was meant to improve it).
+  TetId mustRemove;
 };
 
 struct InsertResult {
@@ -55,10 +73,11 @@ class Inserter {
  public:
   explicit Inserter(TetMesh& mesh, std::uint32_t seed = 0x2545F491u);
 
-  /// Inserts p. `start`: a live tet to begin the walk from (invalid: the last tet created
-  /// by this Inserter, else any live tet). `transform`: the matrix M of the in-sphere test
-  /// (nullptr = identity); det M must be > 0.
-  InsertResult insert(const Vec3& p, TetId start = TetId(), const Mat3* transform = nullptr);
+  /// Inserts p (see InsertOptions).
+  InsertResult insert(const Vec3& p, const InsertOptions& options);
+  InsertResult insert(const Vec3& p, TetId start = TetId(), const Mat3* transform = nullptr) {
+    return insert(p, InsertOptions{start, transform, TetId()});
+  }
 
   /// Tets created by the last successful insertion (they may reuse freed slots).
   std::span<const TetId> newTets() const { return newTets_; }

@@ -410,3 +410,41 @@ TEST(Delaunay3d, MemoryPerTetIsBounded) {
   const double perTet = static_cast<double>(mesh.memoryBytes()) / static_cast<double>(mesh.numTets());
   EXPECT_LT(perTet, 60.0);
 }
+
+TEST(Delaunay3d, RefinementModeCancelsPointlessInsertions) {
+  const std::vector<Vec3> pts = randomPoints(500, 12);
+  TetMesh mesh;
+  buildDelaunay(mesh, pts);
+  const auto before = allFaces(mesh);
+  Inserter ins(mesh);
+  // A tet far from the point is not in its cavity: cancelled, mesh unchanged.
+  const Vec3 p(0.5, 0.5, 0.5);
+  std::uint32_t rng = 99;
+  const double c[3] = {0.05, 0.05, 0.05};
+  const TetId far = locate(mesh, c, TetId(0), rng).tet;
+  InsertOptions o;
+  o.mustRemove = far;
+  EXPECT_EQ(ins.insert(p, o).status, InsertStatus::Pointless);
+  EXPECT_EQ(allFaces(mesh), before);
+  EXPECT_TRUE(validate(mesh, delaunayCheck()).empty());
+  // The tet containing the point is always in its cavity.
+  const double q[3] = {p.x(), p.y(), p.z()};
+  o.mustRemove = locate(mesh, q, TetId(0), rng).tet;
+  const InsertResult r = ins.insert(p, o);
+  EXPECT_EQ(r.status, InsertStatus::Inserted);
+  EXPECT_NE(std::find(ins.removedTets().begin(), ins.removedTets().end(), o.mustRemove), ins.removedTets().end());
+  EXPECT_TRUE(validate(mesh, delaunayCheck()).empty());
+}
+
+TEST(Delaunay3d, BuildIsDeterministic) {
+  const std::vector<Vec3> pts = randomPoints(5000, 13);
+  TetMesh a, b;
+  buildDelaunay(a, pts);
+  buildDelaunay(b, pts);
+  ASSERT_EQ(a.tetSlots(), b.tetSlots());
+  for (std::uint32_t k = 0; k < a.tetSlots(); ++k)
+    for (int i = 0; i < 4; ++i) {
+      ASSERT_EQ(a.vertex(TetId(k), i), b.vertex(TetId(k), i));
+      ASSERT_EQ(a.adjacentCode(TetId(k), i), b.adjacentCode(TetId(k), i));
+    }
+}
