@@ -14,11 +14,13 @@ namespace aniso::cad::detail {
 Box3 exactBoundingBox(const TopoDS_Shape& shape) {
   Box3 box;
   Bnd_Box b;
+  // BRepBndLib::Add bounds B-spline geometry by its poles, and AddOptimal (exact) costs
+  // seconds on large models; the box only sets relative sizes, so Add is used, without
+  // the shape tolerances.
   try {
-    BRepBndLib::AddOptimal(shape, b, /*useTriangulation=*/false, /*useShapeTolerance=*/false);
+    BRepBndLib::Add(shape, b, /*useTriangulation=*/false);
   } catch (const Standard_Failure&) {
     b.SetVoid();
-    BRepBndLib::Add(shape, b, false);
   }
   if (b.IsVoid()) return box;
   double x0, y0, z0, x1, y1, z1;

@@ -8,7 +8,8 @@ namespace aniso::cad::detail {
 
 ShapeSummary summarize(const CadModel::Impl& impl);
 
-/// Bounding box of the shape from its exact geometry (no triangulation, no gap).
+/// Bounding box of the shape from its geometry (no triangulation); B-splines bounded by
+/// their poles, so it may be slightly larger than the exact box.
 Box3 exactBoundingBox(const TopoDS_Shape& shape);
 
 }  // namespace aniso::cad::detail

@@ -26,16 +26,19 @@ Reduced<D> reduce(const Eigen::Matrix<double, D, D>& t1, const Eigen::Matrix<dou
   const Eigen::LLT<Mat> llt(t1);
   if (llt.info() != Eigen::Success || !t2.allFinite())
     throw MeshingError("metric intersection: input metric tensor is not positive definite");
-  // C = L⁻¹ 𝓜2 L⁻ᵀ: Y = L⁻¹ 𝓜2, C = L⁻¹ Yᵀ (𝓜2 symmetric).
-  const Mat y = llt.matrixL().solve(t2);
-  const Mat c = symmetrize<D>(llt.matrixL().solve(Mat(y.transpose())));
+  // C = L⁻¹ 𝓜2 L⁻ᵀ. The fixed-size inverse is a closed form; Eigen's triangular solve
+  // with a matrix right-hand side goes through its generic blocked kernel, which costs
+  // several times more for 2×2 and 3×3.
+  const Mat l = llt.matrixL();
+  const Mat linv = l.inverse();
+  const Mat c = symmetrize<D>(linv * t2 * linv.transpose());
   const SymmetricEigen<D> e = symmetricEigen(c);
   if (!e.values.allFinite())
     throw MeshingError("metric intersection: simultaneous reduction failed (non-finite eigenvalues)");
   if (e.values.maxCoeff() <= 1 + tol) return {t1, Outcome::First};
   if (e.values.minCoeff() >= 1 - tol) return {t2, Outcome::Second};
   const Vec lambda = e.values.cwiseMax(1.0);
-  const Mat lq = Mat(llt.matrixL()) * e.vectors;
+  const Mat lq = l * e.vectors;
   return {symmetrize<D>(lq * lambda.asDiagonal() * lq.transpose()), Outcome::Mixed};
 }
 
