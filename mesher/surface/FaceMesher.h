@@ -1,0 +1,60 @@
+#pragma once
+// FaceMesher — the anisotropic Delaunay triangulation of one face in its parametric plane
+// (thesis ch. 4: 4.4 triangulation of boundary nodes, 4.5 insertion of inner nodes,
+// 4.6 improvement), following the metric M = M_s M_p of the face's control space.
+//
+// Pipeline (each step its own unit in mesher/surface/face/):
+//   1 boundary triangulation: the initial two triangles over the boundary's (u, v) box, the
+//     boundary nodes inserted in random (spatially sorted) order with the in-circle test in
+//     the metric of each inserted point (del2d::insertPoint);
+//   2 recovery of the boundary edges missing from the triangulation (edge flips; a planar
+//     straight-line graph never needs Steiner points), then each boundary edge constrained;
+//   3 removal of the triangles outside the face by marking from the oriented loops
+//     (holes, inner loops, seams, poles);
+//   4 refinement (4.5): heap of triangles by q(K) = S_oI / S_oK (eq. 4.1) below q_t, and
+//     of edges with l_M > 1.5; MLE then CCS insertion (mixed), with the cancellation rules
+//     (point outside the face, too close to an existing vertex in metric, metric jump);
+//   5 improvement (4.6, improveFaceMesh): smoothing and swaps, N_imp passes.
+// Boundary vertices never move and boundary edges are never flipped or split: the face
+// mesh conforms exactly to the given boundary, so neighbouring faces stay conforming.
+#include <string>
+#include <vector>
+
+#include "mesher/control/ControlSpace2d.h"
+#include "mesher/surface/FaceBoundary.h"
+
+namespace aniso {
+
+struct FaceMesherOptions {
+  double qualityThreshold = 0.58;   ///< q_t (table 4.4)
+  double maxEdgeMetricLength = 1.5; ///< l_M above which an edge is split
+  double mleToCcsQuality = 0.3;     ///< heap quality at which MLE switches to CCS (mixed method)
+  int improvementPasses = 2;        ///< N_imp (alg. 4.2)
+  bool innerAnglesCriterion = false;///< inner-angles Delaunay criterion (4.2.2) instead of the circumcircle
+  unsigned seed = 12345;            ///< randomised boundary insertion order (deterministic)
+};
+
+struct FaceMeshStats {
+  int boundaryNodes = 0;
+  int missingBoundaryEdges = 0;     ///< after boundary insertion, before recovery
+  int insertedInner = 0;
+  int cancelledInsertions = 0;
+  double seconds = 0;
+};
+
+struct FaceMeshResult {
+  FaceMesh mesh;
+  FaceMeshStats stats;
+  /// Empty on success; else what failed, e.g. "boundary edge (node 12, node 13) could not
+  /// be recovered". The mesh is then empty.
+  std::vector<std::string> problems;
+  bool ok() const { return problems.empty(); }
+};
+
+/// Meshes one face. `cs` must cover the boundary's (u, v) box. Thread-safe for different
+/// faces (cs is only read). Never throws for a meshing failure: it is reported in
+/// `problems`; throws MeshingError only for invalid input (e.g. a loop with < 2 nodes).
+FaceMeshResult meshFace(const FaceBoundary& boundary, const ControlSpace2d& cs,
+                        const FaceMesherOptions& options = {});
+
+}  // namespace aniso
