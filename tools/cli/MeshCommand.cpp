@@ -4,10 +4,12 @@
 #include <filesystem>
 
 #include "io/AtomicFile.h"
+#include "io/MeshWriter.h"
 #include "io/Report.h"
 #include "io/SizingFile.h"
 #include "mesher/core/Error.h"
 #include "tools/cli/Commands.h"
+#include "mesher/surface/SurfaceMesher.h"
 #include "tools/cli/ModelInput.h"
 
 namespace aniso::cli {
@@ -45,6 +47,9 @@ nlohmann::ordered_json optionsJson(const MeshArgs& a) {
 void checkArguments(const MeshArgs& a) {
   if (!isKnownOutputExtension(a.output))
     throw InputError(a.output + ": unknown output format (expected .msh .inp .vtu .stl .obj .off .unv)");
+  const std::string ext = lowerExtension(a.output);
+  if (ext == ".inp" || ext == ".vtu" || ext == ".unv")
+    throw InputError(a.output + ": the " + ext + " writer is not available yet in this build (use .msh .stl .obj .off)");
   const std::string bad = a.options.sizing.check();
   if (!bad.empty()) throw InputError(a.file + ": " + bad);
   if (!a.options.sizingFile.empty()) (void)io::readSizingFile(a.options.sizingFile);  // throws on a bad file
@@ -59,6 +64,29 @@ void writeReport(const MeshArgs& a, const io::Report& r) {
 }
 
 }  // namespace
+
+static void fillSurfaceReport(const SurfaceMeshResult& sr, io::Report& report) {
+  report.nodes = static_cast<long long>(sr.mesh.nodes.size());
+  report.triangles = static_cast<long long>(sr.mesh.triangles.size());
+  auto stats = [](const QualityStats& s) {
+    return nlohmann::ordered_json{{"mean", s.count() ? s.mean() : 0.0}, {"sd", s.stddev()},
+                                  {"min", s.count() ? s.min() : 0.0}, {"max", s.count() ? s.max() : 0.0}};
+  };
+  report.quality["eta_M"] = stats(sr.quality.eta);
+  report.quality["mu_M"] = stats(sr.quality.mu);
+  nlohmann::ordered_json faces = nlohmann::ordered_json::array();
+  for (size_t f = 0; f < sr.faces.size(); ++f) {
+    const FaceOutcome& o = sr.faces[f];
+    faces.push_back({{"face", f + 1}, {"triangles", o.triangles}, {"eta_M", o.quality.eta.count() ? o.quality.eta.mean() : 0.0},
+                     {"mu_M", o.quality.mu.count() ? o.quality.mu.mean() : 0.0},
+                     {"missing_boundary_edges", o.stats.missingBoundaryEdges}});
+    for (const std::string& p : o.problems) report.failures.push_back({"face " + std::to_string(f + 1), p});
+  }
+  report.quality["faces"] = faces;
+  const SurfaceMesh::EdgeCounts ec = sr.mesh.edgeCounts();
+  report.extra["surface"] = {{"open_edges", ec.open}, {"non_manifold_edges", ec.nonManifold},
+                             {"misoriented_edges", ec.misoriented}};
+}
 
 bool isKnownOutputExtension(const std::string& path) {
   static const char* known[] = {".msh", ".inp", ".vtu", ".stl", ".obj", ".off", ".unv"};
@@ -94,12 +122,46 @@ int runMesh(const MeshArgs& args) {
                                colon == std::string::npos ? problem : problem.substr(colon + 2)});
   }
 
-  // The surface and volume meshers are not in this build yet: say so, write no mesh.
-  report.status = io::RunStatus::Failed;
-  report.failures.push_back({"model", "meshing is not available yet in this build (dim " + std::to_string(dim) + ")"});
+  if (dim == 3) {
+    // The volume mesher is not in this build yet: say so, write no mesh.
+    report.status = io::RunStatus::Failed;
+    report.failures.push_back({"model", "volume meshing is not available yet in this build (use --dim 2)"});
+    report.totalSeconds = seconds(t0, Clock::now());
+    writeReport(args, report);
+    throw MeshingError(args.file + ": volume meshing is not available yet in this build (use --dim 2)");
+  }
+  if (!report.failures.empty()) {  // the model's topology is broken: nothing sensible to mesh
+    report.totalSeconds = seconds(t0, Clock::now());
+    writeReport(args, report);
+    throw MeshingError(args.file + ": invalid model topology: " + report.failures.front().entity + ": " +
+                       report.failures.front().what);
+  }
+
+  const UserSizing user = args.options.sizingFile.empty() ? UserSizing{} : io::readSizingFile(args.options.sizingFile);
+  const std::unique_ptr<ControlSpace2d> analytic = analyticControlSpace(in);
+  SurfaceMesherInput sin;
+  sin.model = &topo;
+  sin.options = args.options;
+  sin.analytic = analytic.get();
+  sin.user = &user;
+  const SurfaceMeshResult sr = meshSurfaces(sin);
+  for (const auto& p : sr.times) report.times.push_back(p);
+  fillSurfaceReport(sr, report);
+  if (!sr.ok()) {
+    report.status = io::RunStatus::Failed;
+    report.totalSeconds = seconds(t0, Clock::now());
+    writeReport(args, report);
+    throw MeshingError(args.file + ": " + report.failures.front().entity + ": " + report.failures.front().what);
+  }
+  const auto tw = Clock::now();
+  io::WriteOptions wopt;
+  wopt.binary = args.binary;
+  io::writeSurfaceMesh(topo, sr.mesh, args.output, wopt);
+  report.times.emplace_back("write", seconds(tw, Clock::now()));
+  report.status = io::RunStatus::Ok;
   report.totalSeconds = seconds(t0, Clock::now());
   writeReport(args, report);
-  throw MeshingError(args.file + ": meshing is not available yet in this build");
+  return 0;
 }
 
 }  // namespace aniso::cli

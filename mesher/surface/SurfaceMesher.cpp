@@ -1,0 +1,140 @@
+#include "mesher/surface/SurfaceMesher.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+#include "mesher/core/Error.h"
+#include "mesher/core/Log.h"
+#include "mesher/metric/MeanRatio.h"
+#include "mesher/sizing/FaceControlSpace.h"
+#include "mesher/surface/ContourDiscretization.h"
+
+namespace aniso {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+/// Runs work(i) for i in [0, n) on `threads` threads (0 = all cores). The first exception
+/// thrown by any work item is rethrown after all threads have stopped.
+template <class Work>
+void parallelFor(int n, int threads, Work work, const char* phase) {
+  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  threads = std::min(threads, std::max(1, n));
+  std::atomic<int> next{0}, done{0};
+  std::exception_ptr error;
+  std::mutex errorMutex;
+  Progress progress(phase, n);
+  auto run = [&](bool main) {
+    for (int i = next++; i < n; i = next++) {
+      try {
+        work(i);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(errorMutex);
+        if (!error) error = std::current_exception();
+        next = n;
+      }
+      ++done;
+      if (main) progress.update(done);  // Progress is updated from one thread only
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(run, false);
+  run(true);
+  for (auto& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+}
+
+bool faceMeshed(const Model& m, int f) { return !m.faces[f].loops.empty(); }
+
+}  // namespace
+
+bool SurfaceMeshResult::ok() const {
+  return std::all_of(faces.begin(), faces.end(), [](const FaceOutcome& f) { return f.problems.empty(); });
+}
+
+MetricQuality faceMeshQuality(const FaceMesh& mesh, const ControlSpace2d& cs) {
+  MetricQuality q;
+  std::vector<std::pair<int, int>> edges;
+  edges.reserve(mesh.triangles.size() * 3);
+  for (const auto& t : mesh.triangles) {
+    const Vec2& a = mesh.uv[t[0]];
+    const Vec2& b = mesh.uv[t[1]];
+    const Vec2& c = mesh.uv[t[2]];
+    q.eta.add(meanRatio(cs.getMetric((a + b + c) / 3).transformation(), a, b, c));
+    for (int k = 0; k < 3; ++k) edges.emplace_back(std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]));
+  }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  for (const auto& [i, j] : edges) {
+    const Vec2& a = mesh.uv[i];
+    const Vec2& b = mesh.uv[j];
+    q.mu.add((cs.getMetric(0.5 * (a + b)).transformation() * (b - a)).norm());
+  }
+  return q;
+}
+
+SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
+  const Model& model = *in.model;
+  const int nf = static_cast<int>(model.faces.size());
+  SurfaceMeshResult r;
+  r.faces.resize(nf);
+
+  // 1: control spaces.
+  auto t = Clock::now();
+  std::vector<std::unique_ptr<CSQuadtree2d>> spaces(nf);
+  parallelFor(nf, in.options.threads, [&](int f) {
+    if (!faceMeshed(model, f)) return;
+    FaceSizingInput fin;
+    fin.model = &model;
+    fin.face = f;
+    fin.params = in.options.sizing;
+    fin.analytic = in.analytic;
+    fin.user = in.user;
+    spaces[f] = buildFaceControlSpace(fin);
+  }, "control spaces");
+  r.times.emplace_back("control_space", since(t));
+
+  // 2: edges.
+  t = Clock::now();
+  std::vector<const ControlSpace2d*> cs(nf, nullptr);
+  for (int f = 0; f < nf; ++f) cs[f] = spaces[f].get();
+  ContourOptions copt;
+  copt.evenSegments = in.options.quad;
+  const std::vector<EdgeDiscretization> edges = discretizeEdges(model, cs, copt, r.mesh);
+  std::vector<FaceBoundary> boundaries(nf);
+  for (int f = 0; f < nf; ++f)
+    if (cs[f]) boundaries[f] = faceBoundary(model, f, edges, r.mesh);
+  r.times.emplace_back("contours", since(t));
+
+  // 3: faces.
+  t = Clock::now();
+  std::vector<FaceMeshResult> meshes(nf);
+  parallelFor(nf, in.options.threads, [&](int f) {
+    if (!cs[f]) return;
+    meshes[f] = meshFace(boundaries[f], *cs[f], in.face);
+    FaceOutcome& o = r.faces[f];
+    o.stats = meshes[f].stats;
+    o.problems = meshes[f].problems;
+    if (meshes[f].ok()) o.quality = faceMeshQuality(meshes[f].mesh, *cs[f]);
+  }, "faces");
+  r.times.emplace_back("faces", since(t));
+
+  // 4: assembly, in face order.
+  t = Clock::now();
+  for (int f = 0; f < nf; ++f) {
+    if (!cs[f] || !meshes[f].ok()) continue;
+    const size_t before = r.mesh.triangles.size();
+    addFaceMesh(model, f, meshes[f].mesh, r.mesh);
+    r.faces[f].triangles = static_cast<int>(r.mesh.triangles.size() - before);
+    r.quality.merge(r.faces[f].quality);
+  }
+  r.times.emplace_back("assembly", since(t));
+  return r;
+}
+
+}  // namespace aniso

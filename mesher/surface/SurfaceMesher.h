@@ -1,0 +1,63 @@
+#pragma once
+// SurfaceMesher — the whole surface meshing process of a model (thesis 3.5.1, ch. 4):
+//   1 the initial control space of every face (alg. 3.2, FaceControlSpace.h), in parallel
+//   2 the discretization of every edge, shared by its faces (alg. 4.1)
+//   3 the anisotropic Delaunay mesh of every face (FaceMesher.h), in parallel
+//   4 the assembly into one conforming SurfaceMesh, faces in id order
+// Faces are independent once their edges are discretized, so steps 1 and 3 run on
+// `threads` threads; every result is stored by face index and assembled in order, so the
+// output is identical for any number of threads.
+#include <string>
+#include <vector>
+
+#include "mesher/control/ControlSpace2d.h"
+#include "mesher/core/MeshOptions.h"
+#include "mesher/metric/QualityStats.h"
+#include "mesher/model/Model.h"
+#include "mesher/sizing/UserSizing.h"
+#include "mesher/surface/FaceMesher.h"
+#include "mesher/surface/SurfaceMesh.h"
+
+namespace aniso {
+
+struct SurfaceMesherInput {
+  const Model* model = nullptr;
+  MeshOptions options;
+  const ControlSpace2d* analytic = nullptr;  ///< user 2D sizing (single-face analytic models)
+  const UserSizing* user = nullptr;          ///< user 3D sources
+  FaceMesherOptions face;
+};
+
+/// Quality in metric space (thesis 2.5) of one face or of the whole mesh.
+struct MetricQuality {
+  QualityStats eta;  ///< mean ratio η_M per triangle (M at the centroid)
+  QualityStats mu;   ///< metric edge length μ_M per edge (M at the midpoint, eq. 2.14)
+  void merge(const MetricQuality& o) {
+    eta.merge(o.eta);
+    mu.merge(o.mu);
+  }
+};
+
+struct FaceOutcome {
+  FaceMeshStats stats;
+  MetricQuality quality;
+  std::vector<std::string> problems;  ///< empty when the face meshed
+  int triangles = 0;
+};
+
+struct SurfaceMeshResult {
+  SurfaceMesh mesh;
+  std::vector<FaceOutcome> faces;
+  MetricQuality quality;
+  std::vector<std::pair<std::string, double>> times;  ///< phase → seconds
+  bool ok() const;
+};
+
+/// Throws MeshingError only for errors that stop everything (e.g. an edge that cannot be
+/// discretized); a face that fails is reported in faces[f].problems and left unmeshed.
+SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in);
+
+/// η_M and μ_M of a face mesh in the face's metric.
+MetricQuality faceMeshQuality(const FaceMesh& mesh, const ControlSpace2d& cs);
+
+}  // namespace aniso
