@@ -10,8 +10,6 @@ namespace aniso {
 CSQuadtree2d::CSQuadtree2d(const Box2& bounds, const SizingParameters& params, const TreeLimits& limits)
     : cs_(bounds, params, limits) {}
 
-CSQuadtree2d::~CSQuadtree2d() = default;
-
 SurfaceMetricAt CSQuadtree2d::getMetric(const Vec2& uv) const {
   SurfaceMetricAt r;
   cs_.sample(uv, r.sizing, r.parameterization);

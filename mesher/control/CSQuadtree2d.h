@@ -28,7 +28,6 @@ class CSQuadtree2d final : public CSAdaptive2d {
   /// Root cells over `bounds` (near-square). Throws InputError for an empty box or bad
   /// parameters.
   CSQuadtree2d(const Box2& bounds, const SizingParameters& params, const TreeLimits& limits = {});
-  ~CSQuadtree2d() override;
 
   // ControlSpace2d
   SurfaceMetricAt getMetric(const Vec2& uv) const override;

@@ -292,7 +292,11 @@ void TreeControlSpace<D>::setContinuous(const MetricFn& source) {
       const Vec centre = tree_.nodeCentre(n), half = Vec::Constant(0.5);
       const Metric<D> exact = source(centre);
       const Metric<D> interpolated = metricIn(n, half);
-      if (metricDifference(exact, interpolated) <= epsDelta_) continue;
+      // Fresh: the field must reproduce the source. Valued: only where the source asks for
+      // a finer metric than the field gives (where earlier sources were finer, splitting
+      // could never bring the two closer).
+      const Metric<D> target = continuousExact_ ? exact : intersect(interpolated, exact);
+      if (metricDifference(target, interpolated) <= epsDelta_) continue;
       if (belowResolution(n, exact)) continue;
       splitLeaf(n);
     }

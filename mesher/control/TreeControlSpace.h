@@ -92,7 +92,10 @@ class TreeControlSpace {
   /// Point source (sec. 3.3.1): the initial procedure while fresh, the update procedure
   /// when valued.
   void insertDiscrete(const Vec& x, const Metric<D>& m);
-  /// Continuous source (sec. 3.3.2).
+  /// Continuous source (sec. 3.3.2): every vertex gets the source's metric (intersected
+  /// with its own when valued); then every leaf whose centre value differs by more than
+  /// ε_δ from the target — the source when the tree was fresh, min_M(field, source)
+  /// otherwise — is split, recursively, down to TreeLimits::minLeafMetricLength.
   void setContinuous(const MetricFn& source);
   /// Steps 2–3 of "setting initial control space" (sec. 3.3.1): weighted average of the
   /// pending sources of the adjacent leaves (inverse squared distance), intersected with
