@@ -88,8 +88,7 @@ ExtendedSource2d::ExtendedSource2d(double r) : r_(r) {
 }
 
 bool ExtendedSource2d::contains(const Vec2& x) const {
-  const double tol = 1e-12 * (1 + bounds().diagonal());
-  return distance(x) <= r_ + tol;
+  return distance(x) <= r_ + 1e-12 * (1 + r_ + x.norm());
 }
 
 std::vector<Vec2> ExtendedSource2d::samplePoints(const MetricLength2d& len) const {

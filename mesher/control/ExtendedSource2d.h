@@ -33,7 +33,7 @@ class ExtendedSource2d {
   double radius() const { return r_; }
   /// Euclidean distance from x to the skeleton.
   virtual double distance(const Vec2& x) const = 0;
-  /// distance(x) ≤ r (with a round-off tolerance relative to the source's size).
+  /// distance(x) ≤ r (with a round-off tolerance of 1e-12 (1 + r + |x|)).
   bool contains(const Vec2& x) const;
   /// Bounding box of the domain (skeleton widened by r).
   virtual Box2 bounds() const = 0;

@@ -7,7 +7,8 @@
 // The cache belongs to the caller (one per thread or per meshing front), never to the
 // control space, so control spaces stay free of mutable state. It remembers which control
 // space answered and its revision(), so a query to another space or after a modification
-// is never served from the cache.
+// is never served from the cache. (Immutable spaces all report revision 0: clear() the
+// cache when the control space it was used with is destroyed and replaced.)
 // Choice of maxMetricDistance: the metric is then taken constant over that fraction of
 // an element; e.g. 0.05 changes lengths by well under 5 % for gradations γ_M ≤ 4.
 // Not thread-safe (one cache per thread); header-only.

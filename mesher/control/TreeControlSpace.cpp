@@ -192,10 +192,8 @@ void TreeControlSpace<D>::onSplit(int node) {
   // Pending point sources move to the children (3.3.1: "placed into proper sub-elements").
   for (int s = sourceHead_[node]; s != -1;) {
     const int next = sources_[s].next;
-    const int child = tree_.locate(sources_[s].x);
-    int target = child;
-    while (tree_.parent(target) != node && target != -1) target = tree_.parent(target);
-    // A source always lies in one of the new children (splitting is depth-first).
+    // The children are leaves at this point, so the leaf of the source is one of them.
+    const int target = tree_.locate(sources_[s].x);
     sources_[s].next = sourceHead_[target];
     sourceHead_[target] = s;
     s = next;

@@ -143,14 +143,30 @@ int TreeControlSpace<D>::smoothGradation(double gamma) {
   // stamp[v]: last sweep in which v changed. A pair is revisited only when an endpoint
   // changed in the previous or the current sweep.
   std::vector<int> stamp(tree_.vertexCount(), 0);
+  // Cheap exact test that a pair is already graded (most are): with the metric tensors
+  // T = M² and s the factor of eq. 2.30, smoothGradation changes nothing when s² T_a − T_b
+  // and s² T_b − T_a are positive definite (Sylvester's criterion), because then each
+  // relaxed metric (tensor T/s²) lies inside the other one.
+  std::vector<Mat> tensor(tree_.vertexCount());
+  for (int v = 0; v < tree_.vertexCount(); ++v) tensor[v] = metric_[v].tensor();
   for (int sweep = 1; sweep <= kMaxGradationSweeps; ++sweep) {
     bool changed = false;
     for (const Edge& x : (sweep % 2 ? up : down)) {
       if (sweep > 1 && stamp[x.a] < sweep - 1 && stamp[x.b] < sweep - 1) continue;
       Vec d = tree_.point(x.b) - tree_.point(x.a);
       if (hasAux_) d = (0.5 * (aux_[x.a] + aux_[x.b]) * d).eval();  // M_p at the midpoint (eq. 2.13)
+      const double dR = d.norm();
+      if (dR > 0) {
+        const double f = gradationFactor(metric_[x.a].lengthAlong(d), metric_[x.b].lengthAlong(d), dR, gamma);
+        const double f2 = f * f;
+        if (isSymmetricPositiveDefinite(Mat(f2 * tensor[x.a] - tensor[x.b])) &&
+            isSymmetricPositiveDefinite(Mat(f2 * tensor[x.b] - tensor[x.a])))
+          continue;
+      }
       if (aniso::smoothGradation<D>(metric_[x.a], metric_[x.b], d, rule)) {
         stamp[x.a] = stamp[x.b] = sweep;
+        tensor[x.a] = metric_[x.a].tensor();
+        tensor[x.b] = metric_[x.b].tensor();
         changed = true;
       }
     }

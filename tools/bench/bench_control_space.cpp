@@ -1,0 +1,238 @@
+// Control space benchmarks (sec. 3.2.4, 3.3, table 3.1):
+//   BM_QuadtreeQuery / BM_OctreeQuery     getMetric() at random points of an adapted tree
+//                                         (counters: leaves, control vertices, depth);
+//   BM_QuadtreeQueryCached                the same along a random walk with the proximity
+//                                         cache of sec. 3.2.4 item 3 (counter: hit rate);
+//   BM_QuadtreeBuild / BM_OctreeBuild     building the tree from a continuous source plus
+//                                         gradation smoothing, for ε_δ = 10, 1, 0.1 (the
+//                                         values of table 3.1; counter NPc = control vertices);
+//   BM_Analytic2dQuery / ..Mutex          a muParser control space with per-thread parsers
+//                                         (the implementation) against one parser set
+//                                         behind a mutex, on 1 and 2 threads.
+#include <benchmark/benchmark.h>
+#include <muParser.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <mutex>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include "mesher/control/CSAnalytic2d.h"
+#include "mesher/control/CSAnalytic3d.h"
+#include "mesher/control/CSOctree3d.h"
+#include "mesher/control/CSQuadtree2d.h"
+#include "mesher/control/MetricQueryCache.h"
+
+using namespace aniso;
+
+namespace {
+
+Box2 unitSquare() {
+  Box2 b;
+  b.add(Vec2(0, 0));
+  b.add(Vec2(1, 1));
+  return b;
+}
+
+Box3 unitCube() {
+  Box3 b;
+  b.add(Vec3::Zero());
+  b.add(Vec3::Ones());
+  return b;
+}
+
+/// A field with turning directions and a sharp size minimum (a boundary-layer-like band
+/// along a circle), smooth everywhere.
+Metric2d field2d(const Vec2& p) {
+  const Vec2 d = p - Vec2(0.5, 0.5);
+  const double r = d.norm();
+  const double band = std::abs(r - 0.3);
+  const double h1 = 0.0002 + 0.05 * band * band + 0.01 * band;
+  return Metric2d::fromAngle(std::atan2(d.y(), d.x()), h1, std::min(10 * h1, 0.05));
+}
+
+Metric3d field3d(const Vec3& p) {
+  const Vec3 d = p - Vec3(0.5, 0.5, 0.5);
+  const double band = std::abs(d.norm() - 0.3);
+  const double h1 = 0.002 + 0.1 * band * band + 0.02 * band;
+  const Vec3 n = d.norm() > 1e-9 ? Vec3(d.normalized()) : Vec3(Vec3::UnitZ());
+  const Vec3 t = n.unitOrthogonal();
+  return Metric3d::fromDirections(n, t, n.cross(t), h1, std::min(5 * h1, 0.1), std::min(5 * h1, 0.1));
+}
+
+SizingParameters withEpsDelta(double eps) {
+  SizingParameters p;
+  p.metricDifferenceEps = eps;
+  return p;
+}
+
+/// The query trees: the continuous field, point sources along a curve / a circle on a
+/// sphere (like contour-curvature sources, sec. 3.5.1), gradation smoothing.
+const CSQuadtree2d& quadtree() {
+  static const CSQuadtree2d cs = [] {
+    CSQuadtree2d q(unitSquare(), SizingParameters{});
+    q.setContinuousSource(CSAnalytic2d(unitSquare(), field2d));
+    const int n = 20000;
+    for (int i = 0; i < n; ++i) {
+      const double t = 2 * std::numbers::pi * i / n;
+      const Vec2 p(0.5 + 0.35 * std::cos(t), 0.5 + 0.2 * std::sin(2 * t));
+      q.insertDiscreteSource(p, Metric2d::fromAngle(t, 0.0002, 0.002));
+    }
+    q.smoothGradation(4.0);
+    return q;
+  }();
+  return cs;
+}
+
+const CSOctree3d& octree() {
+  static const CSOctree3d cs = [] {
+    CSOctree3d o(unitCube(), SizingParameters{});
+    o.setContinuousSource(CSAnalytic3d(unitCube(), field3d));
+    const int n = 5000;
+    for (int i = 0; i < n; ++i) {
+      const double t = 2 * std::numbers::pi * i / n;
+      const Vec3 p(0.5 + 0.3 * std::cos(t), 0.5 + 0.3 * std::sin(t), 0.5 + 0.1 * std::sin(3 * t));
+      o.insertDiscreteSource(p, Metric3d::isotropic(0.001));
+    }
+    o.smoothGradation(4.0);
+    return o;
+  }();
+  return cs;
+}
+
+template <class V>
+std::vector<V> randomPoints(int n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<V> pts(n);
+  for (V& p : pts)
+    for (int k = 0; k < p.size(); ++k) p(k) = u(rng);
+  return pts;
+}
+
+void BM_QuadtreeQuery(benchmark::State& state) {
+  const CSQuadtree2d& cs = quadtree();
+  const std::vector<Vec2> pts = randomPoints<Vec2>(1 << 14, 1 + state.thread_index());
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(cs.getMetric(pts[i++ & (pts.size() - 1)]));
+  state.SetItemsProcessed(state.iterations());
+  state.counters["leaves"] = benchmark::Counter(double(cs.leafCount()), benchmark::Counter::kAvgThreads);
+  state.counters["NPc"] = benchmark::Counter(double(cs.controlVertexCount()), benchmark::Counter::kAvgThreads);
+  state.counters["depth"] = benchmark::Counter(cs.depth(), benchmark::Counter::kAvgThreads);
+}
+BENCHMARK(BM_QuadtreeQuery)->Threads(1)->Threads(2)->UseRealTime();
+
+void BM_OctreeQuery(benchmark::State& state) {
+  const CSOctree3d& cs = octree();
+  const std::vector<Vec3> pts = randomPoints<Vec3>(1 << 14, 7 + state.thread_index());
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(cs.getMetric(pts[i++ & (pts.size() - 1)]));
+  state.SetItemsProcessed(state.iterations());
+  state.counters["leaves"] = benchmark::Counter(double(cs.leafCount()), benchmark::Counter::kAvgThreads);
+  state.counters["NPc"] = benchmark::Counter(double(cs.controlVertexCount()), benchmark::Counter::kAvgThreads);
+  state.counters["depth"] = benchmark::Counter(cs.depth(), benchmark::Counter::kAvgThreads);
+}
+BENCHMARK(BM_OctreeQuery)->Threads(1)->Threads(2)->UseRealTime();
+
+void BM_QuadtreeQueryCached(benchmark::State& state) {
+  const CSQuadtree2d& cs = quadtree();
+  // A random walk with steps of about a hundredth of the local element size.
+  std::mt19937 rng(3);
+  std::normal_distribution<double> step(0, 1);
+  std::vector<Vec2> walk(1 << 14);
+  Vec2 p(0.5, 0.2);
+  for (Vec2& w : walk) {
+    const double h = cs.getMetric(p).sizing.axes().lengths(0);
+    p = (p + 0.01 * h * Vec2(step(rng), step(rng))).cwiseMax(Vec2::Zero()).cwiseMin(Vec2::Ones());
+    w = p;
+  }
+  MetricQueryCache2d cache(0.05);
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(cache.get(cs, walk[i++ & (walk.size() - 1)]));
+  state.SetItemsProcessed(state.iterations());
+  state.counters["hitRate"] = double(cache.hits()) / double(cache.hits() + cache.misses());
+}
+BENCHMARK(BM_QuadtreeQueryCached);
+
+void BM_QuadtreeBuild(benchmark::State& state) {
+  const double eps = state.range(0) / 100.0;
+  const CSAnalytic2d source(unitSquare(), field2d);
+  std::size_t vertices = 0;
+  for (auto _ : state) {
+    CSQuadtree2d cs(unitSquare(), withEpsDelta(eps));
+    cs.setContinuousSource(source);
+    cs.smoothGradation(4.0);
+    vertices = cs.controlVertexCount();
+  }
+  state.counters["eps_delta"] = eps;
+  state.counters["NPc"] = double(vertices);
+  state.counters["NPc_per_s"] = benchmark::Counter(double(vertices) * double(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_QuadtreeBuild)->Arg(1000)->Arg(100)->Arg(10)->Unit(benchmark::kMillisecond);
+
+void BM_OctreeBuild(benchmark::State& state) {
+  const double eps = state.range(0) / 100.0;
+  const CSAnalytic3d source(unitCube(), field3d);
+  std::size_t vertices = 0;
+  for (auto _ : state) {
+    CSOctree3d cs(unitCube(), withEpsDelta(eps));
+    cs.setContinuousSource(source);
+    cs.smoothGradation(4.0);
+    vertices = cs.controlVertexCount();
+  }
+  state.counters["eps_delta"] = eps;
+  state.counters["NPc"] = double(vertices);
+  state.counters["NPc_per_s"] = benchmark::Counter(double(vertices) * double(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_OctreeBuild)->Arg(1000)->Arg(100)->Arg(10)->Unit(benchmark::kMillisecond);
+
+// ---- analytic control space: per-thread parsers against a mutex ----
+
+const char* const kAlpha = "pi/6 + u*v";
+const char* const kH1 = "0.01 + 0.02*sin(3*u)^2";
+const char* const kH2 = "0.0101 - 0.005*u";
+
+void BM_Analytic2dQuery(benchmark::State& state) {
+  static const CSAnalytic2d cs(unitSquare(), kAlpha, kH1, kH2);
+  const std::vector<Vec2> pts = randomPoints<Vec2>(1 << 12, 11 + state.thread_index());
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(cs.getMetric(pts[i++ & (pts.size() - 1)]));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_Analytic2dQuery)->Threads(1)->Threads(2)->UseRealTime();
+
+/// The alternative design: one parser set shared by all threads behind a mutex.
+struct LockedExpression {
+  std::mutex mutex;
+  double u = 0, v = 0;
+  mu::Parser p[3];
+  LockedExpression() {
+    const char* exprs[3] = {kAlpha, kH1, kH2};
+    for (int i = 0; i < 3; ++i) {
+      p[i].DefineVar("u", &u);
+      p[i].DefineVar("v", &v);
+      p[i].DefineConst("pi", std::numbers::pi);
+      p[i].SetExpr(exprs[i]);
+    }
+  }
+  Metric2d operator()(const Vec2& x) {
+    std::lock_guard<std::mutex> lock(mutex);
+    u = x.x();
+    v = x.y();
+    return Metric2d::fromAngle(p[0].Eval(), p[1].Eval(), p[2].Eval());
+  }
+};
+
+void BM_Analytic2dMutex(benchmark::State& state) {
+  static LockedExpression expr;
+  static const CSAnalytic2d cs(unitSquare(), [](const Vec2& x) { return expr(x); });
+  const std::vector<Vec2> pts = randomPoints<Vec2>(1 << 12, 11 + state.thread_index());
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(cs.getMetric(pts[i++ & (pts.size() - 1)]));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_Analytic2dMutex)->Threads(1)->Threads(2)->UseRealTime();
+
+}  // namespace
