@@ -1,0 +1,91 @@
+#include "mesher/surface/improve/GeometricSwap.h"
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "mesher/core/Error.h"
+#include "mesher/delaunay/EdgeFlip.h"
+
+namespace aniso::improve {
+namespace {
+
+using del2d::kNext;
+using del2d::kPrev;
+
+double angleAt(const Vec2& p, const Vec2& x, const Vec2& y) {
+  const Vec2 u = x - p, w = y - p;
+  return std::atan2(std::abs(u.x() * w.y() - u.y() * w.x()), u.dot(w));
+}
+
+void markAround(const Triangulation2d& tri, TriId t, std::vector<std::uint8_t>& dirty) {
+  dirty[t.index] = 1;
+  for (int k = 0; k < 3; ++k) {
+    const TriId n = tri.neighbour(t, k);
+    if (n.valid()) dirty[n.index] = 1;
+  }
+}
+
+}  // namespace
+
+double oppositeAngleSum(const Mat2& m, const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+  const Vec2 ma = m * a, mb = m * b, mc = m * c, md = m * d;
+  return angleAt(ma, mb, mc) + angleAt(md, mb, mc);
+}
+
+bool violatesSwapCriterion(const Triangulation2d& tri, const VertexMetricCache& metrics, TriId t, int i,
+                           double angleTolerance) {
+  const TriId u = tri.neighbour(t, i);
+  if (!u.valid() || tri.isConstrained(t, i)) return false;
+  const int j = tri.neighbourIndex(u, t);
+  if (j < 0) return false;
+  const VertexId q[4] = {tri.vertex(t, i), tri.vertex(t, kNext[i]), tri.vertex(t, kPrev[i]), tri.vertex(u, j)};
+  const Mat2 m = metrics.blend(q, 4);
+  if (angleTolerance <= 0) return del2d::violatesInnerAngles(tri, t, i, del2d::PlaneTransform(m));
+  return oppositeAngleSum(m, tri.point(q[0]), tri.point(q[1]), tri.point(q[2]), tri.point(q[3])) >
+         std::numbers::pi + angleTolerance;
+}
+
+GeometricSwapStats geometricSwap(Triangulation2d& tri, const VertexMetricCache& metrics,
+                                 const GeometricSwapOptions& options) {
+  if (metrics.size() != tri.numVertices())
+    throw MeshingError("geometricSwap: the metric cache does not match the triangulation");
+  if (!(options.angleTolerance >= 0) || !std::isfinite(options.angleTolerance) ||
+      !(options.maxFlipsPerTriangle >= 0))
+    throw MeshingError("geometricSwap: invalid options");
+  GeometricSwapStats st;
+  const std::size_t slots = tri.triangleSlots();
+  std::vector<std::uint8_t> dirty(slots, 0);
+  for (std::uint32_t ti = 0; ti < slots; ++ti) dirty[ti] = tri.isAlive(TriId(ti));
+  const double budget = options.maxFlipsPerTriangle * static_cast<double>(tri.numTriangles());
+  bool changed = true;
+  while (changed) {
+    changed = false;
+    ++st.sweeps;
+    for (std::uint32_t ti = 0; ti < slots; ++ti) {
+      if (!dirty[ti]) continue;
+      dirty[ti] = 0;
+      const TriId t(ti);
+      for (int i = 0; i < 3; ++i) {
+        const TriId u = tri.neighbour(t, i);
+        if (!u.valid() || tri.isConstrained(t, i)) continue;
+        ++st.checked;
+        if (!violatesSwapCriterion(tri, metrics, t, i, options.angleTolerance)) continue;
+        const del2d::FlipPlan plan = del2d::canFlip(tri, t, i);
+        if (!plan.legal) continue;
+        if (static_cast<double>(st.flipped) >= budget) {
+          st.limitReached = true;
+          return st;
+        }
+        del2d::flip(tri, plan);
+        ++st.flipped;
+        changed = true;
+        markAround(tri, plan.t, dirty);
+        markAround(tri, plan.u, dirty);
+      }
+    }
+  }
+  return st;
+}
+
+}  // namespace aniso::improve

@@ -1,0 +1,88 @@
+#pragma once
+// VertexMetricCache — the per-pass state shared by the operators of the triangle mesh
+// improvement (thesis sec. 4.6, alg. 4.2): the control space is evaluated once per vertex
+// at the start of a pass and the result is reused by every operator of that pass (the
+// thesis counts control-space calls; moving a vertex does not re-evaluate it).
+//
+// Per vertex used by a live triangle it holds
+//   - S_v, the symmetric form of the surface transformation M = M_s M_p (eq. 2.9):
+//     S = (MᵀM)^{1/2}, so |S x| = |M x| for every vector x (S and M differ by a rotation of
+//     the metric space, to which lengths, angles and η_M are blind), and S_v⁻¹;
+//   - the local metric gradation g_v = max over the neighbours P of δ_M(S_v, S_P)
+//     (MetricComparison.h, eq. 2.24–2.25) — the thesis' "metric gradation ratio" of
+//     sec. 4.6.1–4.6.2, measured on the mesh since a ControlSpace2d does not expose it;
+//   - the ideal degree (number of edges) of the vertex: 6 inside; on the border of the
+//     triangulation round(θ / 60°) + 1 with θ the metric-space angle of its star (4 on a
+//     straight border), at least 2;
+//   - whether it may move: used, not flagged fixed, its star closed (not on the border of
+//     the triangulation), not on a constrained edge, and its metric usable.
+// A metric is unusable when M is not finite or singular; such a vertex is held fixed and
+// takes the metric of its first usable neighbour met visiting the triangles by index (the
+// identity when it has none).
+//
+// Also here: the n-point metric of a group of vertices (eq. 2.18 on the cached S, used for
+// a triangle or a quadrilateral), the closed star walk, and the vertex move.
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "mesher/control/ControlSpace2d.h"
+#include "mesher/core/Types.h"
+#include "mesher/delaunay/Triangulation2d.h"
+
+namespace aniso::improve {
+
+using del2d::Triangulation2d;
+using del2d::TriId;
+using del2d::VertexId;
+
+class VertexMetricCache {
+ public:
+  /// Evaluates cs at every vertex of a live triangle and classifies the vertices (see
+  /// above). `fixed` has one entry per vertex (non-zero: never moves); throws MeshingError
+  /// when fixed.size() < tri.numVertices(). Reuses its arrays (no allocation once grown).
+  void update(const Triangulation2d& tri, const ControlSpace2d& cs, std::span<const std::uint8_t> fixed);
+
+  /// Number of vertices covered (tri.numVertices() at the last update).
+  std::size_t size() const { return flags_.size(); }
+  bool used(VertexId v) const { return flags_[v.index] & kUsed; }
+  bool movable(VertexId v) const { return flags_[v.index] & kMovable; }
+  /// The metric could not be used (see above).
+  bool unusableMetric(VertexId v) const { return flags_[v.index] & kBadMetric; }
+  const Mat2& transform(VertexId v) const { return s_[v.index]; }
+  const Mat2& inverse(VertexId v) const { return inv_[v.index]; }
+  double gradation(VertexId v) const { return grad_[v.index]; }
+  int idealDegree(VertexId v) const { return ideal_[v.index]; }
+
+  /// The metric of a group of 1 ≤ n ≤ 4 vertices (a triangle, a quadrilateral): S when all n cached S are bit-identical
+  /// (a constant metric stays exact), else (Σ S_i⁻¹ / n)⁻¹ (eq. 2.18), summed in
+  /// increasing vertex order so that the result does not depend on the order given.
+  Mat2 blend(const VertexId* v, int n) const;
+
+ private:
+  static constexpr std::uint8_t kUsed = 1, kMovable = 2, kOpen = 4, kConstrained = 8, kBadMetric = 16,
+                                kSubstituted = 32;
+  std::vector<Mat2> s_, inv_;
+  std::vector<double> grad_, angle_;
+  std::vector<int> ideal_;
+  std::vector<std::uint8_t> flags_;
+};
+
+/// S = (MᵀM)^{1/2} in closed form, (T + √det T · I) / √(tr T + 2√det T); false when M is
+/// not finite or singular.
+bool symmetricTransform(const Mat2& m, Mat2& s);
+
+/// The neighbours of v counter-clockwise, when v's star is closed: the star triangles are
+/// (v, ring[j], ring[j+1 mod n]). False when v is in no triangle, its star reaches the
+/// border of the triangulation, or it has more than maxDegree neighbours.
+bool gatherRing(const Triangulation2d& tri, VertexId v, std::vector<VertexId>& ring,
+                std::size_t maxDegree = 4096);
+
+/// Moves v to p. No check: the caller has verified that every triangle of the star stays
+/// counter-clockwise. Triangulation2d has no coordinate setter, so this writes through the
+/// reference returned by point(); the seeding quadtree keeps the old position (it only
+/// seeds walks, which stay correct from any start).
+void moveVertex(Triangulation2d& tri, VertexId v, const Vec2& p);
+
+}  // namespace aniso::improve
