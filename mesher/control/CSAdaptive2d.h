@@ -9,7 +9,9 @@
 //                             intersects the metric near the point ("updating control
 //                             space", 3.3.1);
 //   setContinuousSource       metric from another control space over the whole domain
-//                             (3.3.2), intersected with the existing one;
+//                             (3.3.2), intersected with the existing one; point and
+//                             extended sources collected before are then folded in
+//                             (initializeControlVertices);
 //   initializeControlVertices control vertices from the collected point sources, with
 //                             extrapolation (3.3.1 steps 2–3);
 //   adaptToParameterization   refine until M_p is nearly constant per control element and

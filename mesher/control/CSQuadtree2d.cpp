@@ -22,6 +22,7 @@ void CSQuadtree2d::insertDiscreteSource(const Vec2& uv, const Metric2d& sizing) 
 
 void CSQuadtree2d::setContinuousSource(const ControlSpace2d& source) {
   cs_.setContinuous([&source](const Vec2& uv) { return source.getMetric(uv).sizing; });
+  initializeControlVertices();  // folds in point / extended sources collected while fresh
 }
 
 void CSQuadtree2d::adaptToParameterization(const ParametricSurface& surface, double gMin) {

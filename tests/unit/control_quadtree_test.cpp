@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <thread>
 #include <vector>
 
 #include "mesher/control/CSAnalytic2d.h"
@@ -119,6 +120,42 @@ TEST(ControlQuadtree, InitialPointSourcesSplitAndInitialize) {
     EXPECT_TRUE(mv.matrix().allFinite());
   });
   EXPECT_EQ(visited, cs.controlVertexCount());
+}
+
+TEST(ControlQuadtree, ContinuousSourceFoldsInSourcesCollectedBefore) {
+  SizingParameters params;
+  CSQuadtree2d cs(box2(0, 0, 1, 1), params);
+  cs.insertDiscreteSource(Vec2(0.2, 0.3), Metric2d::isotropic(0.003));
+  cs.insertExtendedSource(PointSource2d(Vec2(0.7, 0.7), 0.05), Metric2d::isotropic(0.01));
+  EXPECT_GT(cs.pendingSourceCount(), 0u);
+  cs.setContinuousSource(CSAnalytic2d(box2(0, 0, 1, 1), [](const Vec2&) { return Metric2d::isotropic(0.1); }));
+  cs.validate();
+  EXPECT_EQ(cs.pendingSourceCount(), 0u);
+  EXPECT_LE(cs.getMetric(Vec2(0.2, 0.3)).sizing.lengthAlong(Vec2(1, 0)), 0.0031);
+  EXPECT_LE(cs.getMetric(Vec2(0.7, 0.7)).sizing.lengthAlong(Vec2(1, 0)), 0.01 * (1 + 1e-9));
+  EXPECT_NEAR(cs.getMetric(Vec2(0.95, 0.05)).sizing.lengthAlong(Vec2(1, 0)), 0.1, 1e-9);
+}
+
+TEST(ControlQuadtree, ConcurrentQueriesMatchSerialOnes) {
+  SizingParameters params;
+  const SphereSurface sphere(Frame(), 1.0);
+  const Box2 patch = box2(0, 0.2, kPi / 2, kPi / 2);
+  CSQuadtree2d cs(patch, params);
+  cs.setContinuousSource(CSAnalytic2d(patch, swirl));
+  cs.adaptToParameterization(sphere, 1e-6);
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> u(-0.1, 1.7);
+  std::vector<Vec2> pts(20000);
+  for (Vec2& p : pts) p = Vec2(u(rng), u(rng));
+  std::vector<Mat2> serial(pts.size()), parallel(pts.size());
+  for (std::size_t i = 0; i < pts.size(); ++i) serial[i] = cs.getMetric(pts[i]).transformation();
+  auto work = [&](std::size_t first) {
+    for (std::size_t i = first; i < pts.size(); i += 2) parallel[i] = cs.getMetric(pts[i]).transformation();
+  };
+  std::thread a(work, 0), b(work, 1);
+  a.join();
+  b.join();
+  for (std::size_t i = 0; i < pts.size(); ++i) ASSERT_EQ(serial[i], parallel[i]) << i;
 }
 
 TEST(ControlQuadtree, ContinuousAN1IsWithinMetricDifferenceAtEveryLeafCentre) {
