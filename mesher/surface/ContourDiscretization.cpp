@@ -1,0 +1,263 @@
+// discretizeEdges — thesis sec. 4.3, alg. 4.1, for every model edge of the meshed faces.
+//
+// For edge e with pcurves c_k on the meshed faces f_k (two on a seam face), the metric
+// density along the edge is the pointwise maximum
+//   ρ(t) = max_k |M_k(c_k(t)) c_k'(t)|,   M_k = M_s M_p of face f_k's control space,
+// so that the discretization is fine enough for every adjacent face (alg. 4.1 steps 1, 4
+// and 6 at once: all faces share the edge parameter t, OCCT's SameParameter). The number
+// of segments is n = max(1, round(∫ρ)), raised by the rules below, and the nodes are placed
+// at equal metric arc length (steps 2–3: the remainder of the last unit step spread over
+// all segments). Node creation order: vertex nodes (vertex order), then the inner nodes of
+// every edge (edge order, increasing t).
+//
+// Segment-count rules, each needed for a valid boundary:
+//  - a closed edge (v0 == v1) gets at least max(3, minSegmentsClosedEdge) segments (fewer
+//    would repeat a node pair or collapse the edge);
+//  - of several edges joining the same two vertices, at most one (the shortest) keeps a
+//    single segment (two would give the same node pair twice);
+//  - every loop of a meshed face has at least 3 segments (counting pole pieces);
+//  - with evenSegments, odd counts are raised by one (alg. 4.1 step 7).
+#include "mesher/surface/ContourDiscretization.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+#include <tuple>
+
+#include "mesher/core/Error.h"
+#include "mesher/surface/contour/MetricArcLength.h"
+#include "mesher/surface/contour/PeriodicUv.h"
+
+namespace aniso {
+namespace {
+
+/// More segments than this on one edge means a broken size field, not a mesh request.
+constexpr double kMaxSegmentsPerEdge = 1e7;
+/// Fewest segments of a closed edge whatever the options say.
+constexpr int kMinClosedSegments = 3;
+/// Fewest segments of a loop.
+constexpr int kMinLoopSegments = 3;
+
+std::string edgeName(int e) { return "edge " + std::to_string(e + 1); }
+
+/// What the density needs from one pcurve of the edge.
+struct PCurveMetric {
+  const ParametricCurve2d* curve = nullptr;
+  const ControlSpace2d* cs = nullptr;
+  contour::PeriodicUv periodic;
+};
+
+/// Edges used in a loop of a meshed face (checking the references on the way).
+std::vector<char> usedEdges(const Model& model, const std::vector<const ControlSpace2d*>& spaces) {
+  std::vector<char> used(model.edges.size(), 0);
+  for (std::size_t f = 0; f < model.faces.size(); ++f) {
+    if (!spaces[f]) continue;
+    for (const Loop& loop : model.faces[f].loops)
+      for (const EdgeUse& u : loop.uses) {
+        if (u.edge < 0 || static_cast<std::size_t>(u.edge) >= model.edges.size())
+          throw MeshingError("face " + std::to_string(f + 1) + ": a loop refers to a missing edge");
+        used[u.edge] = 1;
+      }
+  }
+  return used;
+}
+
+/// The pcurves of edge e on meshed faces, with their control spaces.
+std::vector<PCurveMetric> meshedPCurves(const Model& model, int e,
+                                        const std::vector<const ControlSpace2d*>& spaces) {
+  const ModelEdge& ed = model.edges[e];
+  std::vector<PCurveMetric> out;
+  for (const PCurve& pc : ed.pcurves) {
+    if (pc.face < 0 || static_cast<std::size_t>(pc.face) >= model.faces.size() || !spaces[pc.face]) continue;
+    const ModelFace& face = model.faces[pc.face];
+    if (!pc.curve || !face.surface)
+      throw MeshingError(edgeName(e) + ": missing pcurve or surface on face " + std::to_string(pc.face + 1));
+    out.push_back({pc.curve.get(), spaces[pc.face], contour::PeriodicUv(face.surface->domain(), spaces[pc.face]->bounds())});
+  }
+  if (out.empty()) throw MeshingError(edgeName(e) + ": no pcurve on any meshed face that uses it");
+  return out;
+}
+
+/// Parameter range of the discretization: the edge's, along the first meshed pcurve for a
+/// degenerate edge (which has no 3D curve).
+std::array<double, 2> edgeRange(const Model& model, int e, const std::vector<const ControlSpace2d*>& spaces) {
+  const ModelEdge& ed = model.edges[e];
+  if (!ed.degenerate) return {ed.t0, ed.t1};
+  for (const PCurve& pc : ed.pcurves)
+    if (pc.face >= 0 && static_cast<std::size_t>(pc.face) < spaces.size() && spaces[pc.face]) return {pc.t0, pc.t1};
+  return {ed.t0, ed.t1};
+}
+
+contour::MetricArcLength edgeArcLength(const Model& model, int e,
+                                       const std::vector<const ControlSpace2d*>& spaces) {
+  const std::vector<PCurveMetric> pcs = meshedPCurves(model, e, spaces);
+  const auto density = [&pcs](double t) {
+    double rho = 0;
+    for (const PCurveMetric& pc : pcs) {
+      const Curve2dD2 d = pc.curve->d2(t);
+      const Mat2 m = pc.cs->getMetric(pc.periodic.intoBounds(d.p)).transformation();
+      const double r = (m * d.d1).norm();
+      if (!std::isfinite(r)) return r;  // reported by MetricArcLength
+      rho = std::max(rho, r);
+    }
+    return rho;
+  };
+  const std::array<double, 2> range = edgeRange(model, e, spaces);
+  try {
+    return contour::MetricArcLength(density, range[0], range[1]);
+  } catch (const MeshingError& err) {
+    throw MeshingError(edgeName(e) + ": " + err.what());
+  }
+}
+
+/// n = max(1, round(L)) and the closed-edge rule.
+int basicCount(const ModelEdge& ed, int e, double length, const ContourOptions& options) {
+  if (!(length <= kMaxSegmentsPerEdge)) {
+    std::ostringstream s;
+    s << edgeName(e) << ": metric length " << length << " asks for too many segments";
+    throw MeshingError(s.str());
+  }
+  int n = std::max(1, static_cast<int>(std::lround(length)));
+  if (!ed.degenerate && ed.v0 == ed.v1) n = std::max({n, kMinClosedSegments, options.minSegmentsClosedEdge});
+  return n;
+}
+
+/// Of single-segment edges joining the same two vertices, only the shortest in the metric
+/// (the lowest index on ties) keeps one segment; the others get two.
+void separateParallelEdges(const Model& model, const std::vector<char>& used, const std::vector<double>& length,
+                           std::vector<int>& n) {
+  struct Key {
+    int lo, hi;
+    double length;
+    int edge;
+    bool operator<(const Key& o) const { return std::tie(lo, hi, length, edge) < std::tie(o.lo, o.hi, o.length, o.edge); }
+  };
+  std::vector<Key> keys;
+  for (std::size_t e = 0; e < model.edges.size(); ++e) {
+    const ModelEdge& ed = model.edges[e];
+    if (!used[e] || ed.degenerate || ed.v0 == ed.v1 || n[e] != 1) continue;
+    keys.push_back({std::min(ed.v0, ed.v1), std::max(ed.v0, ed.v1), length[e], static_cast<int>(e)});
+  }
+  std::sort(keys.begin(), keys.end());
+  for (std::size_t i = 1; i < keys.size(); ++i)
+    if (keys[i].lo == keys[i - 1].lo && keys[i].hi == keys[i - 1].hi) n[keys[i].edge] = 2;
+}
+
+/// Every loop of a meshed face gets at least kMinLoopSegments segments: the longest edge of
+/// a short loop (in metric length, degenerate edges last) is split further.
+void fillShortLoops(const Model& model, const std::vector<const ControlSpace2d*>& spaces,
+                    const std::vector<double>& length, std::vector<int>& n) {
+  for (std::size_t f = 0; f < model.faces.size(); ++f) {
+    if (!spaces[f]) continue;
+    for (const Loop& loop : model.faces[f].loops) {
+      if (loop.uses.empty()) continue;
+      for (;;) {
+        int total = 0;
+        for (const EdgeUse& u : loop.uses) total += n[u.edge];
+        if (total >= kMinLoopSegments) break;
+        int best = loop.uses.front().edge;
+        for (const EdgeUse& u : loop.uses) {
+          const bool degU = model.edges[u.edge].degenerate, degB = model.edges[best].degenerate;
+          if ((degB && !degU) || (degU == degB && length[u.edge] > length[best])) best = u.edge;
+        }
+        ++n[best];
+      }
+    }
+  }
+}
+
+std::vector<int> segmentCounts(const Model& model, const std::vector<const ControlSpace2d*>& spaces,
+                               const std::vector<char>& used, const std::vector<double>& length,
+                               const ContourOptions& options) {
+  std::vector<int> n(model.edges.size(), 0);
+  for (std::size_t e = 0; e < model.edges.size(); ++e)
+    if (used[e]) n[e] = basicCount(model.edges[e], static_cast<int>(e), length[e], options);
+  separateParallelEdges(model, used, length, n);
+  fillShortLoops(model, spaces, length, n);
+  if (options.evenSegments)
+    for (int& k : n)
+      if (k % 2) ++k;
+  return n;
+}
+
+void checkVertex(const Model& model, int v, int e) {
+  if (v < 0 || static_cast<std::size_t>(v) >= model.vertices.size())
+    throw MeshingError(edgeName(e) + ": vertex reference out of range");
+}
+
+/// The parameters and nodes of edge e split into n pieces along `arc`.
+EdgeDiscretization placeNodes(const Model& model, int e, const contour::MetricArcLength& arc, int n,
+                              const std::vector<int>& vertexNodes, SurfaceMesh& mesh) {
+  const ModelEdge& ed = model.edges[e];
+  EdgeDiscretization d;
+  d.t = arc.equalSpacing(n);
+  for (std::size_t i = 1; i < d.t.size(); ++i)
+    if (!(d.t[i] > d.t[i - 1]))
+      throw MeshingError(edgeName(e) + ": the metric arc length cannot be inverted (parameters do not increase)");
+  d.nodes.resize(d.t.size());
+  d.nodes.front() = vertexNodes[ed.v0];
+  d.nodes.back() = vertexNodes[ed.v1];
+  for (int i = 1; i < n; ++i) {
+    if (ed.degenerate) {
+      d.nodes[i] = vertexNodes[ed.v0];
+      continue;
+    }
+    const Vec3 p = ed.curve->point(d.t[i]);
+    if (!p.allFinite()) throw MeshingError(edgeName(e) + ": the 3D curve cannot be evaluated at t = " + std::to_string(d.t[i]));
+    NodeOn on;
+    on.kind = NodeOn::Kind::Edge;
+    on.entity = e;
+    on.t = d.t[i];
+    d.nodes[i] = mesh.addNode(p, on);
+  }
+  return d;
+}
+
+}  // namespace
+
+std::vector<EdgeDiscretization> discretizeEdges(const Model& model,
+                                                const std::vector<const ControlSpace2d*>& faceSpaces,
+                                                const ContourOptions& options, SurfaceMesh& mesh) {
+  if (faceSpaces.size() != model.faces.size())
+    throw MeshingError("contour discretization: " + std::to_string(faceSpaces.size()) + " control spaces for " +
+                       std::to_string(model.faces.size()) + " faces");
+  const std::vector<char> used = usedEdges(model, faceSpaces);
+  const int ne = static_cast<int>(model.edges.size());
+
+  std::vector<contour::MetricArcLength> arcs;
+  std::vector<int> arcOf(ne, -1);
+  std::vector<double> length(ne, 0.0);
+  for (int e = 0; e < ne; ++e) {
+    if (!used[e]) continue;
+    const ModelEdge& ed = model.edges[e];
+    checkVertex(model, ed.v0, e);
+    checkVertex(model, ed.v1, e);
+    if (ed.degenerate ? ed.v0 != ed.v1 : !ed.curve)
+      throw MeshingError(edgeName(e) + (ed.degenerate ? ": degenerate edge with two vertices" : ": no 3D curve"));
+    arcOf[e] = static_cast<int>(arcs.size());
+    arcs.push_back(edgeArcLength(model, e, faceSpaces));
+    length[e] = arcs.back().total();
+  }
+  const std::vector<int> n = segmentCounts(model, faceSpaces, used, length, options);
+
+  // Vertex nodes first, in vertex order.
+  std::vector<char> vertexUsed(model.vertices.size(), 0);
+  for (int e = 0; e < ne; ++e)
+    if (used[e]) vertexUsed[model.edges[e].v0] = vertexUsed[model.edges[e].v1] = 1;
+  std::vector<int> vertexNodes(model.vertices.size(), -1);
+  for (std::size_t v = 0; v < model.vertices.size(); ++v) {
+    if (!vertexUsed[v]) continue;
+    NodeOn on;
+    on.kind = NodeOn::Kind::Vertex;
+    on.entity = static_cast<int>(v);
+    vertexNodes[v] = mesh.addNode(model.vertices[v].p, on);
+  }
+
+  std::vector<EdgeDiscretization> out(ne);
+  for (int e = 0; e < ne; ++e)
+    if (used[e]) out[e] = placeNodes(model, e, arcs[arcOf[e]], n[e], vertexNodes, mesh);
+  return out;
+}
+
+}  // namespace aniso

@@ -1,0 +1,182 @@
+// faceBoundary — the boundary loops of one face in (u, v) from the edge discretizations
+// (thesis sec. 4.3, alg. 4.1 step 6: the contour nodes in the parametric space of each
+// adjacent patch; here every face has its own pcurve, so no projection is needed).
+//
+// Each use contributes the nodes of its edge in walking order with uv = c_p(t) on the
+// use's pcurve (on a seam, the pcurve of that side). Consecutive uses share their vertex
+// node, emitted once at the midpoint of the two pcurve ends. On a periodic surface each use
+// is moved by whole periods next to the previous one, and afterwards each loop as a whole
+// so that it overlaps the face's parametric bounds (the outer loop) or the outer loop (the
+// holes) as much as possible: the control space covers the face's stored bounds. Every
+// junction, the closing one included, must then meet within kLoopGapRatio of the face's
+// parametric extent.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "mesher/core/Error.h"
+#include "mesher/surface/ContourDiscretization.h"
+#include "mesher/surface/contour/PeriodicUv.h"
+
+namespace aniso {
+namespace {
+
+/// Largest (u, v) gap between consecutive uses, relative to the diagonal of the face's
+/// parametric extent (the same order as Model::validate's kUvGapRatio).
+constexpr double kLoopGapRatio = 1e-2;
+
+struct UseNodes {
+  std::vector<Vec2> uv;
+  std::vector<int> node;
+};
+
+struct Junction {
+  double gap = 0;
+  int from = -1, to = -1;  ///< edges (0-based) of the two uses
+};
+
+std::string where(int face, std::size_t loop) {
+  return "face " + std::to_string(face + 1) + " loop " + std::to_string(loop + 1);
+}
+
+UseNodes useNodes(const Model& model, int face, std::size_t loop, const EdgeUse& use,
+                  const std::vector<EdgeDiscretization>& edges) {
+  const std::string name = where(face, loop) + ": edge " + std::to_string(use.edge + 1);
+  if (use.edge < 0 || static_cast<std::size_t>(use.edge) >= model.edges.size() ||
+      static_cast<std::size_t>(use.edge) >= edges.size())
+    throw MeshingError(where(face, loop) + ": edge reference out of range");
+  const ModelEdge& ed = model.edges[use.edge];
+  const EdgeDiscretization& d = edges[use.edge];
+  if (d.nodes.size() < 2 || d.t.size() != d.nodes.size())
+    throw MeshingError(name + " has not been discretized");
+  if (use.pcurve < 0 || static_cast<std::size_t>(use.pcurve) >= ed.pcurves.size() ||
+      ed.pcurves[use.pcurve].face != face || !ed.pcurves[use.pcurve].curve)
+    throw MeshingError(name + " has no pcurve on the face for this use");
+  const ParametricCurve2d& c = *ed.pcurves[use.pcurve].curve;
+  UseNodes out;
+  out.uv.reserve(d.t.size());
+  for (double t : d.t) {
+    const Vec2 p = c.point(t);
+    if (!p.allFinite()) throw MeshingError(name + ": the pcurve cannot be evaluated at t = " + std::to_string(t));
+    out.uv.push_back(p);
+  }
+  out.node = d.nodes;
+  if (use.reversed) {
+    std::reverse(out.uv.begin(), out.uv.end());
+    std::reverse(out.node.begin(), out.node.end());
+  }
+  return out;
+}
+
+/// The loop's nodes chained in (u, v); `junctions` receives the gap at every junction.
+std::vector<BoundaryNode> chainLoop(const Model& model, int face, std::size_t l, const contour::PeriodicUv& periodic,
+                                    const std::vector<EdgeDiscretization>& edges, std::vector<Junction>& junctions) {
+  const Loop& loop = model.faces[face].loops[l];
+  if (loop.uses.empty()) throw MeshingError(where(face, l) + ": empty loop");
+  std::vector<BoundaryNode> out;
+  Vec2 end(0, 0);
+  int endNode = -1, endEdge = -1;
+  const auto join = [&](Vec2& start, int startNode, int startEdge) {
+    if (startNode != endNode) {
+      std::ostringstream s;
+      s << where(face, l) << ": edge " << endEdge + 1 << " ends at node " << endNode << " but edge " << startEdge + 1
+        << " starts at node " << startNode << " (the loop does not chain)";
+      throw MeshingError(s.str());
+    }
+    junctions.push_back({(start - end).norm(), endEdge, startEdge});
+    start = 0.5 * (start + end);
+  };
+  for (std::size_t k = 0; k < loop.uses.size(); ++k) {
+    UseNodes un = useNodes(model, face, l, loop.uses[k], edges);
+    if (k > 0) {
+      const Vec2 shift = periodic.shiftToward(un.uv.front(), end);
+      for (Vec2& p : un.uv) p += shift;
+      join(un.uv.front(), un.node.front(), loop.uses[k].edge);
+    }
+    for (std::size_t i = 0; i + 1 < un.uv.size(); ++i) out.push_back({un.uv[i], un.node[i]});
+    end = un.uv.back();
+    endNode = un.node.back();
+    endEdge = loop.uses[k].edge;
+  }
+  join(out.front().uv, out.front().node, loop.uses.front().edge);
+  return out;
+}
+
+Box2 boxOf(const std::vector<BoundaryNode>& loop) {
+  Box2 b;
+  for (const BoundaryNode& n : loop) b.add(n.uv);
+  return b;
+}
+
+/// Moves the loop by whole periods so that its box overlaps `ref` most (no move on ties).
+void alignToBox(std::vector<BoundaryNode>& loop, const Box2& ref, const Vec2& period) {
+  if (ref.empty()) return;
+  const Box2 box = boxOf(loop);
+  Vec2 shift(0, 0);
+  for (int i = 0; i < 2; ++i) {
+    const double p = period[i];
+    if (!(p > 0)) continue;
+    const auto overlap = [&](double k) {
+      return std::min(box.hi[i] + k * p, ref.hi[i]) - std::max(box.lo[i] + k * p, ref.lo[i]);
+    };
+    const double k0 = std::round((0.5 * (ref.lo[i] + ref.hi[i]) - 0.5 * (box.lo[i] + box.hi[i])) / p);
+    double best = 0, bestOverlap = overlap(0);
+    for (double k : {k0 - 1, k0, k0 + 1}) {
+      const double o = overlap(k);
+      if (o > bestOverlap + 1e-12 * p) {
+        best = k;
+        bestOverlap = o;
+      }
+    }
+    shift[i] = best * p;
+  }
+  for (BoundaryNode& n : loop) n.uv += shift;
+}
+
+double extentDiagonal(const ModelFace& f, const std::vector<std::vector<BoundaryNode>>& loops) {
+  const double d = f.uvBounds.diagonal();
+  if (std::isfinite(d) && d > 0) return d;
+  Box2 b;
+  for (const auto& loop : loops) b.add(boxOf(loop));
+  return b.diagonal();
+}
+
+}  // namespace
+
+FaceBoundary faceBoundary(const Model& model, int face, const std::vector<EdgeDiscretization>& edges,
+                          const SurfaceMesh& mesh) {
+  if (face < 0 || static_cast<std::size_t>(face) >= model.faces.size())
+    throw MeshingError("face " + std::to_string(face + 1) + " does not exist");
+  const ModelFace& f = model.faces[face];
+  if (!f.surface) throw MeshingError("face " + std::to_string(face + 1) + ": no surface");
+  const contour::PeriodicUv periodic(f.surface->domain(), f.uvBounds);
+
+  FaceBoundary out;
+  out.face = face;
+  std::vector<std::vector<Junction>> junctions(f.loops.size());
+  for (std::size_t l = 0; l < f.loops.size(); ++l)
+    out.loops.push_back(chainLoop(model, face, l, periodic, edges, junctions[l]));
+
+  const double extent = extentDiagonal(f, out.loops);
+  for (std::size_t l = 0; l < junctions.size(); ++l)
+    for (const Junction& j : junctions[l])
+      if (!(j.gap <= kLoopGapRatio * extent)) {
+        std::ostringstream s;
+        s << where(face, l) << ": edges " << j.from + 1 << " and " << j.to + 1 << " do not meet in (u,v): gap " << j.gap
+          << " for a parametric extent of " << extent << " (the loop is not closed)";
+        throw MeshingError(s.str());
+      }
+  for (const auto& loop : out.loops)
+    for (const BoundaryNode& n : loop)
+      if (n.node < 0 || static_cast<std::size_t>(n.node) >= mesh.nodes.size())
+        throw MeshingError("face " + std::to_string(face + 1) + ": boundary node " + std::to_string(n.node) +
+                           " is not in the surface mesh");
+
+  for (std::size_t l = 0; l < out.loops.size(); ++l)
+    alignToBox(out.loops[l], l == 0 ? f.uvBounds : boxOf(out.loops[0]), periodic.period());
+  if (f.reversed)
+    for (auto& loop : out.loops) std::reverse(loop.begin(), loop.end());
+  return out;
+}
+
+}  // namespace aniso

@@ -1,0 +1,276 @@
+// faceBoundary and addFaceMesh on small analytic models: closed loops in (u, v), the face on
+// the left (outer counter-clockwise, holes clockwise, reversed faces normalised), shared
+// nodes, seams (one node at u and u + 2π), periodic shifts of pcurves, poles (repeated
+// nodes), open loops rejected naming the face; assembly of a face mesh.
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "contour_test_models.h"
+#include "mesher/core/Error.h"
+#include "mesher/surface/ContourDiscretization.h"
+
+using namespace aniso;
+using namespace aniso::test;
+
+namespace {
+
+struct Boundaries {
+  std::vector<std::unique_ptr<CSAnalytic2d>> spaces;
+  SurfaceMesh mesh;
+  std::vector<EdgeDiscretization> edges;
+
+  Boundaries(const Model& m, double h, double gMin = 0) {
+    std::vector<const ControlSpace2d*> ptrs;
+    for (std::size_t f = 0; f < m.faces.size(); ++f) {
+      spaces.push_back(space(m, static_cast<int>(f), isotropic(h), gMin));
+      ptrs.push_back(spaces.back().get());
+    }
+    edges = discretizeEdges(m, ptrs, {}, mesh);
+  }
+};
+
+/// Each boundary node's (u, v) maps onto its global node in 3D, and consecutive nodes are
+/// less than half a period apart (no jump across a seam).
+void expectConsistent(const Model& m, const FaceBoundary& b, const SurfaceMesh& mesh, double maxStep) {
+  const ParametricSurface& s = *m.faces[b.face].surface;
+  for (const auto& loop : b.loops) {
+    ASSERT_GE(loop.size(), 3u);
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      EXPECT_NEAR((s.point(loop[i].uv) - mesh.nodes[loop[i].node]).norm(), 0, 1e-9) << "node " << i;
+      EXPECT_LT((loop[(i + 1) % loop.size()].uv - loop[i].uv).norm(), maxStep) << "step " << i;
+    }
+  }
+}
+
+}  // namespace
+
+TEST(ContourBoundary, SquareIsCounterClockwiseAndClosed) {
+  const Model m = unitSquare();
+  const Boundaries r(m, 0.1);
+  const FaceBoundary b = faceBoundary(m, 0, r.edges, r.mesh);
+  EXPECT_EQ(b.face, 0);
+  ASSERT_EQ(b.loops.size(), 1u);
+  ASSERT_EQ(b.loops[0].size(), 40u);  // 4 × 10 segments, every node once
+  EXPECT_NEAR(signedArea(b.loops[0]), 1.0, 1e-12);
+  EXPECT_EQ(b.loops[0][0].node, 0);   // starts at the first use's start vertex
+  EXPECT_EQ(b.loops[0][10].node, 1);
+  expectConsistent(m, b, r.mesh, 0.11);
+}
+
+TEST(ContourBoundary, ReversedFaceIsNormalised) {
+  // Model loops of a reversed face have the face on the right (clockwise outer loop).
+  const Model m = unitSquare(true);
+  const Boundaries r(m, 0.25);
+  const FaceBoundary b = faceBoundary(m, 0, r.edges, r.mesh);
+  EXPECT_NEAR(signedArea(b.loops[0]), 1.0, 1e-12);
+  expectConsistent(m, b, r.mesh, 0.26);
+}
+
+TEST(ContourBoundary, HoleIsClockwise) {
+  ModelBuilder bld;
+  const int f = bld.face(xyPlane(), box(0, 0, 1, 1));
+  polygonLoop(bld, f, {bld.vertex({0, 0, 0}), bld.vertex({1, 0, 0}), bld.vertex({1, 1, 0}), bld.vertex({0, 1, 0})}, true);
+  polygonLoop(bld, f, {bld.vertex({0.4, 0.4, 0}), bld.vertex({0.4, 0.6, 0}), bld.vertex({0.6, 0.6, 0}), bld.vertex({0.6, 0.4, 0})},
+              false);
+  const Model& m = bld.m;
+  const Boundaries r(m, 0.05);
+  const FaceBoundary b = faceBoundary(m, 0, r.edges, r.mesh);
+  ASSERT_EQ(b.loops.size(), 2u);
+  EXPECT_NEAR(signedArea(b.loops[0]), 1.0, 1e-12);
+  EXPECT_NEAR(signedArea(b.loops[1]), -0.04, 1e-12);
+  EXPECT_EQ(b.loops[1].size(), 16u);
+  expectConsistent(m, b, r.mesh, 0.06);
+}
+
+TEST(ContourBoundary, SharedEdgeRunsOppositeWays) {
+  const Model m = twoSquares();
+  const Boundaries r(m, 0.2);
+  const FaceBoundary b0 = faceBoundary(m, 0, r.edges, r.mesh), b1 = faceBoundary(m, 1, r.edges, r.mesh);
+  EXPECT_NEAR(signedArea(b0.loops[0]), 1.0, 1e-12);
+  EXPECT_NEAR(signedArea(b1.loops[0]), 1.0, 1e-12);
+  // Directed boundary segments: each shared one appears once in each direction.
+  std::vector<std::pair<int, int>> s0, s1;
+  for (std::size_t i = 0; i < b0.loops[0].size(); ++i)
+    s0.push_back({b0.loops[0][i].node, b0.loops[0][(i + 1) % b0.loops[0].size()].node});
+  for (std::size_t i = 0; i < b1.loops[0].size(); ++i)
+    s1.push_back({b1.loops[0][(i + 1) % b1.loops[0].size()].node, b1.loops[0][i].node});
+  int common = 0;
+  for (const auto& s : s0) common += static_cast<int>(std::count(s1.begin(), s1.end(), s));
+  EXPECT_EQ(common, 5);  // the shared edge's 5 segments
+}
+
+TEST(ContourBoundary, SeamGivesOneNodeAtTwoParameters) {
+  const Model m = cylinder(1, 2);
+  const Boundaries r(m, 0.25);
+  const FaceBoundary b = faceBoundary(m, 0, r.edges, r.mesh);
+  ASSERT_EQ(b.loops.size(), 1u);
+  const auto& loop = b.loops[0];
+  EXPECT_NEAR(signedArea(loop), 2 * kPi * 2, 1e-9);
+  expectConsistent(m, b, r.mesh, kPi);
+  // Every seam node (vertices included) appears twice, at u = 0 and u = 2π.
+  const EdgeDiscretization& seam = r.edges[2];
+  ASSERT_EQ(seam.nodes.size(), 9u);  // 2 / 0.25 = 8 segments
+  for (int n : seam.nodes) {
+    std::vector<Vec2> at;
+    for (const BoundaryNode& bn : loop)
+      if (bn.node == n) at.push_back(bn.uv);
+    ASSERT_EQ(at.size(), 2u) << "node " << n;
+    EXPECT_NEAR(std::abs(at[0].x() - at[1].x()), 2 * kPi, 1e-12);
+    EXPECT_NEAR(at[0].y(), at[1].y(), 1e-12);
+  }
+}
+
+TEST(ContourBoundary, PcurveStoredOnePeriodAwayIsMovedBack) {
+  for (double shift : {2 * kPi, -4 * kPi}) {
+    const Model m = cylinder(1, 2, shift);
+    const Boundaries r(m, 0.25);
+    const FaceBoundary b = faceBoundary(m, 0, r.edges, r.mesh);
+    EXPECT_NEAR(signedArea(b.loops[0]), 4 * kPi, 1e-9) << shift;
+    expectConsistent(m, b, r.mesh, kPi);
+    for (const BoundaryNode& n : b.loops[0]) {
+      EXPECT_GE(n.uv.x(), -1e-12);
+      EXPECT_LE(n.uv.x(), 2 * kPi + 1e-12);
+    }
+  }
+}
+
+TEST(ContourBoundary, LoopIsMovedOntoTheFaceBounds) {
+  // Every pcurve stored one period to the right of the face's bounds: the loop is chained
+  // there, then moved back onto the bounds (where the control space is).
+  Model m = cylinder(1, 2, 2 * kPi);
+  for (ModelEdge& e : m.edges)
+    for (PCurve& pc : e.pcurves)
+      if (&e != &m.edges[1]) {
+        const auto* line = dynamic_cast<const Line2d*>(pc.curve.get());
+        ASSERT_NE(line, nullptr);
+        const Vec2 a = line->point(pc.t0), c = line->point(pc.t1);
+        pc.curve = std::make_shared<Line2d>(a + Vec2(2 * kPi, 0), c + Vec2(2 * kPi, 0), pc.t0, pc.t1);
+      }
+  const Boundaries r(m, 0.5);
+  const FaceBoundary b = faceBoundary(m, 0, r.edges, r.mesh);
+  Box2 uv;
+  for (const BoundaryNode& n : b.loops[0]) uv.add(n.uv);
+  EXPECT_NEAR(uv.lo.x(), 0, 1e-12);
+  EXPECT_NEAR(uv.hi.x(), 2 * kPi, 1e-12);
+}
+
+TEST(ContourBoundary, PolesRepeatTheVertexNode) {
+  const Model m = sphere(1);
+  const Boundaries r(m, 0.2, 0.04);
+  const FaceBoundary b = faceBoundary(m, 0, r.edges, r.mesh);
+  const auto& loop = b.loops[0];
+  EXPECT_NEAR(signedArea(loop), 2 * kPi * kPi, 1e-9);
+  // 6 pole pieces at each pole: 7 consecutive boundary nodes on each pole's vertex node.
+  for (int pole : {0, 1}) {
+    int count = 0;
+    for (const BoundaryNode& n : loop) count += n.node == pole;
+    EXPECT_EQ(count, 7) << "pole " << pole;
+  }
+  int repeats = 0;
+  for (std::size_t i = 0; i < loop.size(); ++i) repeats += loop[i].node == loop[(i + 1) % loop.size()].node;
+  EXPECT_EQ(repeats, 12);
+  expectConsistent(m, b, r.mesh, kPi);
+}
+
+TEST(ContourBoundary, OpenLoopIsRejectedNamingTheFace) {
+  // A cylinder face bounded by its two circles without a seam: each loop winds around the
+  // surface and cannot close in (u, v).
+  Model m = cylinder(1, 2);
+  ModelFace& f = m.faces[0];
+  f.loops = {{{{0, false, 0}}, true}, {{{1, true, 0}}, false}};
+  const Boundaries r(m, 0.5);
+  try {
+    faceBoundary(m, 0, r.edges, r.mesh);
+    FAIL() << "the loop does not close";
+  } catch (const MeshingError& e) {
+    EXPECT_NE(std::string(e.what()).find("face 1 loop 1"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("not closed"), std::string::npos) << e.what();
+  }
+  // A loop whose uses do not chain (wrong orientation of one use).
+  Model bad = unitSquare();
+  bad.faces[0].loops[0].uses[2].reversed = true;
+  const Boundaries rb(bad, 0.5);
+  EXPECT_THROW(faceBoundary(bad, 0, rb.edges, rb.mesh), MeshingError);
+}
+
+TEST(ContourAssembly, InteriorNodesAndOrientation) {
+  for (bool reversed : {false, true}) {
+    const Model m = unitSquare(reversed);
+    const Boundaries r(m, 5);  // one segment per edge
+    const FaceBoundary b = faceBoundary(m, 0, r.edges, r.mesh);
+    ASSERT_EQ(b.loops[0].size(), 4u);
+    FaceMesh fm;
+    for (const BoundaryNode& n : b.loops[0]) {
+      fm.uv.push_back(n.uv);
+      fm.node.push_back(n.node);
+    }
+    fm.uv.push_back(Vec2(0.5, 0.5));
+    fm.node.push_back(-1);
+    for (int i = 0; i < 4; ++i) fm.triangles.push_back({i, (i + 1) % 4, 4});  // counter-clockwise in (u, v)
+    SurfaceMesh mesh = r.mesh;
+    addFaceMesh(m, 0, fm, mesh);
+    ASSERT_EQ(mesh.nodes.size(), 5u);
+    EXPECT_EQ(mesh.nodeOn[4].kind, NodeOn::Kind::Face);
+    EXPECT_EQ(mesh.nodeOn[4].entity, 0);
+    EXPECT_EQ(mesh.nodeOn[4].uv, Vec2(0.5, 0.5));
+    EXPECT_NEAR((mesh.nodes[4] - Vec3(0.5, 0.5, 0)).norm(), 0, 1e-15);
+    ASSERT_EQ(mesh.triangles.size(), 4u);
+    EXPECT_EQ(mesh.triangleFace, std::vector<int>(4, 0));
+    // Normal of the face: +z, or −z when reversed.
+    for (const auto& t : mesh.triangles) {
+      const Vec3 n = (mesh.nodes[t[1]] - mesh.nodes[t[0]]).cross(mesh.nodes[t[2]] - mesh.nodes[t[0]]);
+      EXPECT_GT(reversed ? -n.z() : n.z(), 0);
+    }
+    EXPECT_TRUE(mesh.validate().empty());
+    const SurfaceMesh::EdgeCounts c = mesh.edgeCounts();
+    EXPECT_EQ(c.open, 4);
+    EXPECT_EQ(c.misoriented, 0);
+  }
+}
+
+TEST(ContourAssembly, PoleTrianglesAreDropped) {
+  const Model m = sphere(1);
+  const Boundaries r(m, 0.2, 0.04);
+  const FaceBoundary b = faceBoundary(m, 0, r.edges, r.mesh);
+  FaceMesh fm;
+  for (const BoundaryNode& n : b.loops[0]) {
+    fm.uv.push_back(n.uv);
+    fm.node.push_back(n.node);
+  }
+  // A fan from the first interior point to two consecutive boundary nodes on the south
+  // pole (collapsed), and one to two distinct nodes (kept).
+  fm.uv.push_back(Vec2(1, -1.2));
+  fm.node.push_back(-1);
+  const int inner = static_cast<int>(fm.uv.size()) - 1;
+  int poleA = -1, ordinary = -1;
+  for (int i = 0; i + 1 < static_cast<int>(b.loops[0].size()); ++i) {
+    if (poleA < 0 && b.loops[0][i].node == 0 && b.loops[0][i + 1].node == 0) poleA = i;
+    if (ordinary < 0 && b.loops[0][i].node != b.loops[0][i + 1].node) ordinary = i;
+  }
+  ASSERT_GE(poleA, 0);
+  ASSERT_GE(ordinary, 0);
+  fm.triangles = {{poleA, poleA + 1, inner}, {ordinary, ordinary + 1, inner}};
+  SurfaceMesh mesh = r.mesh;
+  const std::size_t before = mesh.nodes.size();
+  addFaceMesh(m, 0, fm, mesh);
+  EXPECT_EQ(mesh.nodes.size(), before + 1);
+  ASSERT_EQ(mesh.triangles.size(), 1u);
+  EXPECT_EQ(mesh.triangles[0][2], static_cast<int>(before));
+  EXPECT_NEAR(mesh.nodes[before].norm(), 1.0, 1e-12);
+}
+
+TEST(ContourAssembly, RejectsInconsistentFaceMesh) {
+  const Model m = unitSquare();
+  SurfaceMesh mesh;
+  FaceMesh fm;
+  fm.uv = {Vec2(0, 0)};
+  EXPECT_THROW(addFaceMesh(m, 0, fm, mesh), MeshingError);  // node entries missing
+  fm.node = {3};
+  EXPECT_THROW(addFaceMesh(m, 0, fm, mesh), MeshingError);  // node 3 does not exist
+  fm.node = {-1};
+  fm.triangles = {{0, 1, 2}};
+  EXPECT_THROW(addFaceMesh(m, 0, fm, mesh), MeshingError);  // vertex 1 does not exist
+  EXPECT_THROW(addFaceMesh(m, 4, FaceMesh{}, mesh), MeshingError);
+}
