@@ -39,6 +39,10 @@ struct FaceMeshStats {
   int missingBoundaryEdges = 0;     ///< after boundary insertion, before recovery
   int insertedInner = 0;
   int cancelledInsertions = 0;
+  int predictedTriangles = 0;         ///< NT_p (eq. 6.2) at the start of refinement
+  /// Refinement stopped at its bound of 4 NT_p + 1000 insertions (the mesh is valid but may
+  /// be coarser than the metric asks somewhere).
+  bool insertionLimitReached = false;
   double seconds = 0;
 };
 
