@@ -1,9 +1,14 @@
 // faceBoundary — the boundary loops of one face in (u, v) from the edge discretizations
 // (thesis sec. 4.3, alg. 4.1 step 6: the contour nodes in the parametric space of each
-// adjacent patch; here every face has its own pcurve, so no projection is needed).
+// adjacent patch).
 //
 // Each use contributes the nodes of its edge in walking order with uv = c_p(t) on the
-// use's pcurve (on a seam, the pcurve of that side). Consecutive uses share their vertex
+// use's pcurve (on a seam, the pcurve of that side). The edge's 3D curve is the master of
+// the inner nodes' positions; where p(c_p(t)) is further from the node than the CAD
+// tolerances allow (pcurves not parameterized like their 3D curve, "SameParameter" not
+// holding: up to 30 model units on a 7e-4 tolerance in submarine.stp), the node is
+// projected onto the pcurve's image instead (step 6's projection), keeping the parameters
+// increasing along the edge. Consecutive uses share their vertex
 // node, emitted once at the midpoint of the two pcurve ends. On a periodic surface each use
 // is moved by whole periods next to the previous one, and afterwards each loop as a whole
 // so that it overlaps the face's parametric bounds (the outer loop) or the outer loop (the
@@ -12,9 +17,11 @@
 // parametric extent.
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
 
 #include "mesher/core/Error.h"
+#include "mesher/geometry/CurveOnSurface3d.h"
 #include "mesher/surface/ContourDiscretization.h"
 #include "mesher/surface/contour/PeriodicUv.h"
 
@@ -24,6 +31,10 @@ namespace {
 /// Largest (u, v) gap between consecutive uses, relative to the diagonal of the face's
 /// parametric extent (the same order as Model::validate's kUvGapRatio).
 constexpr double kLoopGapRatio = 1e-2;
+/// An inner edge node whose pcurve point misses it in 3D by more than kMissFactor × the
+/// CAD tolerance (edge or face) plus kMissRelative × the model size is projected.
+constexpr double kMissFactor = 2;
+constexpr double kMissRelative = 1e-9;
 
 struct UseNodes {
   std::vector<Vec2> uv;
@@ -39,8 +50,37 @@ std::string where(int face, std::size_t loop) {
   return "face " + std::to_string(face + 1) + " loop " + std::to_string(loop + 1);
 }
 
+/// Parameters on the pcurve for the inner nodes of edge `e` whose 3D position p(c_p(t))
+/// misses by more than `tol`: the nearest point of p∘c_p to the node, searched after the
+/// previous node's parameter. Unchanged when the projection does not help or would not keep
+/// the parameters strictly increasing.
+std::vector<double> projectedParameters(const ModelEdge& ed, const PCurve& pc, const SurfacePtr& surface,
+                                        const EdgeDiscretization& d, const SurfaceMesh& mesh, double tol) {
+  std::vector<double> t = d.t;
+  if (ed.degenerate || t.size() < 3) return t;
+  const ParametricSurface& s = *surface;
+  std::unique_ptr<CurveOnSurface3d> image;
+  bool changed = false;
+  for (std::size_t i = 1; i + 1 < t.size(); ++i) {
+    const Vec3& x = mesh.nodes[d.nodes[i]];
+    const double miss = (s.point(pc.curve->point(t[i])) - x).norm();
+    if (!(miss > tol)) continue;
+    if (!image) image = std::make_unique<CurveOnSurface3d>(surface, pc.curve);
+    const double lo = t[i - 1], hi = t.back();
+    const double tp = image->project(x, std::clamp(t[i], lo, hi), lo, hi);
+    if (tp > lo && tp < hi && (image->point(tp) - x).norm() < miss) {
+      t[i] = tp;
+      changed = true;
+    }
+  }
+  if (!changed) return t;
+  for (std::size_t i = 1; i < t.size(); ++i)
+    if (!(t[i] > t[i - 1])) return d.t;
+  return t;
+}
+
 UseNodes useNodes(const Model& model, int face, std::size_t loop, const EdgeUse& use,
-                  const std::vector<EdgeDiscretization>& edges) {
+                  const std::vector<EdgeDiscretization>& edges, const SurfaceMesh& mesh) {
   const std::string name = where(face, loop) + ": edge " + std::to_string(use.edge + 1);
   if (use.edge < 0 || static_cast<std::size_t>(use.edge) >= model.edges.size() ||
       static_cast<std::size_t>(use.edge) >= edges.size())
@@ -49,14 +89,20 @@ UseNodes useNodes(const Model& model, int face, std::size_t loop, const EdgeUse&
   const EdgeDiscretization& d = edges[use.edge];
   if (d.nodes.size() < 2 || d.t.size() != d.nodes.size())
     throw MeshingError(name + " has not been discretized");
+  for (int n : d.nodes)
+    if (n < 0 || static_cast<std::size_t>(n) >= mesh.nodes.size())
+      throw MeshingError(name + ": node " + std::to_string(n) + " is not in the surface mesh");
   if (use.pcurve < 0 || static_cast<std::size_t>(use.pcurve) >= ed.pcurves.size() ||
       ed.pcurves[use.pcurve].face != face || !ed.pcurves[use.pcurve].curve)
     throw MeshingError(name + " has no pcurve on the face for this use");
-  const ParametricCurve2d& c = *ed.pcurves[use.pcurve].curve;
+  const PCurve& pc = ed.pcurves[use.pcurve];
+  const ModelFace& f = model.faces[face];
+  const double tol = kMissFactor * std::max(ed.tolerance, f.tolerance) + kMissRelative * model.diagonal();
+  const std::vector<double> ts = projectedParameters(ed, pc, f.surface, d, mesh, tol);
   UseNodes out;
-  out.uv.reserve(d.t.size());
-  for (double t : d.t) {
-    const Vec2 p = c.point(t);
+  out.uv.reserve(ts.size());
+  for (double t : ts) {
+    const Vec2 p = pc.curve->point(t);
     if (!p.allFinite()) throw MeshingError(name + ": the pcurve cannot be evaluated at t = " + std::to_string(t));
     out.uv.push_back(p);
   }
@@ -70,7 +116,8 @@ UseNodes useNodes(const Model& model, int face, std::size_t loop, const EdgeUse&
 
 /// The loop's nodes chained in (u, v); `junctions` receives the gap at every junction.
 std::vector<BoundaryNode> chainLoop(const Model& model, int face, std::size_t l, const contour::PeriodicUv& periodic,
-                                    const std::vector<EdgeDiscretization>& edges, std::vector<Junction>& junctions) {
+                                    const std::vector<EdgeDiscretization>& edges, const SurfaceMesh& mesh,
+                                    std::vector<Junction>& junctions) {
   const Loop& loop = model.faces[face].loops[l];
   if (loop.uses.empty()) throw MeshingError(where(face, l) + ": empty loop");
   std::vector<BoundaryNode> out;
@@ -87,7 +134,7 @@ std::vector<BoundaryNode> chainLoop(const Model& model, int face, std::size_t l,
     start = 0.5 * (start + end);
   };
   for (std::size_t k = 0; k < loop.uses.size(); ++k) {
-    UseNodes un = useNodes(model, face, l, loop.uses[k], edges);
+    UseNodes un = useNodes(model, face, l, loop.uses[k], edges, mesh);
     if (k > 0) {
       const Vec2 shift = periodic.shiftToward(un.uv.front(), end);
       for (Vec2& p : un.uv) p += shift;
@@ -155,7 +202,7 @@ FaceBoundary faceBoundary(const Model& model, int face, const std::vector<EdgeDi
   out.face = face;
   std::vector<std::vector<Junction>> junctions(f.loops.size());
   for (std::size_t l = 0; l < f.loops.size(); ++l)
-    out.loops.push_back(chainLoop(model, face, l, periodic, edges, junctions[l]));
+    out.loops.push_back(chainLoop(model, face, l, periodic, edges, mesh, junctions[l]));
 
   const double extent = extentDiagonal(f, out.loops);
   for (std::size_t l = 0; l < junctions.size(); ++l)
@@ -166,11 +213,6 @@ FaceBoundary faceBoundary(const Model& model, int face, const std::vector<EdgeDi
           << " for a parametric extent of " << extent << " (the loop is not closed)";
         throw MeshingError(s.str());
       }
-  for (const auto& loop : out.loops)
-    for (const BoundaryNode& n : loop)
-      if (n.node < 0 || static_cast<std::size_t>(n.node) >= mesh.nodes.size())
-        throw MeshingError("face " + std::to_string(face + 1) + ": boundary node " + std::to_string(n.node) +
-                           " is not in the surface mesh");
 
   for (std::size_t l = 0; l < out.loops.size(); ++l)
     alignToBox(out.loops[l], l == 0 ? f.uvBounds : boxOf(out.loops[0]), periodic.period());
