@@ -11,6 +11,15 @@
 // the SurfaceMesh once and shared by all faces using the edge.
 // Degenerate edges (poles) get one node (the vertex's) and are split in (u, v) only, into
 // as many pieces as the face's metric (with the g_min guard) asks for.
+//
+// Precisely: the density along edge e is ρ(t) = max_k |M_k(c_k(t)) c_k'(t)| over its
+// pcurves c_k on meshed faces (M_k = M_s M_p of that face's control space, queried at c_k(t)
+// moved by whole periods into the space's bounds), integrated adaptively
+// (contour/MetricArcLength.h); n = max(1, round(∫ρ)) segments, then raised where needed for
+// a valid boundary: a closed edge gets at least max(3, minSegmentsClosedEdge); of several
+// single-segment edges joining the same two vertices only the shortest stays single; every
+// loop of a meshed face gets at least 3 segments; with evenSegments odd counts get one more.
+// The nodes are at equal metric arc length. Deterministic.
 #include <vector>
 
 #include "mesher/control/ControlSpace2d.h"
@@ -27,25 +36,37 @@ struct EdgeDiscretization {
 
 struct ContourOptions {
   bool evenSegments = false;  ///< --quad
-  int minSegmentsClosedEdge = 3;  ///< a closed edge (v0 == v1) gets at least this many
+  int minSegmentsClosedEdge = 3;  ///< a closed edge (v0 == v1) gets at least this many (never fewer than 3)
 };
 
-/// Discretizes every edge used by a face. `faceSpaces[f]` is the control space of face f
-/// (nullptr for a face that is not meshed). Vertex nodes are created first (one per model
-/// vertex used), then edge nodes. Throws MeshingError naming the edge when its geometry
-/// cannot be evaluated.
+/// Discretizes every edge used by a loop of a meshed face. `faceSpaces[f]` is the control
+/// space of face f (nullptr for a face that is not meshed); one entry per model face.
+/// Vertex nodes are created first (one per model vertex used, in vertex order), then the
+/// inner nodes of every edge (edge order, increasing t; 3D point from the edge's curve,
+/// NodeOn Edge with t). Returns one entry per model edge, empty for edges not discretized.
+/// Throws MeshingError naming the edge when its geometry or metric cannot be evaluated
+/// (no pcurve on a meshed face, empty parameter range, non-finite metric), and for a
+/// faceSpaces of the wrong size.
 std::vector<EdgeDiscretization> discretizeEdges(const Model& model,
                                                 const std::vector<const ControlSpace2d*>& faceSpaces,
                                                 const ContourOptions& options, SurfaceMesh& mesh);
 
 /// The boundary of face f from the edge discretizations (orientation normalised as
-/// FaceBoundary documents).
-FaceBoundary faceBoundary(const Model& model, int face, const std::vector<EdgeDiscretization>& edges,
+/// FaceBoundary documents). Node uv = c_p(t) on the use's pcurve; an inner edge node whose
+/// p(c_p(t)) misses it by more than twice the CAD tolerance (pcurve not parameterized like
+/// the 3D curve) is projected onto p∘c_p instead. On a periodic surface each use is moved
+/// by whole periods to continue the previous one, then each loop as a whole to overlap the
+/// face's uvBounds (outer loop) or the outer loop (holes). Throws MeshingError naming the
+/// face and loop when an edge of the face was not discretized, when consecutive uses do
+/// not share their vertex, or when a junction (the closing one included) stays open in
+/// (u, v) by more than 1% of the face's parametric extent.const Model& model, int face, const std::vector<EdgeDiscretization>& edges,
                           const SurfaceMesh& mesh);
 
 /// Adds a face mesh to the surface mesh: new nodes for the interior vertices (3D point
-/// from the surface), triangles oriented with the face normal; triangles that collapse
-/// in 3D (two corners on the same node, e.g. at a pole) are dropped.
+/// from the surface, NodeOn Face with uv), triangles oriented with the face normal
+/// (flipped for a reversed face) and tagged with the face; triangles that collapse in 3D
+/// (two corners on the same node, e.g. at a pole) are dropped. Throws MeshingError naming
+/// the face for an inconsistent FaceMesh (sizes, indices out of range).
 void addFaceMesh(const Model& model, int face, const FaceMesh& fm, SurfaceMesh& mesh);
 
 }  // namespace aniso
