@@ -76,11 +76,17 @@ class Refiner {
       if (q < opt_.qualityThreshold) push(t, q);
       const std::uint32_t* tv = tri_.triVertices(t);
       const Vec2 &a = tri_.point(VertexId(tv[0])), &b = tri_.point(VertexId(tv[1])), &c = tri_.point(VertexId(tv[2]));
-      double det = std::abs(triMetric_[t].determinant());
-      for (int i = 0; i < 3; ++i) det = std::max(det, std::abs(vertexMetric_[VertexId(tv[i])].determinant()));
-      metricArea += 0.5 * std::abs(cross2(b - a, c - a)) * det;
+      double det = 0;  // the largest finite |det M| of the four samples (unusable metrics skipped)
+      const auto sample = [&det](const Mat2& m) {
+        const double d = std::abs(m.determinant());
+        if (std::isfinite(d)) det = std::max(det, d);
+      };
+      sample(triMetric_[t]);
+      for (int i = 0; i < 3; ++i) sample(vertexMetric_[VertexId(tv[i])]);
+      const double area = 0.5 * std::abs(cross2(b - a, c - a)) * det;
+      if (std::isfinite(area)) metricArea += area;
     }
-    stats_.predictedTriangles = metricArea / kIdealTriangleArea;
+    stats_.predictedTriangles = std::isfinite(metricArea) ? metricArea / kIdealTriangleArea : 1e12;
     const double limit =
         opt_.insertionLimitFactor * std::min(stats_.predictedTriangles, 1e12) + static_cast<double>(opt_.insertionLimitExtra);
     stats_.insertionLimit = static_cast<std::size_t>(std::min(limit, 4e9));
