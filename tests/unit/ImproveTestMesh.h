@@ -187,8 +187,8 @@ inline std::vector<Vec2> unitMeshPoints(const Mat2& m, std::uint64_t seed) {
 }
 
 /// The unit square meshed for the constant transformation m: boundary spacing ≈ 1 in
-/// metric, random interior points.
-inline TestFace squareFace(const Mat2& m, std::uint64_t seed) {
+/// metric, random interior points, Delaunay for the transformation `delaunay`.
+inline TestFace squareFace(const Mat2& m, std::uint64_t seed, const Mat2& delaunay) {
   const int nx = segmentsAlong(m, Vec2(1, 0)), ny = segmentsAlong(m, Vec2(0, 1));
   // Square with nx segments along u and ny along v (polygon edges split evenly per side).
   std::vector<Vec2> poly;
@@ -196,7 +196,9 @@ inline TestFace squareFace(const Mat2& m, std::uint64_t seed) {
   for (int k = 0; k < ny; ++k) poly.emplace_back(1, double(k) / ny);
   for (int k = 0; k < nx; ++k) poly.emplace_back(1 - double(k) / nx, 1);
   for (int k = 0; k < ny; ++k) poly.emplace_back(0, 1 - double(k) / ny);
-  return buildFace(poly, 1, unitMeshPoints(m, seed), m);
+  return buildFace(poly, 1, unitMeshPoints(m, seed), delaunay);
 }
+/// Same, Delaunay in the metric itself.
+inline TestFace squareFace(const Mat2& m, std::uint64_t seed) { return squareFace(m, seed, m); }
 
 }  // namespace improve_test

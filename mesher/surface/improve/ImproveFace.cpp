@@ -15,7 +15,7 @@ ImproveStats improveFaceMesh(del2d::Triangulation2d& tri, const ControlSpace2d& 
                              const std::vector<std::uint8_t>& fixed, const ImproveOptions& options) {
   if (options.passes < 0 || options.smoothingIterations < 0 || !std::isfinite(options.lowGradation) ||
       !(options.swapAngleTolerance >= 0) || !std::isfinite(options.swapAngleTolerance) ||
-      !std::isfinite(options.badQuality))
+      !std::isfinite(options.badQuality) || !(options.smoothingQualityFloor <= 1))
     throw MeshingError("improveFaceMesh: invalid options");
   if (fixed.size() < tri.numVertices())
     throw MeshingError("improveFaceMesh: fewer fixed flags than vertices");
@@ -24,6 +24,8 @@ ImproveStats improveFaceMesh(del2d::Triangulation2d& tri, const ControlSpace2d& 
   improve::SmoothingOptions smoothing;
   smoothing.iterations = options.smoothingIterations;
   smoothing.lowGradation = options.lowGradation;
+  smoothing.qualityFloor = options.smoothingQualityFloor;
+  smoothing.metricSize = options.smoothingMetricSize;
   improve::TopologicalSwapOptions topological;
   topological.lowGradation = options.lowGradation;
   topological.angleTolerance = options.swapAngleTolerance;

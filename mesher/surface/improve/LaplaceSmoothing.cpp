@@ -1,6 +1,7 @@
 #include "mesher/surface/improve/LaplaceSmoothing.h"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "mesher/core/Error.h"
@@ -19,7 +20,7 @@ struct Star {
 
 /// Eq. 4.2 or 4.3 (see the header).
 Vec2 laplaceTarget(const VertexMetricCache& metrics, VertexId q, const Vec2& pq, const Star& star,
-                   bool metricVersion) {
+                   bool metricVersion, bool metricSize) {
   const std::size_t n = star.ring.size();
   Vec2 sum = Vec2::Zero();
   if (!metricVersion) {
@@ -27,9 +28,11 @@ Vec2 laplaceTarget(const VertexMetricCache& metrics, VertexId q, const Vec2& pq,
     return sum / static_cast<double>(n);
   }
   const Mat2& invQ = metrics.inverse(q);
+  const double detQ = metrics.transform(q).determinant();
   for (std::size_t i = 0; i < n; ++i) {
-    const Mat2 mid = 0.5 * (invQ + metrics.inverse(star.ring[i]));  // M⁻¹ at the middle (2.18)
-    sum += mid.inverse() * (star.p[i] - pq);
+    Mat2 mid = (0.5 * (invQ + metrics.inverse(star.ring[i]))).inverse();  // eq. 2.18 at the middle
+    if (!metricSize) mid *= std::sqrt(detQ / mid.determinant());          // Q's size, the mid shape
+    sum += mid * (star.p[i] - pq);
   }
   return pq + invQ * (sum / static_cast<double>(n));
 }
@@ -61,6 +64,8 @@ SmoothingStats laplaceSmoothing(Triangulation2d& tri, const VertexMetricCache& m
                                 const SmoothingOptions& options) {
   if (metrics.size() != tri.numVertices())
     throw MeshingError("laplaceSmoothing: the metric cache does not match the triangulation");
+  if (options.iterations < 0 || !(options.qualityFloor <= 1) || std::isnan(options.lowGradation))
+    throw MeshingError("laplaceSmoothing: invalid options");
   SmoothingStats st;
   Star star;
   star.ring.reserve(32), star.p.reserve(32), star.mp.reserve(32);
@@ -80,14 +85,14 @@ SmoothingStats laplaceSmoothing(Triangulation2d& tri, const VertexMetricCache& m
       const Vec2 q = tri.point(v);
       const bool metricVersion = metrics.gradation(v) > options.lowGradation;
       st.metricVersion += metricVersion;
-      const Vec2 target = laplaceTarget(metrics, v, q, star, metricVersion);
+      const Vec2 target = laplaceTarget(metrics, v, q, star, metricVersion, options.metricSize);
       if (!target.allFinite() || target == q) continue;
-      const double before = starQuality(star, s * q);
+      const double required = std::min(starQuality(star, s * q), options.qualityFloor);
       bool accepted = false;
       for (const double step : {1.0, 0.5}) {
         const Vec2 p = q + step * (target - q);
         if (p == q) break;
-        if (starQuality(star, s * p) < before || !starValid(star, p)) continue;
+        if (starQuality(star, s * p) < required || !starValid(star, p)) continue;
         moveVertex(tri, v, p);
         ++st.moved;
         st.halved += step < 1.0;

@@ -20,7 +20,7 @@
 namespace aniso::improve {
 
 struct PostprocessOptions {
-  double badQuality = 0.4;
+  double badQuality = 0.6;
   int rounds = 3;
   int vertexIterations = 6;
 };
