@@ -59,7 +59,8 @@ std::vector<EdgeDiscretization> discretizeEdges(const Model& model,
 /// face's uvBounds (outer loop) or the outer loop (holes). Throws MeshingError naming the
 /// face and loop when an edge of the face was not discretized, when consecutive uses do
 /// not share their vertex, or when a junction (the closing one included) stays open in
-/// (u, v) by more than 1% of the face's parametric extent.const Model& model, int face, const std::vector<EdgeDiscretization>& edges,
+/// (u, v) by more than 1% of the face's parametric extent.
+FaceBoundary faceBoundary(const Model& model, int face, const std::vector<EdgeDiscretization>& edges,
                           const SurfaceMesh& mesh);
 
 /// Adds a face mesh to the surface mesh: new nodes for the interior vertices (3D point
