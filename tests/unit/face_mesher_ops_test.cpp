@@ -15,6 +15,7 @@
 #include "mesher/surface/face/Refinement.h"
 #include "mesher/surface/face/ValidateFaceMesh.h"
 #include "mesher/surface/face/VisibleWalk.h"
+#include "mesher/surface/improve/ImproveFace.h"
 #include "tests/unit/face_mesher_fixtures.h"
 
 using namespace aniso;
@@ -183,6 +184,18 @@ TEST(FaceOperators, PipelineKeepsTheTriangulationValid) {
     bad += triangleQuality(Mat2::Identity() / h, p0, p1, p2) < 0.58;
   }
   EXPECT_LT(bad, live / 20);
+  // The last pipeline step keeps the triangulation valid and the boundary constrained.
+  std::vector<std::uint8_t> fixed(tri.numVertices(), 0);
+  for (const VertexId v : bt.vertexOf) fixed[v.index] = 1;
+  improveFaceMesh(tri, *cs, fixed);
+  EXPECT_TRI_VALID(tri, del2d::ValidateOptions{});
+  for (std::uint32_t k = 0; k < flat.size(); ++k) {
+    TriId t;
+    int i = 0;
+    ASSERT_TRUE(tri.findEdge(bt.vertexOf[k], bt.vertexOf[flat.next[k]], t, i));
+    EXPECT_TRUE(tri.isConstrained(t, i));
+    EXPECT_EQ(tri.point(bt.vertexOf[k]), flat.uv[k]);
+  }
 }
 
 TEST(FaceOperators, RefinementStopsAtTheInsertionLimit) {
