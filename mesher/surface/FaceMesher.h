@@ -13,7 +13,8 @@
 //     (holes, inner loops, seams, poles);
 //   4 refinement (4.5): heap of triangles by q(K) = S_oI / S_oK (eq. 4.1) below q_t, and
 //     of edges with l_M > 1.5; MLE then CCS insertion (mixed), with the cancellation rules
-//     (point outside the face, too close to an existing vertex in metric, metric jump);
+//     (point outside the face, too close to an existing vertex or to a contour in metric,
+//     metric jump), at most 4 NT_p + 1000 insertions (eq. 6.2);
 //   5 improvement (4.6, improveFaceMesh): smoothing and swaps, N_imp passes.
 // Boundary vertices never move and boundary edges are never flipped or split: the face
 // mesh conforms exactly to the given boundary, so neighbouring faces stay conforming.
@@ -56,8 +57,13 @@ struct FaceMeshResult {
 };
 
 /// Meshes one face. `cs` must cover the boundary's (u, v) box. Thread-safe for different
-/// faces (cs is only read). Never throws for a meshing failure: it is reported in
-/// `problems`; throws MeshingError only for invalid input (e.g. a loop with < 2 nodes).
+/// faces (cs is only read). Deterministic (fixed-seed insertion order, index-ordered heap).
+/// Never throws for a meshing failure: it is reported in `problems`, naming the boundary
+/// nodes involved — two nodes at the same (u, v), a boundary edge passing through a node
+/// or crossing another boundary edge, loops that do not bound a region (orientation,
+/// nesting), an exception of the control space — and the mesh is then empty. Throws
+/// MeshingError only for invalid input: no loop, a loop with < 2 nodes, a non-finite (u, v).
+/// Implementation: mesher/surface/face/ (one operator per file), improvement last.
 FaceMeshResult meshFace(const FaceBoundary& boundary, const ControlSpace2d& cs,
                         const FaceMesherOptions& options = {});
 
