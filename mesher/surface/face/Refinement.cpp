@@ -41,7 +41,8 @@ double segmentDistance(const Mat2& m, const Vec2& p, const Vec2& x, const Vec2& 
 class Refiner {
  public:
   Refiner(Triangulation2d& tri, const ControlSpace2d& cs, const RefineOptions& opt)
-      : tri_(tri), cs_(cs), opt_(opt), vertexMetric_(tri, Mat2::Identity()), triMetric_(tri, Mat2::Identity()), stamp_(tri, 0u) {}
+      : tri_(tri), cs_(cs), opt_(opt), vertexMetric_(tri, Mat2::Identity()), triMetric_(tri, Mat2::Identity()),
+        stamp_(tri, 0u) {}
 
   RefineStats run() {
     initialise();
@@ -87,8 +88,8 @@ class Refiner {
       if (std::isfinite(area)) metricArea += area;
     }
     stats_.predictedTriangles = std::isfinite(metricArea) ? metricArea / kIdealTriangleArea : 1e12;
-    const double limit =
-        opt_.insertionLimitFactor * std::min(stats_.predictedTriangles, 1e12) + static_cast<double>(opt_.insertionLimitExtra);
+    const double limit = opt_.insertionLimitFactor * std::min(stats_.predictedTriangles, 1e12) +
+                         static_cast<double>(opt_.insertionLimitExtra);
     stats_.insertionLimit = static_cast<std::size_t>(std::min(limit, 4e9));
     const auto expected = static_cast<std::size_t>(std::min(stats_.predictedTriangles, 2e8));
     tri_.reserve(tri_.numVertices() + expected / 2 + 16, tri_.triangleSlots() + expected + 16);
