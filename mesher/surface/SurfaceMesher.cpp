@@ -10,6 +10,7 @@
 #include "mesher/core/Error.h"
 #include "mesher/core/Log.h"
 #include "mesher/metric/MeanRatio.h"
+#include "mesher/sizing/BoundaryUpdate.h"
 #include "mesher/sizing/FaceControlSpace.h"
 #include "mesher/surface/ContourDiscretization.h"
 
@@ -99,16 +100,41 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
   }, "control spaces");
   r.times.emplace_back("control_space", since(t));
 
-  // 2: edges.
+  // 2: edges, and the updates of alg. 3.1 from the discretized boundaries (segment
+  // lengths, vicinity), repeated until no control space changes (at most kRounds times).
   t = Clock::now();
   std::vector<const ControlSpace2d*> cs(nf, nullptr);
   for (int f = 0; f < nf; ++f) cs[f] = spaces[f].get();
   ContourOptions copt;
   copt.evenSegments = in.options.quad;
-  const std::vector<EdgeDiscretization> edges = discretizeEdges(model, cs, copt, r.mesh);
+  // The boundary sources follow the geometry (a CAD edge shorter than h_min, a strip
+  // narrower than h_min): they may go below the h_min of the curvature sizing.
+  const double hMin = 1e-9 * model.diagonal();
+  constexpr int kRounds = 8;
+  std::vector<EdgeDiscretization> edges;
   std::vector<FaceBoundary> boundaries(nf);
-  for (int f = 0; f < nf; ++f)
-    if (cs[f]) boundaries[f] = faceBoundary(model, f, edges, r.mesh);
+  for (int round = 0;; ++round) {
+    SurfaceMesh trial;
+    edges = discretizeEdges(model, cs, copt, trial);
+    for (int f = 0; f < nf; ++f)
+      if (cs[f]) boundaries[f] = faceBoundary(model, f, edges, trial);
+    std::atomic<int> updates{0};
+    if (round < kRounds) {
+      parallelFor(nf, in.options.threads, [&](int f) {
+        if (!cs[f]) return;
+        const BoundaryUpdateStats u = updateFromBoundary(*spaces[f], boundaries[f], in.options.sizing, hMin);
+        if (u.total() == 0) return;
+        spaces[f]->smoothGradation(in.options.sizing.gradation);
+        updates += u.total();
+      }, "boundary sizing");
+    }
+    if (updates == 0) {
+      r.mesh = std::move(trial);
+      break;
+    }
+    logDebug("boundary sizing round " + std::to_string(round + 1) + ": " + std::to_string(updates.load()) +
+             " sources");
+  }
   r.times.emplace_back("contours", since(t));
 
   // 3: faces.
