@@ -7,7 +7,9 @@
 // and 6 at once: all faces share the edge parameter t, OCCT's SameParameter). The number
 // of segments is n = max(1, round(∫ρ)), raised by the rules below, and the nodes are placed
 // at equal metric arc length (steps 2–3: the remainder of the last unit step spread over
-// all segments). Node creation order: vertex nodes (vertex order), then the inner nodes of
+// all segments). A degenerate edge (pole) is measured along its pcurve moved one mesh size
+// into the face (see poleDensity), so the pole gets a ring of about 2π·r/h pieces for the
+// face mesher to fan from, instead of the single piece its g_min-guarded length gives. Node creation order: vertex nodes (vertex order), then the inner nodes of
 // every edge (edge order, increasing t).
 //
 // Segment-count rules, each needed for a valid boundary:
@@ -46,7 +48,21 @@ struct PCurveMetric {
   const ParametricCurve2d* curve = nullptr;
   const ControlSpace2d* cs = nullptr;
   contour::PeriodicUv periodic;
+  /// Degenerate edges: the face's side of the pcurve, +1 left of c_p', −1 right, 0 unknown
+  /// (both sides are measured).
+  int inward = 0;
+  Vec2 boundsSize{0, 0};
 };
+
+/// The side of pcurve k of edge e on which face f lies, from the edge's use in f's loops:
+/// the face is on the left of the walking direction unless the face is reversed.
+int inwardSide(const Model& model, int e, int k, int f) {
+  const ModelFace& face = model.faces[f];
+  for (const Loop& loop : face.loops)
+    for (const EdgeUse& u : loop.uses)
+      if (u.edge == e && u.pcurve == k) return (u.reversed ? -1 : 1) * (face.reversed ? -1 : 1);
+  return 0;
+}
 
 /// Edges used in a loop of a meshed face (checking the references on the way).
 std::vector<char> usedEdges(const Model& model, const std::vector<const ControlSpace2d*>& spaces) {
@@ -68,15 +84,51 @@ std::vector<PCurveMetric> meshedPCurves(const Model& model, int e,
                                         const std::vector<const ControlSpace2d*>& spaces) {
   const ModelEdge& ed = model.edges[e];
   std::vector<PCurveMetric> out;
-  for (const PCurve& pc : ed.pcurves) {
+  for (std::size_t k = 0; k < ed.pcurves.size(); ++k) {
+    const PCurve& pc = ed.pcurves[k];
     if (pc.face < 0 || static_cast<std::size_t>(pc.face) >= model.faces.size() || !spaces[pc.face]) continue;
     const ModelFace& face = model.faces[pc.face];
     if (!pc.curve || !face.surface)
       throw MeshingError(edgeName(e) + ": missing pcurve or surface on face " + std::to_string(pc.face + 1));
-    out.push_back({pc.curve.get(), spaces[pc.face], contour::PeriodicUv(face.surface->domain(), spaces[pc.face]->bounds())});
+    const Box2 bounds = spaces[pc.face]->bounds();
+    PCurveMetric m;
+    m.curve = pc.curve.get();
+    m.cs = spaces[pc.face];
+    m.periodic = contour::PeriodicUv(face.surface->domain(), bounds);
+    m.inward = ed.degenerate ? inwardSide(model, e, static_cast<int>(k), pc.face) : 0;
+    m.boundsSize = bounds.size();
+    out.push_back(m);
   }
   if (out.empty()) throw MeshingError(edgeName(e) + ": no pcurve on any meshed face that uses it");
   return out;
+}
+
+/// Metric density |M(c(t)) c'(t)| of one pcurve.
+double pcurveDensity(const PCurveMetric& pc, const Vec2& uv, const Vec2& d1) {
+  return (pc.cs->getMetric(pc.periodic.intoBounds(uv)).transformation() * d1).norm();
+}
+
+/// A degenerate edge (a pole) has no length in 3D and almost none in the metric (only the
+/// g_min guard of M_p): split by that alone it would get one piece, and the face mesher
+/// would then fan the pole from one or two nodes, folding the triangles around it in 3D.
+/// It is measured instead along its pcurve moved one mesh size into the face (δ(t) =
+/// 1/|M n| along the inward unit normal n, at most half the face's extent): the ring of
+/// nodes around the pole, about 2π/h·h ≈ 6 pieces on a smooth pole whatever the size.
+double poleDensity(const PCurveMetric& pc, const Vec2& uv, const Vec2& d1) {
+  double rho = pcurveDensity(pc, uv, d1);
+  const double speed = d1.norm();
+  if (!(speed > 0) || !std::isfinite(speed)) return rho;
+  const Vec2 left(-d1.y() / speed, d1.x() / speed);
+  const Mat2 m = pc.cs->getMetric(pc.periodic.intoBounds(uv)).transformation();
+  for (int side : {-1, 1}) {
+    if (pc.inward != 0 && side != pc.inward) continue;
+    const Vec2 n = side * left;
+    const double extent = std::abs(n.x()) * pc.boundsSize.x() + std::abs(n.y()) * pc.boundsSize.y();
+    const double delta = std::min(1 / (m * n).norm(), 0.5 * extent);
+    if (!(delta > 0) || !std::isfinite(delta)) continue;
+    rho = std::max(rho, pcurveDensity(pc, uv + delta * n, d1));
+  }
+  return rho;
 }
 
 /// Parameter range of the discretization: the edge's, along the first meshed pcurve for a
@@ -92,12 +144,12 @@ std::array<double, 2> edgeRange(const Model& model, int e, const std::vector<con
 contour::MetricArcLength edgeArcLength(const Model& model, int e,
                                        const std::vector<const ControlSpace2d*>& spaces) {
   const std::vector<PCurveMetric> pcs = meshedPCurves(model, e, spaces);
-  const auto density = [&pcs](double t) {
+  const bool pole = model.edges[e].degenerate;
+  const auto density = [&pcs, pole](double t) {
     double rho = 0;
     for (const PCurveMetric& pc : pcs) {
       const Curve2dD2 d = pc.curve->d2(t);
-      const Mat2 m = pc.cs->getMetric(pc.periodic.intoBounds(d.p)).transformation();
-      const double r = (m * d.d1).norm();
+      const double r = pole ? poleDensity(pc, d.p, d.d1) : pcurveDensity(pc, d.p, d.d1);
       if (!std::isfinite(r)) return r;  // reported by MetricArcLength
       rho = std::max(rho, r);
     }

@@ -10,7 +10,9 @@
 // (for quad meshes). Its nodes (the two vertex nodes and the inner nodes) are created in
 // the SurfaceMesh once and shared by all faces using the edge.
 // Degenerate edges (poles) get one node (the vertex's) and are split in (u, v) only, into
-// as many pieces as the face's metric (with the g_min guard) asks for.
+// as many pieces as the face's metric asks for one mesh size away from the pole (at the
+// pole itself only the g_min guard of M_p gives it a length, which would leave the face
+// mesher one piece to fan from and fold the triangles around the pole in 3D).
 //
 // Precisely: the density along edge e is ρ(t) = max_k |M_k(c_k(t)) c_k'(t)| over its
 // pcurves c_k on meshed faces (M_k = M_s M_p of that face's control space, queried at c_k(t)

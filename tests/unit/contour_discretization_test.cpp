@@ -194,9 +194,9 @@ TEST(ContourDiscretization, ParallelEdgesDoNotBothStaySingle) {
 
 TEST(ContourDiscretization, PolesAreSplitInTheParametricPlaneOnly) {
   const Model m = sphere(1);
-  // g_min = 0.04: M_p at a pole maps a unit of u to 0.2, so a pole edge (2π in u) in a size
-  // of 0.2 is 2π long in the metric: 6 pieces.
-  const Discretized r(m, {isotropic(0.2)}, {}, 0.04);
+  // A pole is measured one mesh size (0.2 in v) into the face: the ring at colatitude 0.2
+  // is 2π sin 0.2 long, 6.2 sizes of 0.2: 6 pieces, all on the vertex node.
+  const Discretized r(m, {isotropic(0.2)}, {}, 1e-8);
   for (int e : {1, 2}) {
     const EdgeDiscretization& d = r.edges[e];
     ASSERT_EQ(segments(d), 6) << e;
@@ -209,9 +209,10 @@ TEST(ContourDiscretization, PolesAreSplitInTheParametricPlaneOnly) {
   EXPECT_EQ(segments(seam), 16);
   for (int n : seam.nodes) EXPECT_NEAR(r.mesh.nodes[n].norm(), 1.0, 1e-12);
   EXPECT_EQ(r.mesh.nodes.size(), 2u + 15);  // no node for the pole pieces
-  // A tiny guard keeps the pole to a single piece.
-  const Discretized tiny(m, {isotropic(0.2)}, {}, 1e-8);
-  EXPECT_EQ(segments(tiny.edges[1]), 1);
+  // About 2π pieces whatever the size (2π sin(h)/h), and never fewer than the g_min guard
+  // asks for at the pole itself (√g_min = 2 per unit of u in a size of 0.2: 63 pieces).
+  EXPECT_EQ(segments(Discretized(m, {isotropic(0.01)}, {}, 1e-8).edges[1]), 6);
+  EXPECT_EQ(segments(Discretized(m, {isotropic(0.2)}, {}, 0.16).edges[1]), 13);
 }
 
 TEST(ContourDiscretization, OnlyEdgesOfMeshedFaces) {
