@@ -10,8 +10,10 @@
 #include "mesher/core/Error.h"
 #include "mesher/surface/improve/FaceQuality.h"
 #include "mesher/surface/improve/ImproveFace.h"
+#include "mesher/surface/improve/VertexMetricCache.h"
 
 using namespace improve_test;
+using aniso::improve::VertexMetricCache;
 
 namespace {
 
@@ -168,4 +170,53 @@ TEST(ImproveFace, RejectsBadInput) {
   o.postprocess = false;
   improveFaceMesh(f.tri, cs, f.fixed, o);
   EXPECT_EQ(allPoints(f.tri), before);
+}
+
+TEST(ImproveFace, PoleTrianglesAreLeftAlone) {
+  // A sphere-like pole along v = 1: M_p shrinks the u direction to the g_min guard, so the
+  // top boundary edges have (almost) no metric length; one 3D point in the surface.
+  const FunctionCS cs(box(0, 0, 1, 1), [](const Vec2& p) {
+    Mat2 mp = Mat2::Identity();
+    mp(0, 0) = std::max(1 - p.y(), 1e-4);
+    return SurfaceMetricAt{Metric2d::isotropic(0.04), mp};
+  });
+  std::vector<Vec2> poly;
+  for (int k = 0; k < 25; ++k) poly.emplace_back(k / 25.0, 0);
+  for (int k = 0; k < 25; ++k) poly.emplace_back(1, k / 25.0);
+  for (int k = 0; k < 6; ++k) poly.emplace_back(1 - k / 6.0, 1);  // the pole: 6 pieces
+  for (int k = 0; k < 25; ++k) poly.emplace_back(0, 1 - k / 25.0);
+  TestFace f = buildFace(poly, 1, randomPoints(500, 71, 0.01, 0.99), Mat2::Identity());
+  // The triangles touching a pole vertex, as sorted vertex triples with coordinates.
+  auto poleTriangles = [&](const Triangulation2d& tri) {
+    std::vector<std::array<std::uint32_t, 3>> out;
+    for (std::uint32_t k = 0; k < tri.triangleSlots(); ++k) {
+      const TriId t(k);
+      if (!tri.isAlive(t)) continue;
+      std::array<std::uint32_t, 3> v{tri.vertex(t, 0).index, tri.vertex(t, 1).index, tri.vertex(t, 2).index};
+      bool pole = false;
+      for (std::uint32_t x : v) pole = pole || tri.point(VertexId(x)).y() == 1.0;
+      std::sort(v.begin(), v.end());
+      if (pole) out.push_back(v);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  VertexMetricCache metrics;
+  metrics.update(f.tri, cs, f.fixed);
+  int poleVertices = 0;
+  for (VertexId v : f.boundary) {
+    const bool onPole = f.tri.point(v).y() == 1.0;
+    EXPECT_EQ(metrics.onDegenerateEdge(v), onPole) << f.tri.point(v).transpose();
+    poleVertices += onPole;
+  }
+  EXPECT_EQ(poleVertices, 7);
+  const auto before = poleTriangles(f.tri);
+  const std::vector<Vec2> points = allPoints(f.tri);
+  const ImproveStats st = improveFaceMesh(f.tri, cs, f.fixed);
+  EXPECT_TRI_VALID(f.tri);
+  EXPECT_GT(st.moves, 0);
+  EXPECT_GT(st.geometricSwaps + st.topologicalSwaps, 0);
+  EXPECT_EQ(poleTriangles(f.tri), before);
+  for (const auto& t : before)
+    for (std::uint32_t v : t) EXPECT_EQ(f.tri.point(VertexId(v)), points[v]);
 }

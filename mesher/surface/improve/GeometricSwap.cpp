@@ -68,7 +68,7 @@ GeometricSwapStats geometricSwap(Triangulation2d& tri, const VertexMetricCache& 
       const TriId t(ti);
       for (int i = 0; i < 3; ++i) {
         const TriId u = tri.neighbour(t, i);
-        if (!u.valid() || tri.isConstrained(t, i)) continue;
+        if (!u.valid() || tri.isConstrained(t, i) || metrics.edgeFrozen(tri, t, i)) continue;
         ++st.checked;
         if (!violatesSwapCriterion(tri, metrics, t, i, options.angleTolerance)) continue;
         const del2d::FlipPlan plan = del2d::canFlip(tri, t, i);

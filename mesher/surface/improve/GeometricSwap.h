@@ -6,7 +6,8 @@
 // The metric of each quadrilateral is computed independently (sec. 4.2.2, last paragraph:
 // the "more local variation" used during mesh improvement): the blend of the cached
 // metrics of its four vertices (VertexMetricCache::blend, the same for both diagonals,
-// so the criterion cannot prefer both). Check, then change: the criterion first, then
+// so the criterion cannot prefer both). Edges of frozen triangles (touching a pole,
+// VertexMetricCache) are not swapped. Check, then change: the criterion first, then
 // del2d::canFlip (never a constrained edge, only strictly convex quadrilaterals), then
 // del2d::flip.
 //

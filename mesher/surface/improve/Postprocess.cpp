@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "mesher/core/Error.h"
@@ -17,6 +18,7 @@ using del2d::kPrev;
 
 /// Flips edge i of t when that raises the worse η_M of the pair.
 bool qualityFlip(Triangulation2d& tri, const VertexMetricCache& metrics, TriId t, int i) {
+  if (metrics.edgeFrozen(tri, t, i)) return false;
   const del2d::FlipPlan plan = del2d::canFlip(tri, t, i);
   if (!plan.legal) return false;
   const VertexId q[4] = {plan.a, plan.b, plan.c, plan.d};
@@ -40,7 +42,7 @@ bool qualityFlip(Triangulation2d& tri, const VertexMetricCache& metrics, TriId t
 bool relocateAndFlip(Triangulation2d& tri, const VertexMetricCache& metrics, TriId t, int i, int which,
                      std::vector<VertexId>& ring, std::vector<Vec2>& p) {
   const TriId u = tri.neighbour(t, i);
-  if (!u.valid() || tri.isConstrained(t, i)) return false;
+  if (!u.valid() || tri.isConstrained(t, i) || metrics.edgeFrozen(tri, t, i)) return false;
   const int j = tri.neighbourIndex(u, t);
   if (j < 0) return false;
   const VertexId a = tri.vertex(t, i), b = tri.vertex(t, kNext[i]), c = tri.vertex(t, kPrev[i]), d = tri.vertex(u, j);
@@ -71,12 +73,17 @@ bool relocateAndFlip(Triangulation2d& tri, const VertexMetricCache& metrics, Tri
   Vec2 sum = Vec2::Zero();
   for (const Vec2& y : p) sum += y;
   const Vec2 x = sum / static_cast<double>(m);
-  double after = 2.0;
+  double after = 2.0, turn = 0.0;
   for (std::size_t k = 0; k < m; ++k) {
     const Vec2 &y = p[k], &z = p[k + 1 == m ? 0 : k + 1];
     if (!(predicates::orient2d(x.data(), y.data(), z.data()) > 0)) return false;
     after = std::min(after, meanRatio(s, x, y, z));
+    const Vec2 e = y - x, f = z - x;
+    turn += std::atan2(e.x() * f.y() - e.y() * f.x(), e.dot(f));
   }
+  // The new ring is not the link of an old vertex and need not be a simple polygon: with
+  // every fan triangle counter-clockwise it is one exactly when it winds once around x.
+  if (turn > 3 * std::numbers::pi) return false;
   // The new triangle without v, when v is an endpoint of the old edge.
   if (v == b || v == c) {
     const Vec2 &e0 = tri.point(a), &e1 = v == b ? tri.point(d) : tri.point(b), &e2 = v == b ? tri.point(c) : tri.point(d);
@@ -173,7 +180,8 @@ PostprocessStats postprocess(Triangulation2d& tri, const VertexMetricCache& metr
     long long changes = 0;
     for (std::uint32_t ti = 0; ti < tri.triangleSlots(); ++ti) {
       const TriId t(ti);
-      if (!tri.isAlive(t) || !(triangleQuality(tri, metrics, t) < options.badQuality)) continue;
+      if (!tri.isAlive(t) || metrics.frozen(tri, t) || !(triangleQuality(tri, metrics, t) < options.badQuality))
+        continue;
       bool flipped = false;
       for (int i = 0; i < 3 && !flipped; ++i) flipped = qualityFlip(tri, metrics, t, i);
       for (int i = 0; i < 3 && !flipped; ++i)

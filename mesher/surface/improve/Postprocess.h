@@ -3,7 +3,8 @@
 // any mesh element with very bad quality, which may have been left by previous operations".
 //
 // A triangle is bad when its η_M (metric: the blend of its vertices' cached metrics,
-// VertexMetricCache::blend) is below badQuality. Each round visits the triangle slots in
+// VertexMetricCache::blend) is below badQuality; frozen triangles (touching a pole,
+// VertexMetricCache) are left alone, and no flip touches one. Each round visits the triangle slots in
 // index order; for a bad triangle it tries, in turn:
 //   1. quality flips of its three edges: an edge is flipped (del2d::canFlip: convex,
 //      never constrained) when the smaller η_M of the two new triangles exceeds the smaller

@@ -47,7 +47,7 @@ TopologicalSwapStats topologicalSwap(Triangulation2d& tri, const VertexMetricCac
     if (!tri.isAlive(t)) continue;
     for (int i = 0; i < 3; ++i) {
       const TriId u = tri.neighbour(t, i);
-      if (!u.valid() || u.index < ti || tri.isConstrained(t, i)) continue;
+      if (!u.valid() || u.index < ti || tri.isConstrained(t, i) || metrics.edgeFrozen(tri, t, i)) continue;
       ++st.checked;
       const int j = tri.neighbourIndex(u, t);
       if (j < 0) continue;

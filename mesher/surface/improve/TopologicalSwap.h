@@ -5,7 +5,8 @@
 //      constrained edges), and
 //   2. NE(P1) + NE(P3) > NE(P2) + NE(P4) + 2,
 // only where the metric gradation is low (all four vertices' g ≤ lowGradation,
-// VertexMetricCache), so as not to destroy the gradation of the mesh. Each edge is checked
+// VertexMetricCache), so as not to destroy the gradation of the mesh, and never at a
+// frozen triangle (touching a pole, VertexMetricCache). Each edge is checked
 // once per call (triangle slots in index order, each interior edge from its lower-index
 // triangle).
 //

@@ -59,10 +59,29 @@ void VertexMetricCache::update(const Triangulation2d& tri, const ControlSpace2d&
   angle_.assign(n, 0.0);
   ideal_.assign(n, 6);
   flags_.assign(n, 0);
+  classifyTopology(tri);
+  for (std::size_t v = 0; v < n; ++v) {  // one control-space evaluation per used vertex
+    if (!(flags_[v] & kUsed)) continue;
+    const Mat2 m = cs.getMetric(tri.point(VertexId(static_cast<std::uint32_t>(v)))).transformation();
+    if (symmetricTransform(m, s_[v])) inv_[v] = inverse2(s_[v]);
+    else flags_[v] |= kBadMetric, s_[v] = Mat2::Identity();
+  }
+  substituteUnusable(tri);
+  measureNeighbourhoods(tri);
+  markDegenerateEdges(tri);
+  for (std::size_t v = 0; v < n; ++v) {
+    const std::uint8_t f = flags_[v];
+    if (f & kOpen) {
+      const long sectors = std::lround(angle_[v] / (std::numbers::pi / 3));
+      ideal_[v] = static_cast<int>(std::max(1L, sectors)) + 1;
+    }
+    const std::uint8_t holds = kOpen | kConstrained | kBadMetric | kDegenerate | kNearDegenerate;
+    if ((f & kUsed) && fixed[v] == 0 && !(f & holds)) flags_[v] |= kMovable;
+  }
+}
 
-  // Used vertices, border (open star) and constrained edges.
-  const std::size_t slots = tri.triangleSlots();
-  for (std::uint32_t ti = 0; ti < slots; ++ti) {
+void VertexMetricCache::classifyTopology(const Triangulation2d& tri) {
+  for (std::uint32_t ti = 0; ti < tri.triangleSlots(); ++ti) {
     const TriId t(ti);
     if (!tri.isAlive(t)) continue;
     const std::uint32_t* tv = tri.triVertices(t);
@@ -75,15 +94,11 @@ void VertexMetricCache::update(const Triangulation2d& tri, const ControlSpace2d&
       flags_[tv[kPrev[i]]] |= edgeFlags;
     }
   }
-  // One control-space evaluation per used vertex.
-  for (std::size_t v = 0; v < n; ++v) {
-    if (!(flags_[v] & kUsed)) continue;
-    const Mat2 m = cs.getMetric(tri.point(VertexId(static_cast<std::uint32_t>(v)))).transformation();
-    if (symmetricTransform(m, s_[v])) inv_[v] = inverse2(s_[v]);
-    else flags_[v] |= kBadMetric, s_[v] = Mat2::Identity();
-  }
-  // Unusable metrics: the first usable neighbour's, visiting the triangles by index.
-  for (std::uint32_t ti = 0; ti < slots; ++ti) {
+}
+
+void VertexMetricCache::substituteUnusable(const Triangulation2d& tri) {
+  // The first usable neighbour's metric, visiting the triangles by index.
+  for (std::uint32_t ti = 0; ti < tri.triangleSlots(); ++ti) {
     const TriId t(ti);
     if (!tri.isAlive(t)) continue;
     const std::uint32_t* tv = tri.triVertices(t);
@@ -97,8 +112,11 @@ void VertexMetricCache::update(const Triangulation2d& tri, const ControlSpace2d&
       }
     }
   }
+}
+
+void VertexMetricCache::measureNeighbourhoods(const Triangulation2d& tri) {
   // Gradation over the unique edges; metric angles of the border vertices.
-  for (std::uint32_t ti = 0; ti < slots; ++ti) {
+  for (std::uint32_t ti = 0; ti < tri.triangleSlots(); ++ti) {
     const TriId t(ti);
     if (!tri.isAlive(t)) continue;
     const std::uint32_t* tv = tri.triVertices(t);
@@ -115,15 +133,35 @@ void VertexMetricCache::update(const Triangulation2d& tri, const ControlSpace2d&
       grad_[b] = std::max(grad_[b], jump);
     }
   }
-  for (std::size_t v = 0; v < n; ++v) {
-    const std::uint8_t f = flags_[v];
-    if (f & kOpen) {
-      const long sectors = std::lround(angle_[v] / (std::numbers::pi / 3));
-      ideal_[v] = static_cast<int>(std::max(1L, sectors)) + 1;
+}
+
+void VertexMetricCache::markDegenerateEdges(const Triangulation2d& tri) {
+  const std::size_t slots = tri.triangleSlots();
+  for (std::uint32_t ti = 0; ti < slots; ++ti) {
+    const TriId t(ti);
+    if (!tri.isAlive(t)) continue;
+    const std::uint32_t* tv = tri.triVertices(t);
+    for (int i = 0; i < 3; ++i) {
+      if (!tri.isConstrained(t, i)) continue;
+      const std::uint32_t a = tv[kNext[i]], b = tv[kPrev[i]];
+      const Vec2 e = tri.point(VertexId(b)) - tri.point(VertexId(a));
+      const bool unusable = (flags_[a] & kBadMetric) || (flags_[b] & kBadMetric);
+      if (unusable || std::max((s_[a] * e).norm(), (s_[b] * e).norm()) < kDegenerateEdgeLength)
+        flags_[a] |= kDegenerate, flags_[b] |= kDegenerate;
     }
-    const bool isFixed = fixed[v] != 0;
-    if ((f & kUsed) && !isFixed && !(f & (kOpen | kConstrained | kBadMetric))) flags_[v] |= kMovable;
   }
+  for (std::uint32_t ti = 0; ti < slots; ++ti) {
+    const TriId t(ti);
+    if (!tri.isAlive(t)) continue;
+    const std::uint32_t* tv = tri.triVertices(t);
+    if ((flags_[tv[0]] | flags_[tv[1]] | flags_[tv[2]]) & kDegenerate)
+      for (int k = 0; k < 3; ++k) flags_[tv[k]] |= kNearDegenerate;
+  }
+}
+
+bool VertexMetricCache::frozen(const Triangulation2d& tri, TriId t) const {
+  const std::uint32_t* tv = tri.triVertices(t);
+  return ((flags_[tv[0]] | flags_[tv[1]] | flags_[tv[2]]) & kDegenerate) != 0;
 }
 
 Mat2 VertexMetricCache::blend(const VertexId* v, int n) const {

@@ -15,7 +15,17 @@
 //     triangulation round(θ / 60°) + 1 with θ the metric-space angle of its star (4 on a
 //     straight border), at least 2;
 //   - whether it may move: used, not flagged fixed, its star closed (not on the border of
-//     the triangulation), not on a constrained edge, and its metric usable.
+//     the triangulation), not on a constrained edge, its metric usable, and not in a
+//     triangle touching a degenerate boundary edge (below).
+// Degenerate boundary edges (poles): a constrained edge whose metric length is below
+// kDegenerateEdgeLength (|S_a e| and |S_b e| both; a pole has length only through the g_min
+// guard of M_p), or with an endpoint whose metric is unusable. At a pole several boundary
+// vertices are one point in 3D, which the metric, linear around each vertex, cannot
+// represent: the triangles touching such an edge's endpoints are left exactly as the face
+// mesher made them — frozen() is true for them, the operators never flip an edge of a
+// frozen triangle, and their vertices never move — else flips could connect one interior
+// vertex to two pole vertices across an edge, which folds (duplicates) triangles in 3D.
+//
 // A metric is unusable when M is not finite or singular; such a vertex is held fixed and
 // takes the metric of its first usable neighbour met visiting the triangles by index (the
 // identity when it has none).
@@ -37,6 +47,9 @@ using del2d::Triangulation2d;
 using del2d::TriId;
 using del2d::VertexId;
 
+/// Metric length below which a constrained edge counts as degenerate (a pole).
+inline constexpr double kDegenerateEdgeLength = 1e-2;
+
 class VertexMetricCache {
  public:
   /// Evaluates cs at every vertex of a live triangle and classifies the vertices (see
@@ -55,6 +68,16 @@ class VertexMetricCache {
   double gradation(VertexId v) const { return grad_[v.index]; }
   int idealDegree(VertexId v) const { return ideal_[v.index]; }
 
+  /// Whether the live triangle t touches an endpoint of a degenerate boundary edge (see
+  /// above): its edges must not be flipped.
+  bool frozen(const Triangulation2d& tri, TriId t) const;
+  /// Whether edge i of t may not be flipped because t or its neighbour there is frozen.
+  bool edgeFrozen(const Triangulation2d& tri, TriId t, int i) const {
+    const TriId u = tri.neighbour(t, i);
+    return frozen(tri, t) || (u.valid() && frozen(tri, u));
+  }
+  bool onDegenerateEdge(VertexId v) const { return flags_[v.index] & kDegenerate; }
+
   /// The metric of a group of 1 ≤ n ≤ 4 vertices (a triangle, a quadrilateral): S when all n cached S are bit-identical
   /// (a constant metric stays exact), else (Σ S_i⁻¹ / n)⁻¹ (eq. 2.18), summed in
   /// increasing vertex order so that the result does not depend on the order given.
@@ -62,7 +85,12 @@ class VertexMetricCache {
 
  private:
   static constexpr std::uint8_t kUsed = 1, kMovable = 2, kOpen = 4, kConstrained = 8, kBadMetric = 16,
-                                kSubstituted = 32;
+                                kSubstituted = 32, kDegenerate = 64, kNearDegenerate = 128;
+  void classifyTopology(const Triangulation2d& tri);
+  void substituteUnusable(const Triangulation2d& tri);
+  void measureNeighbourhoods(const Triangulation2d& tri);
+  void markDegenerateEdges(const Triangulation2d& tri);
+
   std::vector<Mat2> s_, inv_;
   std::vector<double> grad_, angle_;
   std::vector<int> ideal_;
