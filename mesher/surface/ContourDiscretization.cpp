@@ -8,9 +8,10 @@
 // of segments is n = max(1, round(∫ρ)), raised by the rules below, and the nodes are placed
 // at equal metric arc length (steps 2–3: the remainder of the last unit step spread over
 // all segments). A degenerate edge (pole) is measured along its pcurve moved one mesh size
-// into the face (see poleDensity), so the pole gets a ring of about 2π·r/h pieces for the
-// face mesher to fan from, instead of the single piece its g_min-guarded length gives. Node creation order: vertex nodes (vertex order), then the inner nodes of
-// every edge (edge order, increasing t).
+// into the face (see poleDensity), so the pole gets a ring of pieces for the face mesher
+// to fan from, instead of the single piece its g_min-guarded length gives.
+// Node creation order: vertex nodes (vertex order), then the inner nodes of every edge
+// (edge order, increasing t).
 //
 // Segment-count rules, each needed for a valid boundary:
 //  - a closed edge (v0 == v1) gets at least max(3, minSegmentsClosedEdge) segments (fewer

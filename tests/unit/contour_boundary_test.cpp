@@ -15,6 +15,17 @@ using namespace aniso::test;
 
 namespace {
 
+/// The segment x = t², y = z = 0 for t ∈ [0, 1]: the bottom edge of the unit square,
+/// parameterized unlike its pcurve (x = t), as in CAD files where SameParameter fails.
+class SquaredLine final : public ParametricCurve3d {
+ public:
+  Vec3 point(double t) const override { return {t * t, 0, 0}; }
+  Curve3dD2 d2(double t) const override { return {point(t), Vec3(2 * t, 0, 0), Vec3(2, 0, 0)}; }
+  double tMin() const override { return 0; }
+  double tMax() const override { return 1; }
+  std::unique_ptr<ParametricCurve3d> clone() const override { return std::make_unique<SquaredLine>(); }
+};
+
 struct Boundaries {
   std::vector<std::unique_ptr<CSAnalytic2d>> spaces;
   SurfaceMesh mesh;
@@ -192,4 +203,21 @@ TEST(ContourBoundary, OpenLoopIsRejectedNamingTheFace) {
   bad.faces[0].loops[0].uses[2].reversed = true;
   const Boundaries rb(bad, 0.5);
   EXPECT_THROW(faceBoundary(bad, 0, rb.edges, rb.mesh), MeshingError);
+}
+
+TEST(ContourBoundary, PcurveParameterizedUnlikeItsEdgeIsProjected) {
+  Model m = unitSquare();
+  m.edges[0].curve = std::make_shared<SquaredLine>();
+  const Boundaries r(m, 0.1);
+  const EdgeDiscretization& d = r.edges[0];
+  ASSERT_EQ(d.nodes.size(), 11u);  // measured along the pcurve: 10 segments, t = i / 10
+  const FaceBoundary b = faceBoundary(m, 0, r.edges, r.mesh);
+  // The inner nodes sit at x = t² in 3D; their (u, v) follow them, not c_p(t) = (t, 0).
+  for (int i = 1; i < 10; ++i) {
+    const BoundaryNode& n = b.loops[0][i];
+    ASSERT_EQ(n.node, d.nodes[i]);
+    EXPECT_NEAR(n.uv.x(), d.t[i] * d.t[i], 1e-9) << i;
+    EXPECT_NEAR(n.uv.y(), 0, 1e-12);
+  }
+  expectConsistent(m, b, r.mesh, 0.2);
 }

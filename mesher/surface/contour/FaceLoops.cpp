@@ -5,16 +5,16 @@
 // Each use contributes the nodes of its edge in walking order with uv = c_p(t) on the
 // use's pcurve (on a seam, the pcurve of that side). The edge's 3D curve is the master of
 // the inner nodes' positions; where p(c_p(t)) is further from the node than the CAD
-// tolerances allow (pcurves not parameterized like their 3D curve, "SameParameter" not
+// tolerances allow (a pcurve not parameterized like its 3D curve, SameParameter not
 // holding: up to 30 model units on a 7e-4 tolerance in submarine.stp), the node is
 // projected onto the pcurve's image instead (step 6's projection), keeping the parameters
-// increasing along the edge. Consecutive uses share their vertex
-// node, emitted once at the midpoint of the two pcurve ends. On a periodic surface each use
-// is moved by whole periods next to the previous one, and afterwards each loop as a whole
-// so that it overlaps the face's parametric bounds (the outer loop) or the outer loop (the
-// holes) as much as possible: the control space covers the face's stored bounds. Every
-// junction, the closing one included, must then meet within kLoopGapRatio of the face's
-// parametric extent.
+// increasing along the edge.
+// Consecutive uses share their vertex node, emitted once at the midpoint of the two pcurve
+// ends. On a periodic surface each use is moved by whole periods next to the previous one,
+// and afterwards each loop as a whole so that it overlaps the face's parametric bounds
+// (the outer loop) or the outer loop (the holes) as much as possible: the control space
+// covers the face's stored bounds. Every junction, the closing one included, must then
+// meet within kLoopGapRatio of the face's parametric extent.
 #include <algorithm>
 #include <cmath>
 #include <memory>
