@@ -221,3 +221,31 @@ TEST(ContourBoundary, PcurveParameterizedUnlikeItsEdgeIsProjected) {
   }
   expectConsistent(m, b, r.mesh, 0.2);
 }
+
+TEST(ContourBoundary, NodeTouchingTwoLoopsHasOneParameterPoint) {
+  // A triangular hole touching the outer loop at the vertex (0.5, 0); the hole's pcurves
+  // end 1e-13 away from it (round-off of two different pcurves).
+  ModelBuilder bld;
+  const int f = bld.face(xyPlane(), box(0, 0, 1, 1));
+  const int touch = bld.vertex({0.5, 0, 0});
+  polygonLoop(bld, f, {bld.vertex({0, 0, 0}), touch, bld.vertex({1, 0, 0}), bld.vertex({1, 1, 0}), bld.vertex({0, 1, 0})},
+              true);
+  const int a = bld.vertex({0.4, 0.3, 0}), c = bld.vertex({0.6, 0.3, 0});
+  const Vec2 off(0.5 + 1e-13, 0);
+  const int e0 = bld.line(touch, a), e1 = bld.line(a, c), e2 = bld.line(c, touch);
+  const int k0 = bld.pcurve(e0, f, std::make_shared<Line2d>(off, Vec2(0.4, 0.3)));
+  const int k1 = bld.pcurve(e1, f, std::make_shared<Line2d>(Vec2(0.4, 0.3), Vec2(0.6, 0.3)));
+  const int k2 = bld.pcurve(e2, f, std::make_shared<Line2d>(Vec2(0.6, 0.3), off));
+  bld.loop(f, {{e0, false, k0}, {e1, false, k1}, {e2, false, k2}}, false);
+  const Model& m = bld.m;
+  const Boundaries r(m, 0.1);
+  const FaceBoundary b = faceBoundary(m, 0, r.edges, r.mesh);
+  ASSERT_EQ(b.loops.size(), 2u);
+  std::vector<Vec2> at;
+  for (const auto& loop : b.loops)
+    for (const BoundaryNode& n : loop)
+      if (n.node == touch) at.push_back(n.uv);
+  ASSERT_EQ(at.size(), 2u);
+  EXPECT_EQ(at[0], at[1]);
+  EXPECT_LT(signedArea(b.loops[1]), 0);
+}

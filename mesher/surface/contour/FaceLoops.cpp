@@ -14,8 +14,10 @@
 // and afterwards each loop as a whole so that it overlaps the face's parametric bounds
 // (the outer loop) or the outer loop (the holes) as much as possible: the control space
 // covers the face's stored bounds. Every junction, the closing one included, must then
-// meet within kLoopGapRatio of the face's parametric extent.
+// meet within kLoopGapRatio of the face's parametric extent. Copies of one node that differ
+// by round-off only (a hole touching the outer loop at a vertex) are given one (u, v).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <sstream>
@@ -31,6 +33,9 @@ namespace {
 /// Largest (u, v) gap between consecutive uses, relative to the diagonal of the face's
 /// parametric extent (the same order as Model::validate's kUvGapRatio).
 constexpr double kLoopGapRatio = 1e-2;
+/// Copies of one node closer than this (relative to the parametric extent) are made equal:
+/// a hole touching the outer loop at a vertex, the two pcurve ends differing by round-off.
+constexpr double kSnapRatio = 1e-9;
 /// An inner edge node whose pcurve point misses it in 3D by more than kMissFactor × the
 /// CAD tolerance (edge or face) plus kMissRelative × the model size is projected.
 constexpr double kMissFactor = 2;
@@ -180,6 +185,22 @@ void alignToBox(std::vector<BoundaryNode>& loop, const Box2& ref, const Vec2& pe
   for (BoundaryNode& n : loop) n.uv += shift;
 }
 
+/// Gives every node the same (u, v) wherever it occurs within `tol` of an earlier copy
+/// (in loop order), so that one point is one point for the face mesher.
+void snapCopies(std::vector<std::vector<BoundaryNode>>& loops, double tol) {
+  std::vector<std::array<int, 3>> refs;  // (node, loop, index)
+  for (std::size_t l = 0; l < loops.size(); ++l)
+    for (std::size_t i = 0; i < loops[l].size(); ++i)
+      refs.push_back({loops[l][i].node, static_cast<int>(l), static_cast<int>(i)});
+  std::sort(refs.begin(), refs.end());
+  for (std::size_t a = 0; a < refs.size(); ++a)
+    for (std::size_t b = a + 1; b < refs.size() && refs[b][0] == refs[a][0]; ++b) {
+      const Vec2& first = loops[refs[a][1]][refs[a][2]].uv;
+      Vec2& other = loops[refs[b][1]][refs[b][2]].uv;
+      if ((other - first).norm() <= tol) other = first;
+    }
+}
+
 double extentDiagonal(const ModelFace& f, const std::vector<std::vector<BoundaryNode>>& loops) {
   const double d = f.uvBounds.diagonal();
   if (std::isfinite(d) && d > 0) return d;
@@ -216,6 +237,7 @@ FaceBoundary faceBoundary(const Model& model, int face, const std::vector<EdgeDi
 
   for (std::size_t l = 0; l < out.loops.size(); ++l)
     alignToBox(out.loops[l], l == 0 ? f.uvBounds : boxOf(out.loops[0]), periodic.period());
+  snapCopies(out.loops, kSnapRatio * extent);
   if (f.reversed)
     for (auto& loop : out.loops) std::reverse(loop.begin(), loop.end());
   return out;
