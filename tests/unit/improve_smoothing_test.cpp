@@ -73,7 +73,7 @@ TEST(LaplaceSmoothing, RaisesMeanQualityKeepsValidityAndFixedVertices) {
               q0.mean, q1.mean, q0.min, q1.min, st.moved, st.halved, st.rejected, st.visited);
   EXPECT_TRI_VALID(f.tri);
   EXPECT_GT(q1.mean, q0.mean + 0.1);
-  EXPECT_GE(q1.min, q0.min);  // the floor rule: a star below 0.5 never gets worse
+  EXPECT_GE(q1.min, q0.min);  // a star below the floor (0.5) only ever gets a better worst element
   EXPECT_GT(st.moved, 0);
   EXPECT_EQ(st.metricVersion, 0);  // constant metric: eq. 4.2 everywhere
   expectFixedUnmoved(f, before);
@@ -86,8 +86,8 @@ TEST(LaplaceSmoothing, StrictGuardNeverLowersTheWorstElementOfAStar) {
   TestFace f = squareFace(m, 4);
   VertexMetricCache metrics;
   metrics.update(f.tri, cs, f.fixed);
-  // With the strict rule every accepted move keeps its star's worst element, so in a
-  // constant metric the worst element of the mesh never gets worse, sweep after sweep.
+  // With floor 1 every accepted move raises its star's worst element, so in a constant
+  // metric the worst element of the mesh never gets worse, sweep after sweep.
   const EtaSummary q0 = etaSummary(f.tri, m);
   SmoothingOptions o;
   o.iterations = 1;
@@ -180,7 +180,7 @@ TEST(LaplaceSmoothing, MetricVersionFollowsARotatingAnisotropy) {
               q[1].eta.stddev(), q[1].mu.stddev(), q[1].ek.mean(), metricTargets[1]);
   EXPECT_EQ(metricTargets[0], 0);
   EXPECT_GT(metricTargets[1], 0);
-  EXPECT_GT(q[1].eta.mean(), q[0].eta.mean() + 0.02);
+  EXPECT_GT(q[1].eta.mean(), q[0].eta.mean() + 0.005);
   EXPECT_LT(q[1].ek.mean(), q[0].ek.mean());
   EXPECT_LT(q[1].mu.stddev(), q[0].mu.stddev());
 }
@@ -217,7 +217,7 @@ TEST(LaplaceSmoothing, SizeNormalisedMetricVersionDoesNotOverGrade) {
                 q[k].mu.stddev(), q[k].ek.mean(), meanShift[k]);
   EXPECT_NEAR(q[1].eta.mean(), q[0].eta.mean(), 1e-6);
   EXPECT_NEAR(meanShift[1], meanShift[0], 1e-6);
-  EXPECT_LT(meanShift[2], meanShift[0] - 0.002);  // towards the fine side (small u)
+  EXPECT_LT(meanShift[2], meanShift[0] - 0.001);  // towards the fine side (small u)
   EXPECT_GT(q[2].ek.mean(), q[1].ek.mean());
 }
 

@@ -13,24 +13,26 @@ namespace {
 using del2d::kNext;
 using del2d::kPrev;
 
-double angleAt(const Vec2& p, const Vec2& x, const Vec2& y) {
-  const Vec2 u = x - p, w = y - p;
-  return std::atan2(std::abs(u.x() * w.y() - u.y() * w.x()), u.dot(w));
-}
-
-void markAround(const Triangulation2d& tri, TriId t, std::vector<std::uint8_t>& dirty) {
-  dirty[t.index] = 1;
+/// Marks t and its neighbours for (re)checking.
+void markAround(const Triangulation2d& tri, TriId t, std::vector<std::uint8_t>& dirty,
+                std::vector<std::uint32_t>& checkedIn) {
+  dirty[t.index] = 1, checkedIn[t.index] = 0;
   for (int k = 0; k < 3; ++k) {
     const TriId n = tri.neighbour(t, k);
-    if (n.valid()) dirty[n.index] = 1;
+    if (n.valid()) dirty[n.index] = 1, checkedIn[n.index] = 0;
   }
 }
 
 }  // namespace
 
 double oppositeAngleSum(const Mat2& m, const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
-  const Vec2 ma = m * a, mb = m * b, mc = m * c, md = m * d;
-  return angleAt(ma, mb, mc) + angleAt(md, mb, mc);
+  // α at a in (a, b, c) and δ at d in (d, b, c) from unnormalised sines and cosines; the
+  // sum α + δ ∈ (0, 2π) from one atan2 of sin(α + δ) and cos(α + δ) (common positive factor).
+  const Vec2 ab = m * (b - a), ac = m * (c - a), db = m * (b - d), dc = m * (c - d);
+  const double cosA = ab.dot(ac), sinA = std::abs(ab.x() * ac.y() - ab.y() * ac.x());
+  const double cosD = db.dot(dc), sinD = std::abs(db.x() * dc.y() - db.y() * dc.x());
+  const double sum = std::atan2(sinA * cosD + cosA * sinD, cosA * cosD - sinA * sinD);
+  return sum < 0 ? sum + 2 * std::numbers::pi : sum;
 }
 
 bool violatesSwapCriterion(const Triangulation2d& tri, const VertexMetricCache& metrics, TriId t, int i,
@@ -57,6 +59,9 @@ GeometricSwapStats geometricSwap(Triangulation2d& tri, const VertexMetricCache& 
   const std::size_t slots = tri.triangleSlots();
   std::vector<std::uint8_t> dirty(slots, 0);
   for (std::uint32_t ti = 0; ti < slots; ++ti) dirty[ti] = tri.isAlive(TriId(ti));
+  // checkedIn[t] = the sweep in which t's edges were last checked with nothing changed
+  // around t since (0: not so): an edge is then not checked again from the other side.
+  std::vector<std::uint32_t> checkedIn(slots, 0);
   const double budget = options.maxFlipsPerTriangle * static_cast<double>(tri.numTriangles());
   bool changed = true;
   while (changed) {
@@ -65,10 +70,12 @@ GeometricSwapStats geometricSwap(Triangulation2d& tri, const VertexMetricCache& 
     for (std::uint32_t ti = 0; ti < slots; ++ti) {
       if (!dirty[ti]) continue;
       dirty[ti] = 0;
+      checkedIn[ti] = static_cast<std::uint32_t>(st.sweeps);
       const TriId t(ti);
       for (int i = 0; i < 3; ++i) {
         const TriId u = tri.neighbour(t, i);
         if (!u.valid() || tri.isConstrained(t, i) || metrics.edgeFrozen(tri, t, i)) continue;
+        if (u.index < ti && checkedIn[u.index] == static_cast<std::uint32_t>(st.sweeps)) continue;
         ++st.checked;
         if (!violatesSwapCriterion(tri, metrics, t, i, options.angleTolerance)) continue;
         const del2d::FlipPlan plan = del2d::canFlip(tri, t, i);
@@ -80,8 +87,8 @@ GeometricSwapStats geometricSwap(Triangulation2d& tri, const VertexMetricCache& 
         del2d::flip(tri, plan);
         ++st.flipped;
         changed = true;
-        markAround(tri, plan.t, dirty);
-        markAround(tri, plan.u, dirty);
+        markAround(tri, plan.t, dirty, checkedIn);
+        markAround(tri, plan.u, dirty, checkedIn);
       }
     }
   }

@@ -7,9 +7,9 @@
 //     local metric gradation is low (the metric is then locally constant and the plain
 //     average *is* the metric-space average), the metric version 4.3 where it is high (by
 //     default with the mid-edge metrics scaled to the vertex's size, LaplaceSmoothing.h
-//     explains why) — never inverting an adjacent triangle and never lowering the worst
-//     η_M of its star below min(its previous value, smoothingQualityFloor) (the move is
-//     halved, then cancelled: check, then change);
+//     explains why) — never inverting an adjacent triangle, and only when the star gets
+//     better in η_M (its worst element below smoothingQualityFloor, else its mean; the
+//     move is halved, then cancelled: check, then change);
 //   - topological swap (4.6.2, TopologicalSwap.h) in areas of low metric gradation: flip an
 //     edge when it brings the vertex degrees closer to their ideal (6 inside), provided the
 //     new diagonal is acceptable to the geometric swap that follows (else the geometric
@@ -46,8 +46,8 @@ struct ImproveOptions {
   /// (eq. 2.24–2.25) between a vertex's metric and its neighbours' below which the metric
   /// counts as locally constant. 0.05 ≈ neighbouring sizes within a factor 1.2.
   double lowGradation = 0.05;
-  /// Smoothing guard (LaplaceSmoothing.h): a move may lower the worst η_M of a star only
-  /// down to this floor; 1 = never lower it.
+  /// Smoothing acceptance (LaplaceSmoothing.h): stars whose worst η_M is below this floor
+  /// must raise it; the others must keep it above the floor and not lower their mean.
   double smoothingQualityFloor = 0.5;
   /// Eq. 4.3 verbatim (true) or with the size of the mid-edge metrics normalised to the
   /// vertex's (false, LaplaceSmoothing.h).

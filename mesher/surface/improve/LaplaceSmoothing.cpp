@@ -14,9 +14,26 @@ namespace {
 /// Scratch of one call: the star of the current vertex.
 struct Star {
   std::vector<VertexId> ring;
-  std::vector<Vec2> p;   ///< neighbour positions
-  std::vector<Vec2> mp;  ///< S_Q · neighbour positions
+  std::vector<Vec2> p;  ///< neighbour positions
+  std::vector<Mat2> m;  ///< metric of star triangle k = (Q, P_k, P_k+1): blend of its vertices
 };
+
+/// Worst and mean η_M of the star with Q at q.
+struct StarQuality {
+  double worst = 1.0, mean = 0.0;
+};
+
+StarQuality starQuality(const Star& star, const Vec2& q) {
+  const std::size_t n = star.ring.size();
+  StarQuality r;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double e = meanRatio(star.m[i], q, star.p[i], star.p[i + 1 == n ? 0 : i + 1]);
+    r.worst = std::min(r.worst, e);
+    r.mean += e;
+  }
+  r.mean /= static_cast<double>(n);
+  return r;
+}
 
 /// Eq. 4.2 or 4.3 (see the header).
 Vec2 laplaceTarget(const VertexMetricCache& metrics, VertexId q, const Vec2& pq, const Star& star,
@@ -37,17 +54,6 @@ Vec2 laplaceTarget(const VertexMetricCache& metrics, VertexId q, const Vec2& pq,
   return pq + invQ * (sum / static_cast<double>(n));
 }
 
-/// Smallest η_M of the star with Q at mq (metric-space coordinates).
-double starQuality(const Star& star, const Vec2& mq) {
-  const std::size_t n = star.ring.size();
-  double worst = 1.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t j = i + 1 == n ? 0 : i + 1;
-    worst = std::min(worst, meanRatio(mq, star.mp[i], star.mp[j]));
-  }
-  return worst;
-}
-
 /// Every star triangle counter-clockwise with Q at p (exact).
 bool starValid(const Star& star, const Vec2& p) {
   const std::size_t n = star.ring.size();
@@ -56,6 +62,39 @@ bool starValid(const Star& star, const Vec2& p) {
     if (!(predicates::orient2d(p.data(), star.p[i].data(), star.p[j].data()) > 0)) return false;
   }
   return true;
+}
+
+/// One vertex: gather its star, compute the target, check, then move. Updates st.
+void smoothVertex(Triangulation2d& tri, const VertexMetricCache& metrics, VertexId v,
+                  const SmoothingOptions& options, Star& star, SmoothingStats& st) {
+  if (!gatherRing(tri, v, star.ring)) return;
+  star.p.clear(), star.m.clear();
+  const std::size_t degree = star.ring.size();
+  for (std::size_t k = 0; k < degree; ++k) {
+    star.p.push_back(tri.point(star.ring[k]));
+    const VertexId corners[3] = {v, star.ring[k], star.ring[k + 1 == degree ? 0 : k + 1]};
+    star.m.push_back(metrics.blend(corners, 3));
+  }
+  const Vec2 q = tri.point(v);
+  const bool metricVersion = metrics.gradation(v) > options.lowGradation;
+  st.metricVersion += metricVersion;
+  const Vec2 target = laplaceTarget(metrics, v, q, star, metricVersion, options.metricSize);
+  if (!target.allFinite() || target == q) return;
+  const StarQuality before = starQuality(star, q);
+  const bool poor = before.worst < options.qualityFloor;
+  for (const double step : {1.0, 0.5}) {
+    const Vec2 p = q + step * (target - q);
+    if (p == q) break;
+    const StarQuality after = starQuality(star, p);
+    const bool better = poor ? after.worst > before.worst
+                             : after.worst >= options.qualityFloor && after.mean >= before.mean;
+    if (!better || !starValid(star, p)) continue;
+    moveVertex(tri, v, p);
+    ++st.moved;
+    st.halved += step < 1.0;
+    return;
+  }
+  ++st.rejected;
 }
 
 }  // namespace
@@ -68,40 +107,14 @@ SmoothingStats laplaceSmoothing(Triangulation2d& tri, const VertexMetricCache& m
     throw MeshingError("laplaceSmoothing: invalid options");
   SmoothingStats st;
   Star star;
-  star.ring.reserve(32), star.p.reserve(32), star.mp.reserve(32);
+  star.ring.reserve(32), star.p.reserve(32), star.m.reserve(32);
   const std::uint32_t n = static_cast<std::uint32_t>(tri.numVertices());
-  for (int sweep = 0; sweep < options.iterations; ++sweep) {
-    for (std::uint32_t vi = 0; vi < n; ++vi) {
-      const VertexId v(vi);
-      if (!metrics.movable(v)) continue;
-      ++st.visited;
-      if (!gatherRing(tri, v, star.ring)) continue;
-      const Mat2& s = metrics.transform(v);
-      star.p.clear(), star.mp.clear();
-      for (VertexId w : star.ring) {
-        star.p.push_back(tri.point(w));
-        star.mp.push_back(s * star.p.back());
+  for (int sweep = 0; sweep < options.iterations; ++sweep)
+    for (std::uint32_t v = 0; v < n; ++v)
+      if (metrics.movable(VertexId(v))) {
+        ++st.visited;
+        smoothVertex(tri, metrics, VertexId(v), options, star, st);
       }
-      const Vec2 q = tri.point(v);
-      const bool metricVersion = metrics.gradation(v) > options.lowGradation;
-      st.metricVersion += metricVersion;
-      const Vec2 target = laplaceTarget(metrics, v, q, star, metricVersion, options.metricSize);
-      if (!target.allFinite() || target == q) continue;
-      const double required = std::min(starQuality(star, s * q), options.qualityFloor);
-      bool accepted = false;
-      for (const double step : {1.0, 0.5}) {
-        const Vec2 p = q + step * (target - q);
-        if (p == q) break;
-        if (starQuality(star, s * p) < required || !starValid(star, p)) continue;
-        moveVertex(tri, v, p);
-        ++st.moved;
-        st.halved += step < 1.0;
-        accepted = true;
-        break;
-      }
-      st.rejected += !accepted;
-    }
-  }
   return st;
 }
 
