@@ -43,7 +43,8 @@ void writeControlSpaceVtu(const ControlSpaceGrid& g, const std::string& path, co
   o << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
   for (size_t c = 1; c <= nc; ++c) o << c * g.cellSize << '\n';
   o << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-  const int vtkType = g.cellSize == 8 ? 12 : 9;  // VTK_HEXAHEDRON, VTK_QUAD
+  // (dim, cellSize) → VTK_HEXAHEDRON, VTK_TRIANGLE, VTK_TETRA, VTK_QUAD (ControlSpaceGrid.h)
+  const int vtkType = g.cellSize == 8 ? 12 : g.cellSize == 3 ? 5 : g.dim == 3 ? 10 : 9;
   for (size_t c = 0; c < nc; ++c) o << vtkType << '\n';
   o << "</DataArray>\n</Cells>\n<CellData Scalars=\"level\">\n<DataArray type=\"Int32\" Name=\"level\" format=\"ascii\">\n";
   for (int l : g.cellLevel) o << l << '\n';

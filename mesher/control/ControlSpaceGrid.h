@@ -1,14 +1,21 @@
 #pragma once
 // ControlSpaceGrid — a control space structure exported for visualisation (e.g. a VTU
-// file with one cell per quadtree/octree leaf and tensor fields at the points). Produced
-// by CSQuadtree2d::grid() and CSOctree3d::grid(); writing files is left to io/.
+// file with one cell per quadtree/octree leaf or background-mesh element and tensor
+// fields at the points). Produced by CSQuadtree2d::grid(), CSOctree3d::grid(),
+// CSMesh2d::grid() and CSMesh3d::grid(); writing files is left to io/.
 //
 // Layout (flat arrays, STYLE.md 3):
 //   points          every control vertex, 2D points as (u, v, 0);
-//   cells           cellSize vertex ids per leaf in VTK order: VTK_QUAD (4) in 2D,
-//                   VTK_HEXAHEDRON (8) in 3D. Extra ("hanging") vertices of a leaf are
-//                   points but not part of its cell;
-//   cellLevel       tree level of each leaf;
+//   cells           cellSize vertex ids per cell in VTK order. The cell type follows from
+//                   (dim, cellSize):
+//                     tree leaves     VTK_QUAD (2, 4), VTK_HEXAHEDRON (3, 8); extra
+//                                     ("hanging") vertices of a leaf are points but not
+//                                     part of its cell;
+//                     background mesh VTK_TRIANGLE (2, 3), counter-clockwise;
+//                                     VTK_TETRA (3, 4), positively oriented ((0, 1, 2)
+//                                     counter-clockwise seen from 3); the kernel's box
+//                                     corners and their elements are included;
+//   cellLevel       tree level of each leaf; 0 for background-mesh elements;
 //   per point, when the control space carries metrics (else these are empty):
 //     metric        transformation tensor M_s (2D: upper-left 2×2 block, rest 0),
 //     lengths       requested lengths h_i, ascending (2D: third entry 0),

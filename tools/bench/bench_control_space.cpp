@@ -8,7 +8,19 @@
 //                                         values of table 3.1; counter NPc = control vertices);
 //   BM_Analytic2dQuery / ..Mutex          a muParser control space with per-thread parsers
 //                                         (the implementation) against one parser set
-//                                         behind a mutex, on 1 and 2 threads.
+//                                         behind a mutex, on 1 and 2 threads;
+//   BM_Mesh2dQuery / BM_Mesh3dQuery       getMetric() of the background meshes (sec. 3.4)
+//                                         built from the same sources as the query trees,
+//                                         with the interpolation set A_s / A_t / A_o as
+//                                         argument 0 / 1 / 2 (counters: control vertices,
+//                                         elements); A_t also on 2 threads;
+//   BM_Mesh2dQueryCached                  the random walk of BM_QuadtreeQueryCached;
+//   BM_Mesh2dBuild / BM_Mesh3dBuild       continuous source plus smoothing for ε_δ = 10,
+//                                         1, 0.1, as the tree builds (counter NPc);
+//   BM_Mesh2dPointSources / ..3d..        build time against the number of control
+//                                         vertices: N random point sources inserted while
+//                                         fresh, then initialization (extrapolation) and
+//                                         smoothing.
 #include <benchmark/benchmark.h>
 #include <muParser.h>
 
@@ -21,6 +33,8 @@
 
 #include "mesher/control/CSAnalytic2d.h"
 #include "mesher/control/CSAnalytic3d.h"
+#include "mesher/control/CSMesh2d.h"
+#include "mesher/control/CSMesh3d.h"
 #include "mesher/control/CSOctree3d.h"
 #include "mesher/control/CSQuadtree2d.h"
 #include "mesher/control/MetricQueryCache.h"
@@ -234,5 +248,183 @@ void BM_Analytic2dMutex(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_Analytic2dMutex)->Threads(1)->Threads(2)->UseRealTime();
+
+// ---- background meshes (sec. 3.4) ----
+
+BackgroundMeshOptions meshOptions(int method) {
+  BackgroundMeshOptions o;
+  o.interpolation = static_cast<BackgroundInterpolation>(method);
+  return o;
+}
+
+/// The background mesh of the same sources as quadtree() (the adaptation to the
+/// continuous source depends on the interpolation set).
+CSMesh2d buildMesh2d(int method) {
+  CSMesh2d m(unitSquare(), SizingParameters{}, meshOptions(method));
+  m.setContinuousSource(CSAnalytic2d(unitSquare(), field2d));
+  const int n = 20000;
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * std::numbers::pi * i / n;
+    const Vec2 p(0.5 + 0.35 * std::cos(t), 0.5 + 0.2 * std::sin(2 * t));
+    m.insertDiscreteSource(p, Metric2d::fromAngle(t, 0.0002, 0.002));
+  }
+  m.smoothGradation(4.0);
+  return m;
+}
+
+/// The background mesh of the same sources as octree().
+CSMesh3d buildMesh3d(int method) {
+  CSMesh3d m(unitCube(), SizingParameters{}, meshOptions(method));
+  m.setContinuousSource(CSAnalytic3d(unitCube(), field3d));
+  const int n = 5000;
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * std::numbers::pi * i / n;
+    const Vec3 p(0.5 + 0.3 * std::cos(t), 0.5 + 0.3 * std::sin(t), 0.5 + 0.1 * std::sin(3 * t));
+    m.insertDiscreteSource(p, Metric3d::isotropic(0.001));
+  }
+  m.smoothGradation(4.0);
+  return m;
+}
+
+const CSMesh2d& mesh2d(int method) {
+  switch (method) {
+    case 0: {
+      static const CSMesh2d m = buildMesh2d(0);
+      return m;
+    }
+    case 1: {
+      static const CSMesh2d m = buildMesh2d(1);
+      return m;
+    }
+    default: {
+      static const CSMesh2d m = buildMesh2d(2);
+      return m;
+    }
+  }
+}
+
+const CSMesh3d& mesh3d(int method) {
+  switch (method) {
+    case 0: {
+      static const CSMesh3d m = buildMesh3d(0);
+      return m;
+    }
+    case 1: {
+      static const CSMesh3d m = buildMesh3d(1);
+      return m;
+    }
+    default: {
+      static const CSMesh3d m = buildMesh3d(2);
+      return m;
+    }
+  }
+}
+
+void BM_Mesh2dQuery(benchmark::State& state) {
+  const CSMesh2d& cs = mesh2d(static_cast<int>(state.range(0)));
+  const std::vector<Vec2> pts = randomPoints<Vec2>(1 << 14, 1 + state.thread_index());
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(cs.getMetric(pts[i++ & (pts.size() - 1)]));
+  state.SetItemsProcessed(state.iterations());
+  state.counters["NPc"] = benchmark::Counter(double(cs.controlVertexCount()), benchmark::Counter::kAvgThreads);
+  state.counters["elements"] = benchmark::Counter(double(cs.triangleCount()), benchmark::Counter::kAvgThreads);
+}
+BENCHMARK(BM_Mesh2dQuery)->Arg(0)->Arg(1)->Arg(2)->UseRealTime();
+BENCHMARK(BM_Mesh2dQuery)->Arg(1)->Threads(2)->UseRealTime();
+
+void BM_Mesh3dQuery(benchmark::State& state) {
+  const CSMesh3d& cs = mesh3d(static_cast<int>(state.range(0)));
+  const std::vector<Vec3> pts = randomPoints<Vec3>(1 << 14, 7 + state.thread_index());
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(cs.getMetric(pts[i++ & (pts.size() - 1)]));
+  state.SetItemsProcessed(state.iterations());
+  state.counters["NPc"] = benchmark::Counter(double(cs.controlVertexCount()), benchmark::Counter::kAvgThreads);
+  state.counters["elements"] = benchmark::Counter(double(cs.tetCount()), benchmark::Counter::kAvgThreads);
+}
+BENCHMARK(BM_Mesh3dQuery)->Arg(0)->Arg(1)->Arg(2)->UseRealTime();
+BENCHMARK(BM_Mesh3dQuery)->Arg(1)->Threads(2)->UseRealTime();
+
+void BM_Mesh2dQueryCached(benchmark::State& state) {
+  const CSMesh2d& cs = mesh2d(1);
+  std::mt19937 rng(3);
+  std::normal_distribution<double> step(0, 1);
+  std::vector<Vec2> walk(1 << 14);
+  Vec2 p(0.5, 0.2);
+  for (Vec2& w : walk) {
+    const double h = cs.getMetric(p).sizing.axes().lengths(0);
+    p = (p + 0.01 * h * Vec2(step(rng), step(rng))).cwiseMax(Vec2::Zero()).cwiseMin(Vec2::Ones());
+    w = p;
+  }
+  MetricQueryCache2d cache(0.05);
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(cache.get(cs, walk[i++ & (walk.size() - 1)]));
+  state.SetItemsProcessed(state.iterations());
+  state.counters["hitRate"] = double(cache.hits()) / double(cache.hits() + cache.misses());
+}
+BENCHMARK(BM_Mesh2dQueryCached);
+
+void BM_Mesh2dBuild(benchmark::State& state) {
+  const double eps = state.range(0) / 100.0;
+  const CSAnalytic2d source(unitSquare(), field2d);
+  std::size_t vertices = 0;
+  for (auto _ : state) {
+    CSMesh2d cs(unitSquare(), withEpsDelta(eps));
+    cs.setContinuousSource(source);
+    cs.smoothGradation(4.0);
+    vertices = cs.controlVertexCount();
+  }
+  state.counters["eps_delta"] = eps;
+  state.counters["NPc"] = double(vertices);
+  state.counters["NPc_per_s"] = benchmark::Counter(double(vertices) * double(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_Mesh2dBuild)->Arg(1000)->Arg(100)->Arg(10)->Unit(benchmark::kMillisecond);
+
+void BM_Mesh3dBuild(benchmark::State& state) {
+  const double eps = state.range(0) / 100.0;
+  const CSAnalytic3d source(unitCube(), field3d);
+  std::size_t vertices = 0;
+  for (auto _ : state) {
+    CSMesh3d cs(unitCube(), withEpsDelta(eps));
+    cs.setContinuousSource(source);
+    cs.smoothGradation(4.0);
+    vertices = cs.controlVertexCount();
+  }
+  state.counters["eps_delta"] = eps;
+  state.counters["NPc"] = double(vertices);
+  state.counters["NPc_per_s"] = benchmark::Counter(double(vertices) * double(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_Mesh3dBuild)->Arg(1000)->Arg(100)->Arg(10)->Unit(benchmark::kMillisecond);
+
+void BM_Mesh2dPointSources(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const std::vector<Vec2> pts = randomPoints<Vec2>(n, 13);
+  std::size_t vertices = 0;
+  for (auto _ : state) {
+    CSMesh2d cs(unitSquare(), SizingParameters{});
+    for (const Vec2& p : pts) cs.insertDiscreteSource(p, field2d(p));
+    cs.initializeControlVertices();
+    cs.smoothGradation(4.0);
+    vertices = cs.controlVertexCount();
+  }
+  state.counters["NPc"] = double(vertices);
+  state.counters["NPc_per_s"] = benchmark::Counter(double(vertices) * double(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_Mesh2dPointSources)->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+
+void BM_Mesh3dPointSources(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  const std::vector<Vec3> pts = randomPoints<Vec3>(n, 17);
+  std::size_t vertices = 0;
+  for (auto _ : state) {
+    CSMesh3d cs(unitCube(), SizingParameters{});
+    for (const Vec3& p : pts) cs.insertDiscreteSource(p, field3d(p));
+    cs.initializeControlVertices();
+    cs.smoothGradation(4.0);
+    vertices = cs.controlVertexCount();
+  }
+  state.counters["NPc"] = double(vertices);
+  state.counters["NPc_per_s"] = benchmark::Counter(double(vertices) * double(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_Mesh3dPointSources)->Arg(1000)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
