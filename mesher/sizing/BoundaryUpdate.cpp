@@ -7,12 +7,16 @@
 #include <Eigen/LU>
 #include <Eigen/SVD>
 
+#include "mesher/metric/MetricComparison.h"
+#include "mesher/metric/MetricIntersection.h"
+
 namespace aniso {
 namespace {
 
 struct Segment {
   Vec2 a, b;
   int loop, index;  ///< position in the loops
+  double along;     ///< real length along the loop from its first node to the midpoint
 };
 
 /// Closest point to p on segment [a, b] (in the coordinates given).
@@ -56,37 +60,56 @@ class SegmentGrid {
   std::vector<std::vector<int>> cellsOf_;
 };
 
-bool adjacentInLoop(const Segment& s, const Segment& t, const std::vector<std::vector<BoundaryNode>>& loops) {
+/// Two segments of one loop that the loop joins by a path not much longer than the
+/// straight distance between them are neighbours around a corner, not two sides of a gap:
+/// a gap needs the boundary to go away and come back (path > kGapPathRatio × distance).
+/// With 3, corners sharper than about 40° count as gaps and get graded refinement.
+constexpr double kGapPathRatio = 3.0;
+
+bool sameSideOfGap(const Segment& s, const Segment& t, double distance, const std::vector<double>& loopLength) {
   if (s.loop != t.loop) return false;
-  const int n = static_cast<int>(loops[s.loop].size());
-  const int d = std::abs(s.index - t.index);
-  return std::min(d, n - d) <= 1;
+  const double d = std::abs(s.along - t.along);
+  const double path = std::min(d, loopLength[s.loop] - d);
+  return path <= kGapPathRatio * distance;
 }
 
 }  // namespace
+
+/// Would intersecting the control space's metric at `at` with m change it by more than
+/// eps (δ_M)? Sources that change nothing are not inserted, so the rounds of alg. 3.1 stop.
+bool wouldChange(const CSAdaptive2d& cs, const Vec2& at, const Metric2d& m, double eps);
 
 BoundaryUpdateStats updateFromBoundary(CSAdaptive2d& cs, const FaceBoundary& boundary,
                                        const SizingParameters& params, double hMin) {
   BoundaryUpdateStats stats;
   const double lMin = 1.0 / params.adaptLengthMax;  // 1 / l_Mmax
   std::vector<Segment> segs;
+  std::vector<double> loopLength;
   Box2 box;
   for (int l = 0; l < static_cast<int>(boundary.loops.size()); ++l) {
     const auto& loop = boundary.loops[l];
     const int n = static_cast<int>(loop.size());
+    double along = 0;
     for (int i = 0; i < n; ++i) {
       const BoundaryNode& a = loop[i];
       const BoundaryNode& b = loop[(i + 1) % n];
-      if (a.node == b.node) continue;  // a piece of a pole
-      segs.push_back({a.uv, b.uv, l, i});
+      const Vec2 mid = 0.5 * (a.uv + b.uv);
+      const double len = (cs.getMetric(mid).parameterization * (b.uv - a.uv)).norm();
+      if (a.node != b.node) segs.push_back({a.uv, b.uv, l, i, along + 0.5 * len});  // skip pole pieces
+      along += len;
       box.add(a.uv);
       box.add(b.uv);
     }
+    loopLength.push_back(along);
   }
   if (segs.empty()) return stats;
   const SegmentGrid grid(segs, box);
+  // A source covers a whole boundary segment, not just its midpoint: control elements can
+  // be much smaller than a segment in (u, v) (a strip thin in u but long in v), and a
+  // single point source would then refine only around itself.
   struct Source {
-    Vec2 at;
+    Vec2 a, b;
+    double r;
     Metric2d m;
   };
   std::vector<Source> sources;
@@ -102,9 +125,11 @@ BoundaryUpdateStats updateFromBoundary(CSAdaptive2d& cs, const FaceBoundary& bou
     if (lenReal <= 0) continue;
     // Segment length in the face's metric.
     if ((m * (sg.b - sg.a)).norm() < lMin) {
-      const double h = std::max(lenReal, hMin);
-      sources.push_back({mid, Metric2d::isotropic(h)});
-      ++stats.shortSegments;
+      const Metric2d src = Metric2d::isotropic(std::max(lenReal, hMin));
+      if (wouldChange(cs, mid, src, params.metricDifferenceEps)) {
+        sources.push_back({sg.a, sg.b, 0.0, src});
+        ++stats.shortSegments;
+      }
     }
     // Vicinity: other segments closer than lMin in the metric. The search radius in (u, v)
     // is the longest (u, v) vector of metric length lMin: lMin / σ_min(M).
@@ -117,16 +142,17 @@ BoundaryUpdateStats updateFromBoundary(CSAdaptive2d& cs, const FaceBoundary& bou
     q.add(mid + Vec2(r, r));
     double best = lMin;
     Vec2 bestAt = mid;
+    int bestSeg = -1;
     grid.forCells(q, [&](int c) {
       for (int t : grid.cell(c)) {
         if (t == s || stamp[t] == s) continue;
         stamp[t] = s;
-        if (adjacentInLoop(sg, segs[t], boundary.loops)) continue;
         const Vec2 p = closestOnSegment(mid, segs[t].a, segs[t].b);
         const double d = (m * (p - mid)).norm();
-        if (d < best) {
+        if (d < best && !sameSideOfGap(sg, segs[t], (mp * (p - mid)).norm(), loopLength)) {
           best = d;
           bestAt = p;
+          bestSeg = t;
         }
       }
     });
@@ -136,13 +162,26 @@ BoundaryUpdateStats updateFromBoundary(CSAdaptive2d& cs, const FaceBoundary& bou
       const double gap = std::max(across.norm(), hMin);
       const double angle = std::atan2(across.y(), across.x());
       const Metric2d g = Metric2d::fromAngle(angle, gap, gap * params.anisotropy);
-      sources.push_back({mid, g});
-      sources.push_back({bestAt, g});
-      ++stats.gaps;
+      const bool a = wouldChange(cs, mid, g, params.metricDifferenceEps);
+      const bool b = wouldChange(cs, bestAt, g, params.metricDifferenceEps);
+      if (a) sources.push_back({sg.a, sg.b, 0.0, g});
+      if (b) sources.push_back({segs[bestSeg].a, segs[bestSeg].b, 0.0, g});
+      stats.gaps += (a || b);
     }
   }
-  for (const Source& src : sources) cs.insertDiscreteSource(src.at, src.m);
+  for (const Source& src : sources) {
+    // The segment's ends and midpoint as point sources (an extended source would scan
+    // every control vertex per source, too slow for thousands of segments).
+    cs.insertDiscreteSource(src.a, src.m);
+    cs.insertDiscreteSource(0.5 * (src.a + src.b), src.m);
+    cs.insertDiscreteSource(src.b, src.m);
+  }
   return stats;
+}
+
+bool wouldChange(const CSAdaptive2d& cs, const Vec2& at, const Metric2d& m, double eps) {
+  const Metric2d current = cs.getMetric(at).sizing;
+  return metricDifference(intersect(current, m), current) > eps;
 }
 
 }  // namespace aniso

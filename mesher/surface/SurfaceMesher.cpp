@@ -107,10 +107,11 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
   for (int f = 0; f < nf; ++f) cs[f] = spaces[f].get();
   ContourOptions copt;
   copt.evenSegments = in.options.quad;
-  // The boundary sources follow the geometry (a CAD edge shorter than h_min, a strip
-  // narrower than h_min): they may go below the h_min of the curvature sizing.
-  const double hMin = 1e-9 * model.diagonal();
-  constexpr int kRounds = 8;
+  // The boundary sources respect h_min too: below it, tiny CAD edges and sliver faces
+  // would drive the edge discretization down to round-off (measured: boundary nodes
+  // 1e-7 apart, unrecoverable edges on part.step) — see the issue note.
+  const double hMin = in.options.sizing.hminFor(model.diagonal());
+  constexpr int kRounds = 3;
   std::vector<EdgeDiscretization> edges;
   std::vector<FaceBoundary> boundaries(nf);
   for (int round = 0;; ++round) {
