@@ -80,7 +80,8 @@ bool sameSideOfGap(const Segment& s, const Segment& t, double distance, const st
 bool wouldChange(const CSAdaptive2d& cs, const Vec2& at, const Metric2d& m, double eps);
 
 BoundaryUpdateStats updateFromBoundary(CSAdaptive2d& cs, const FaceBoundary& boundary,
-                                       const SizingParameters& params, double hMin) {
+                                       const SizingParameters& params, const BoundaryUpdateOptions& options) {
+  const double hMin = options.hMin;
   BoundaryUpdateStats stats;
   const double lMin = 1.0 / params.adaptLengthMax;  // 1 / l_Mmax
   std::vector<Segment> segs;
@@ -131,6 +132,7 @@ BoundaryUpdateStats updateFromBoundary(CSAdaptive2d& cs, const FaceBoundary& bou
         ++stats.shortSegments;
       }
     }
+    if (!options.vicinity) continue;
     // Vicinity: other segments closer than lMin in the metric. The search radius in (u, v)
     // is the longest (u, v) vector of metric length lMin: lMin / σ_min(M).
     const Eigen::JacobiSVD<Mat2> svd(m);

@@ -110,7 +110,8 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
   // The boundary sources respect h_min too: below it, tiny CAD edges and sliver faces
   // would drive the edge discretization down to round-off (measured: boundary nodes
   // 1e-7 apart, unrecoverable edges on part.step) — see the issue note.
-  const double hMin = in.options.sizing.hminFor(model.diagonal());
+  BoundaryUpdateOptions bopt;
+  bopt.hMin = in.options.sizing.hminFor(model.diagonal());
   constexpr int kRounds = 3;
   std::vector<EdgeDiscretization> edges;
   std::vector<FaceBoundary> boundaries(nf);
@@ -123,7 +124,7 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
     if (round < kRounds) {
       parallelFor(nf, in.options.threads, [&](int f) {
         if (!cs[f]) return;
-        const BoundaryUpdateStats u = updateFromBoundary(*spaces[f], boundaries[f], in.options.sizing, hMin);
+        const BoundaryUpdateStats u = updateFromBoundary(*spaces[f], boundaries[f], in.options.sizing, bopt);
         if (u.total() == 0) return;
         spaces[f]->smoothGradation(in.options.sizing.gradation);
         updates += u.total();
