@@ -95,11 +95,6 @@ BackgroundMesh2d::BackgroundMesh2d(const Box2& bounds, const SizingParameters& p
   tri_.seeds();
 }
 
-void BackgroundMesh2d::finish() {
-  tri_.seeds();  // brings the lazily filled seeding quadtree up to date (see the header)
-  ++revision_;
-}
-
 void BackgroundMesh2d::setInterpolation(BackgroundInterpolation method) {
   options_.interpolation = method;
   ++revision_;
@@ -417,6 +412,7 @@ VertexGraph BackgroundMesh2d::graph() const {
 
 int BackgroundMesh2d::smoothGradation(double gamma) {
   if (!valued_) failFresh(bounds_.lo);
+  const Modification done{*this};
   const VertexGraph g = graph();
   std::vector<Vec2> d(g.edges.size());
   for (std::size_t e = 0; e < g.edges.size(); ++e) {
@@ -428,7 +424,6 @@ int BackgroundMesh2d::smoothGradation(double gamma) {
   const int rounds = smoothByEdgeMarking<2>(g, d, gamma, metric_, changed);
   for (std::size_t v = 0; v < metric_.size(); ++v)
     if (changed[v]) length_[v] = metric_[v].inverseMatrix();
-  finish();
   return rounds;
 }
 
@@ -439,11 +434,11 @@ void BackgroundMesh2d::forEachVertex(const VertexVisitor& visit) const {
 
 void BackgroundMesh2d::modifyVertices(const VertexModifier& modify) {
   if (!valued_) return;
+  const Modification done{*this};
   for (int v = 0; v < vertexCount(); ++v) {
     Metric2d m = metric_[v];
     if (modify(point(v), m)) setVertex(v, m);
   }
-  finish();
 }
 
 ControlSpaceGrid BackgroundMesh2d::grid() const {

@@ -12,7 +12,12 @@
 // parameterization tensor M_p (identity until adaptAux) and a "known" flag.
 //
 // Field (sec. 3.4.5): at a point Q (clamped into the bounds) the containing triangle is
-// found by a visibility walk; the interpolation set A_s / A_t / A_o
+// found by a visibility walk — from the caller's last located triangle when Q lies within
+// two of its edge lengths, else from a triangle of the nearest vertex in the kernel's
+// seeding quadtree (sec. 3.4.5: "an additional quadtree … for selection of good starting
+// element"; leaves of 8 vertices here). When Q lies on an edge the triangle with the
+// smaller slot is taken, so the field depends on Q only, never on the walk. The
+// interpolation set A_s / A_t / A_o
 // (BackgroundMeshOptions.h) is weighted by ω_i = d_R(Q, P_i)⁻² (eq. 3.2) with
 // d_R(Q, P_i) = |M_p(P_i) (Q − P_i)|, the distance in S^R with the tensor cached at P_i
 // (the parametric distance before adaptAux). Eq. 3.2 is applied to the length tensors,
@@ -108,23 +113,27 @@ class BackgroundMesh2d {
   /// gets the source's metric (a pending point source's vertex: intersected with it);
   /// valued — every vertex gets min_M(own, source). The source is evaluated at vertices
   /// clamped into the bounds (the box corners take the value of the nearest bounds
-  /// point). Then every triangle whose centroid lies in the bounds and whose interpolated
-  /// metric there differs by more than ε_δ from the target — the source when the mesh was
-  /// fresh without point sources, min_M(field, source) otherwise — gets a vertex at its
-  /// circumcentre (clamped into the bounds; the centroid when the clamped point is not
-  /// inside the circumcircle), repeatedly for the new triangles, down to
+  /// point). Then every triangle whose interpolated metric differs by more than ε_δ from
+  /// the target — the source when the mesh was fresh without point sources,
+  /// min_M(field, source) otherwise — at its check point (the centroid; for a triangle
+  /// reaching out of the bounds the bounds point nearest to it, when inside the
+  /// triangle; with BackgroundCheck::CentroidEdges also its edge midpoints in the bounds,
+  /// interpolated with the triangle's own set) gets a vertex at its circumcentre
+  /// (clamped into the bounds; the check point when the clamped circumcentre is not
+  /// strictly inside the circumcircle), repeatedly for the new triangles, down to
   /// BackgroundMeshOptions::minElementMetricLength and within maxVertices. With A_o,
   /// whose sets reach beyond the cavity, whole passes are repeated until one changes
-  /// nothing.
+  /// nothing (at most 16).
   void setContinuous(const MetricFn& source);
   /// Extrapolates metrics to the control vertices without one (the box corners, vertices
   /// of the parameterization adaptation) from the point-source vertices; the mesh is
   /// valued afterwards. No-op when valued; throws MeshingError when fresh without sources.
   void initializeVertices();
   /// Caches the exact M_p at every vertex and at every vertex created later; refines
-  /// (as setContinuous) every triangle whose centroid in the bounds has
-  /// δ(M_p exact, ·) > ε_δ against its interpolated value or any of its vertices' values
-  /// (sec. 3.3.3 / 3.4.3). New vertices keep the field (interpolated metric).
+  /// (as setContinuous) every triangle whose check point has δ(M_p exact, ·) > ε_δ
+  /// against its interpolated value or any of its vertices' values (sec. 3.3.3 / 3.4.3),
+  /// down to the resolution limit once valued. New vertices keep the field (interpolated
+  /// metric; while fresh they get one from initializeVertices).
   void adaptAux(const MatFn& exact);
   /// Sec. 3.4.4 on every edge (BackgroundMeshGraph.h), d in S^R with M_p averaged over
   /// the edge's ends. Returns the number of rounds. Throws MeshingError while fresh.
@@ -165,6 +174,10 @@ class BackgroundMesh2d {
   void fieldNear(const Vec2& p, del2d::TriId near, Metric2d* m, Mat2* aux) const;
   [[noreturn]] void failFresh(const Vec2& x) const;
 
+  /// Candidates of the ε_M proximity check of a point in t: the vertices of t and of the
+  /// triangles sharing an edge with it (at most 6) — they include every vertex closer to
+  /// the point than the distance from that vertex to the boundary of its star.
+  int nearVertices(del2d::TriId t, std::uint32_t* out) const;
   Inserted insertVertex(const Vec2& p, const Metric2d& m, const Mat2& aux, bool known, del2d::TriId near);
   void appendStar(int v, std::vector<del2d::TriId>& out) const;
   void neighbours(int v, std::vector<int>& out) const;
@@ -183,8 +196,15 @@ class BackgroundMesh2d {
   void setVertex(int v, const Metric2d& m);
   void intersectVertex(int v, const Metric2d& m);
   void addInitialGrid();
-  /// Ends every modifying operation: seeding quadtree up to date, revision bumped.
-  void finish();
+  /// Ends every modifying operation, also when it throws: the seeding quadtree is up to
+  /// date (so that concurrent queries only read it) and the revision is bumped.
+  struct Modification {
+    BackgroundMesh2d& mesh;
+    ~Modification() {
+      mesh.tri_.seeds();
+      ++mesh.revision_;
+    }
+  };
 
   Box2 bounds_;
   double epsM_, epsDelta_, lMax_;

@@ -64,6 +64,20 @@ bool BackgroundMesh2d::checkPoint(TriId t, Vec2& x) const {
          predicates::orient2d(c.data(), a.data(), x.data()) >= 0;
 }
 
+int BackgroundMesh2d::nearVertices(TriId t, std::uint32_t* out) const {
+  int n = 0;
+  const auto add = [&](TriId u) {
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t v = tri_.vertex(u, i).index;
+      if (std::find(out, out + n, v) == out + n) out[n++] = v;
+    }
+  };
+  add(t);
+  for (int i = 0; i < 3; ++i)
+    if (tri_.neighbour(t, i).valid()) add(tri_.neighbour(t, i));
+  return n;
+}
+
 Vec2 BackgroundMesh2d::refinementPoint(TriId t, const Vec2& x) const {
   const Vec2& a = tri_.point(tri_.vertex(t, 0));
   const Vec2& b = tri_.point(tri_.vertex(t, 1));
@@ -113,21 +127,22 @@ void BackgroundMesh2d::refine(const NeedsRefinement& needs, const NewVertexValue
 
 void BackgroundMesh2d::insertDiscrete(const Vec2& x, const Metric2d& m) {
   if (!x.allFinite()) throw MeshingError("background mesh control space: point source at a non-finite point");
+  const Modification done{*this};
   if (valued_)
     insertUpdate(clamp(x), m);
   else
     insertInitial(clamp(x), m);
-  finish();
 }
 
 void BackgroundMesh2d::insertInitial(const Vec2& p, const Metric2d& m) {
   std::uint32_t rng = 0x2545F491u;
   const TriId t = locateFrom(p, TriId(), rng);
   std::uint32_t set[kMaxNeighbourhood + 2];
-  const int n = gather(p, t, BackgroundInterpolation::Neighbourhood, set);
+  int n = gather(p, t, options_.interpolation, set);
   const Mat2 ap = auxExact_ ? auxExact_(p) : blendAux(p, set, n);
   // Proximity (step 1): merge into a vertex carrying a metric closer than ε_M in M_Q.
   const Mat2 tq = m.matrix() * ap;
+  n = nearVertices(t, set);
   int best = -1;
   double bestD = epsM_;
   for (int i = 0; i < n; ++i) {
@@ -167,9 +182,8 @@ void BackgroundMesh2d::insertUpdate(const Vec2& p, const Metric2d& m) {
   const Metric2d updated = intersect(m, current);        // step 3
   if (metricDifference(updated, current) < epsDelta_) return;  // step 4
   const Mat2 tq = m.matrix() * ap;
-  // Proximity of control vertices (3.4.1 step 1): the natural neighbours of Q include its
-  // nearest vertex.
-  n = gather(p, t, BackgroundInterpolation::Neighbourhood, set);
+  // Proximity of control vertices (3.4.1 step 1).
+  n = nearVertices(t, set);
   int best = -1;
   double bestD = epsM_;
   for (int i = 0; i < n; ++i) {
@@ -230,6 +244,7 @@ void BackgroundMesh2d::initializeVertices() {
     if (valued_) return;
     throw MeshingError("background mesh control space: no metric source to initialize the control vertices from");
   }
+  const Modification done{*this};
   const VertexGraph g = graph();
   std::vector<double> len(g.edges.size());
   for (std::size_t e = 0; e < g.edges.size(); ++e) len[e] = (point(g.edges[e][1]) - point(g.edges[e][0])).norm();
@@ -237,7 +252,6 @@ void BackgroundMesh2d::initializeVertices() {
   for (std::size_t v = 0; v < metric_.size(); ++v) length_[v] = metric_[v].inverseMatrix();
   valued_ = true;
   pending_ = 0;
-  finish();
 }
 
 // ---- continuous sources (sec. 3.4.2) ----
@@ -259,6 +273,7 @@ void BackgroundMesh2d::addInitialGrid() {
 }
 
 void BackgroundMesh2d::setContinuous(const MetricFn& source) {
+  const Modification done{*this};
   const bool had = valued_;
   const bool exact = !had && pending_ == 0;  // the field must reproduce the source
   if (!had) addInitialGrid();
@@ -299,12 +314,12 @@ void BackgroundMesh2d::setContinuous(const MetricFn& source) {
     return true;
   };
   refine(needs, values);
-  finish();
 }
 
 // ---- parameterization (sec. 3.4.3) ----
 
 void BackgroundMesh2d::adaptAux(const MatFn& exact) {
+  const Modification done{*this};
   for (int v = 0; v < vertexCount(); ++v) aux_[v] = exact(clamp(point(v)));
   hasAux_ = true;
   auxExact_ = exact;
@@ -324,7 +339,6 @@ void BackgroundMesh2d::adaptAux(const MatFn& exact) {
     return true;
   };
   refine(needs, values);
-  finish();
 }
 
 }  // namespace aniso

@@ -303,6 +303,7 @@ VertexGraph BackgroundMesh3d::graph() const {
 
 int BackgroundMesh3d::smoothGradation(double gamma) {
   if (!valued_) failFresh(bounds_.lo);
+  const Modification done{*this};
   const VertexGraph g = graph();
   std::vector<Vec3> d(g.edges.size());
   for (std::size_t e = 0; e < g.edges.size(); ++e) d[e] = point(g.edges[e][1]) - point(g.edges[e][0]);
@@ -310,7 +311,6 @@ int BackgroundMesh3d::smoothGradation(double gamma) {
   const int rounds = smoothByEdgeMarking<3>(g, d, gamma, metric_, changed);
   for (std::size_t v = 0; v < metric_.size(); ++v)
     if (changed[v]) length_[v] = metric_[v].inverseMatrix();
-  finish();
   return rounds;
 }
 
@@ -321,11 +321,11 @@ void BackgroundMesh3d::forEachVertex(const VertexVisitor& visit) const {
 
 void BackgroundMesh3d::modifyVertices(const VertexModifier& modify) {
   if (!valued_) return;
+  const Modification done{*this};
   for (int v = 0; v < vertexCount(); ++v) {
     Metric3d m = metric_[v];
     if (modify(point(v), m)) setVertex(v, m);
   }
-  finish();
 }
 
 ControlSpaceGrid BackgroundMesh3d::grid() const {

@@ -9,6 +9,9 @@
 // control vertices too. Walks start at the last located tetrahedron when the query is
 // near it, else at a tetrahedron of the nearest vertex found in a VertexSeedOctree
 // (BackgroundMeshSeeds.h), updated with every insertion.
+// Continuous sources start from the regular grid with its interior coordinates shifted
+// by up to a tenth of a step (deterministically): an exact grid is cospherical
+// everywhere, which makes the kernel's insertion several times slower.
 // Field: interpolation sets A_s / A_t / A_o over tetrahedra (A_o: every tetrahedron whose
 // circumsphere strictly contains the point), weights ω_i = |Q − P_i|⁻² in space (eq. 3.2),
 // length tensors averaged (eq. 2.18 n-point form), ε_M shortcut with
@@ -103,6 +106,9 @@ class BackgroundMesh3d {
   Metric3d fieldNear(const Vec3& p, del3d::TetId near) const;
   [[noreturn]] void failFresh(const Vec3& x) const;
 
+  /// Candidates of the ε_M proximity check (see BackgroundMesh2d): the vertices of t and
+  /// of the tetrahedra sharing a face with it (at most 8).
+  int nearVertices(del3d::TetId t, std::uint32_t* out) const;
   Inserted insertVertex(const Vec3& p, const Metric3d& m, bool known, del3d::TetId near);
   void appendStar(int v, std::vector<del3d::TetId>& out) const;
   void neighbours(int v, std::vector<int>& out) const;
@@ -118,7 +124,11 @@ class BackgroundMesh3d {
   void setVertex(int v, const Metric3d& m);
   void intersectVertex(int v, const Metric3d& m);
   void addInitialGrid();
-  void finish() { ++revision_; }
+  /// Ends every modifying operation, also when it throws: the revision is bumped.
+  struct Modification {
+    BackgroundMesh3d& mesh;
+    ~Modification() { ++mesh.revision_; }
+  };
 
   Box3 bounds_;
   double epsM_, epsDelta_, lMax_;

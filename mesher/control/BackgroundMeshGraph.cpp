@@ -18,12 +18,28 @@ constexpr double kGradationChangeTolerance = 1e-9;
 }  // namespace
 
 VertexGraph makeVertexGraph(int vertexCount, std::vector<std::array<int, 2>> pairs) {
-  VertexGraph g;
-  for (auto& p : pairs)
+  // Counting sort by the smaller end, then a sort of each (short) bucket by the other:
+  // linear in the number of pairs up to the vertex degree, where one global sort of the
+  // 6 pairs per tetrahedron dominated the smoothing of large 3D meshes.
+  std::vector<int> first(vertexCount + 1, 0);
+  for (auto& p : pairs) {
     if (p[0] > p[1]) std::swap(p[0], p[1]);
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  g.edges = std::move(pairs);
+    ++first[p[0] + 1];
+  }
+  for (int v = 0; v < vertexCount; ++v) first[v + 1] += first[v];
+  std::vector<int> other(pairs.size());
+  {
+    std::vector<int> fill(first.begin(), first.end() - 1);
+    for (const auto& p : pairs) other[fill[p[0]]++] = p[1];
+  }
+  VertexGraph g;
+  g.edges.reserve(pairs.size() / 2 + 1);
+  for (int a = 0; a < vertexCount; ++a) {
+    const auto begin = other.begin() + first[a], end = other.begin() + first[a + 1];
+    std::sort(begin, end);
+    for (auto it = begin; it != end; ++it)
+      if (it == begin || *it != *(it - 1)) g.edges.push_back({a, *it});
+  }
   g.start.assign(vertexCount + 1, 0);
   for (const auto& e : g.edges) {
     ++g.start[e[0] + 1];

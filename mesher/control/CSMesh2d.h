@@ -8,15 +8,17 @@
 // Structure and field: BackgroundMesh2d (see BackgroundMesh2d.h for the interpolation
 // sets A_s / A_t / A_o of sec. 3.4.5 with the inverse squared-distance weights of eq. 3.2
 // in S^R and the ε_M shortcut, the kernel's enclosing box whose 4 corners are control
-// vertices too, and the thread-safety design). The interpolation set is chosen in
-// BackgroundMeshOptions (default A_t, measured there).
+// vertices too, and the thread-safety design). The interpolation set and the check
+// points of the continuous adaptation are chosen in BackgroundMeshOptions (defaults A_t
+// and the thesis' centroid; measurements there).
 //
 // Procedures:
 //   insertDiscreteSource  fresh (sec. 3.4.1 "setting initial control space"): the point
 //                         becomes a control vertex carrying its metric, inserted with local
 //                         retriangulation (Bowyer–Watson of the kernel) — unless a vertex
-//                         carrying a metric is closer than ε_M in M_sQ M_p, which is then
-//                         intersected with M_sQ instead. initializeControlVertices gives
+//                         carrying a metric is closer than ε_M in M_sQ M_p (among the
+//                         vertices of the containing triangle and of its edge neighbours),
+//                         which is then intersected with M_sQ instead. initializeControlVertices gives
 //                         the box corners (and any vertex without a metric) metrics by
 //                         extrapolation along the mesh edges.
 //                         valued ("updating", as 3.3.1): nothing when δ_M(M_sQ, field) or
