@@ -97,6 +97,12 @@ BoundaryTriangulation triangulateBoundary(const FlatBoundary& boundary, const Co
       }
     } else if (r.status == InsertStatus::Duplicate) {
       const std::uint32_t other = r.vertex.index < nodeOfVertex.size() ? nodeOfVertex[r.vertex.index] : kNone;
+      if (other != kNone && boundary.node[other] == boundary.node[k]) {
+        // The same global node twice at the same (u, v): the loops touch at a vertex (an
+        // inner loop touching the outer one on a seam, a pinched loop). One vertex serves both.
+        out.vertexOf[k] = r.vertex;
+        continue;
+      }
       out.problems.push_back("boundary " + boundary.describe(k) + " coincides with " +
                              (other != kNone ? boundary.describe(other) : std::string("a box corner")) +
                              " in (u, v)");

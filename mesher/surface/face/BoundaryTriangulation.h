@@ -11,8 +11,10 @@
 // vertex k of the FaceMesh): every node is a distinct vertex in (u, v), also where the same
 // global node appears twice (seam) or consecutively (pole).
 //
+// Two boundary nodes at the same (u, v) with the same global node (loops touching at a
+// vertex) share one vertex of the triangulation.
 // Problems reported (the triangulation is then unusable for meshing; nothing throws):
-//   • two boundary nodes at the same (u, v) (the loops touch or repeat a point);
+//   • two different global nodes at the same (u, v);
 //   • a node the kernel refuses even with the identity metric (should not happen).
 #include <cstdint>
 #include <string>
