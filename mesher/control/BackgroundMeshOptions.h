@@ -13,17 +13,17 @@
 //                  point (the containing element included).
 // Default: Element (A_t), chosen by measurement (Release, shared 2-core machine):
 //   accuracy — mean / max δ_M to the analytic field at 20000 random points after the
-//   continuous adaptation with the same set (test MethodsAgainstAnalyticField, swirl,
-//   ε_δ = 0.2; 3D: the octree test's twist field):
+//   continuous adaptation with the same set (ε_δ = 0.2; 2D: the swirl field of test
+//   MethodsAgainstAnalyticField; 3D: the twist field of the octree tests):
 //     2D  A_s 0.063 / 0.84   A_t 0.018 / 0.26   A_o 0.020 / 0.35
-//     3D  A_s 0.040 / 0.41   A_t 0.009 / 0.21   A_o 0.014 / 0.20
+//     3D  A_s 0.040 / 0.56   A_t 0.009 / 0.25   A_o 0.014 / 0.22
 //   speed — getMetric() at random points of the bench_control_space meshes
-//   (BM_Mesh2dQuery / BM_Mesh3dQuery, one thread):
-//     2D  A_s 4.8 M/s   A_t 2.2 M/s   A_o 0.62 M/s   (quadtree 12.8 M/s)
-//     3D  A_s 2.6 M/s   A_t 2.0 M/s   A_o 0.16 M/s   (octree 7.6 M/s)
+//   (BM_Mesh2dQuery / BM_Mesh3dQuery, one thread, 20–35 k control vertices):
+//     2D  A_s 5.5 M/s   A_t 2.6 M/s   A_o 0.75 M/s   (quadtree 15.7 M/s)
+//     3D  A_s 3.2 M/s   A_t 2.4 M/s   A_o 0.23 M/s   (octree 8.7 M/s)
 // A_t is as accurate as A_o (more, on average: the natural neighbourhood pulls in farther
-// vertices whose weight is not negligible) and 4–12× faster; A_s is the fastest but only
-// fit for nearly constant fields (the thesis says as much): its error is the jump
+// vertices whose weight is not negligible) and 3.5–10× faster; A_s is the fastest but
+// only fit for nearly constant fields (the thesis says as much): its error is the jump
 // between neighbouring vertices.
 //
 // Check points of the continuous adaptation: the thesis compares at the middle point of
@@ -32,7 +32,9 @@
 // weighs in; checking the edge midpoints as well (CentroidEdges) catches that. Measured
 // on AN1 (control_mesh_test): from the default grid, fraction of random points within
 // ε_δ 0.987 → 0.997 (A_t); from a coarse grid 0.91 → 1.0 (9 → 49 control vertices); on
-// the bench field, mean δ_M to the source 0.061 → 0.034 with 1.5× the control vertices.
+// the bench fields, mean δ_M to the source 0.061 → 0.034 (2D) and 0.046 → 0.022 (3D)
+// with 1.5–1.7× the control vertices. (Continuous sources only; the parameterization
+// adaptation checks the centroid.)
 #include <cstddef>
 
 #include "mesher/core/MeshOptions.h"

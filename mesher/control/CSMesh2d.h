@@ -18,9 +18,9 @@
 //                         retriangulation (Bowyer–Watson of the kernel) — unless a vertex
 //                         carrying a metric is closer than ε_M in M_sQ M_p (among the
 //                         vertices of the containing triangle and of its edge neighbours),
-//                         which is then intersected with M_sQ instead. initializeControlVertices gives
-//                         the box corners (and any vertex without a metric) metrics by
-//                         extrapolation along the mesh edges.
+//                         which is then intersected with M_sQ instead.
+//                         initializeControlVertices gives the box corners (and any vertex
+//                         without a metric) metrics by extrapolation along the mesh edges.
 //                         valued ("updating", as 3.3.1): nothing when δ_M(M_sQ, field) or
 //                         δ_M(min_M(M_sQ, field), field) < ε_δ; proximity as above; when
 //                         the containing triangle has an edge longer than l_Mmax in M_sQ

@@ -14,6 +14,7 @@
 #include <thread>
 #include <vector>
 
+#include "mesher/control/BackgroundMeshSeeds.h"
 #include "mesher/control/CSAnalytic2d.h"
 #include "mesher/control/CSAnalytic3d.h"
 #include "mesher/control/CSMesh2d.h"
@@ -794,4 +795,22 @@ TEST(ControlMesh3d, GridExportQueryCacheAndBadInput) {
   EXPECT_EQ(cache.hits(), 1u);
   EXPECT_EQ(cache.misses(), 2u);
   EXPECT_THROW(CSMesh3d(Box3(), params), InputError);
+}
+
+TEST(ControlMesh3d, VertexSeedOctreeFindsInsertedPointsAndAlwaysAnswers) {
+  VertexSeedOctree seeds(kCube, 4);
+  EXPECT_EQ(seeds.nearest(Vec3(0.5, 0.5, 0.5)), VertexSeedOctree::kNone);
+  const auto pts = randomPoints<3>(2000, 43);
+  // A cluster makes deep leaves next to empty ones.
+  std::vector<Vec3> all(pts.begin(), pts.end());
+  for (const Vec3& p : randomPoints<3>(500, 47)) all.push_back(Vec3(0.1, 0.1, 0.1) + 1e-3 * p);
+  for (std::size_t v = 0; v < all.size(); ++v) seeds.insert(static_cast<std::uint32_t>(v), all[v]);
+  EXPECT_EQ(seeds.size(), all.size());
+  for (std::size_t v = 0; v < all.size(); v += 7) EXPECT_EQ(seeds.nearest(all[v]), v);
+  for (const Vec3& q : randomPoints<3>(500, 53, -0.5, 1.5)) {
+    const std::uint32_t v = seeds.nearest(q);
+    ASSERT_LT(v, all.size());
+    // Not the exact nearest, but one from the region of q.
+    EXPECT_LT((all[v] - q.cwiseMax(Vec3::Zero()).cwiseMin(Vec3::Ones())).norm(), 0.5);
+  }
 }
