@@ -52,6 +52,57 @@ void parallelFor(int n, int threads, Work work, const char* phase) {
 
 bool faceMeshed(const Model& m, int f) { return !m.faces[f].loops.empty(); }
 
+/// Removes pairs of triangles of one face that have the same three nodes with opposite
+/// orientations, from index `first` on. They arise where a face's parametric mesh folds
+/// onto itself in 3D (at a pole next to a seam both sides of the seam can close the same
+/// triangle); as a 2-chain such a pair sums to zero, so removing it leaves the mesh's
+/// boundary unchanged. Returns the number of triangles removed.
+int cancelFoldedPairs(SurfaceMesh& mesh, std::size_t first) {
+  struct Key {
+    std::array<int, 3> sorted;
+    bool even;  ///< orientation class of the node order
+    std::size_t index;
+  };
+  std::vector<Key> keys;
+  for (std::size_t t = first; t < mesh.triangles.size(); ++t) {
+    std::array<int, 3> n = mesh.triangles[t];
+    // Rotate so the smallest node is first; the parity of the rest gives the orientation.
+    const int k = static_cast<int>(std::min_element(n.begin(), n.end()) - n.begin());
+    std::rotate(n.begin(), n.begin() + k, n.end());
+    const bool even = n[1] < n[2];
+    std::array<int, 3> s = n;
+    std::sort(s.begin(), s.end());
+    keys.push_back({s, even, t});
+  }
+  std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
+    return a.sorted != b.sorted ? a.sorted < b.sorted : a.index < b.index;
+  });
+  std::vector<std::uint8_t> drop(mesh.triangles.size(), 0);
+  for (std::size_t i = 0; i < keys.size();) {
+    std::size_t j = i;
+    while (j < keys.size() && keys[j].sorted == keys[i].sorted) ++j;
+    // Pair up opposite orientations within the group.
+    std::vector<std::size_t> pos, neg;
+    for (std::size_t k = i; k < j; ++k) (keys[k].even ? pos : neg).push_back(keys[k].index);
+    for (std::size_t k = 0; k < std::min(pos.size(), neg.size()); ++k) drop[pos[k]] = drop[neg[k]] = 1;
+    i = j;
+  }
+  std::size_t w = first;
+  int removed = 0;
+  for (std::size_t t = first; t < mesh.triangles.size(); ++t) {
+    if (drop[t]) {
+      ++removed;
+      continue;
+    }
+    mesh.triangles[w] = mesh.triangles[t];
+    mesh.triangleFace[w] = mesh.triangleFace[t];
+    ++w;
+  }
+  mesh.triangles.resize(w);
+  mesh.triangleFace.resize(w);
+  return removed;
+}
+
 }  // namespace
 
 bool SurfaceMeshResult::ok() const {
@@ -158,6 +209,8 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
     if (!cs[f] || !meshes[f].ok()) continue;
     const size_t before = r.mesh.triangles.size();
     addFaceMesh(model, f, meshes[f].mesh, r.mesh);
+    if (const int folded = cancelFoldedPairs(r.mesh, before))
+      logDebug("face " + std::to_string(f + 1) + ": " + std::to_string(folded) + " folded triangles removed");
     r.faces[f].triangles = static_cast<int>(r.mesh.triangles.size() - before);
     r.quality.merge(r.faces[f].quality);
   }
