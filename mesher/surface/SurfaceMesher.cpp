@@ -9,10 +9,10 @@
 
 #include "mesher/core/Error.h"
 #include "mesher/core/Log.h"
-#include "mesher/metric/MeanRatio.h"
 #include "mesher/sizing/BoundaryUpdate.h"
 #include "mesher/sizing/FaceControlSpace.h"
 #include "mesher/surface/ContourDiscretization.h"
+#include "mesher/surface/improve/FaceQuality.h"
 
 namespace aniso {
 namespace {
@@ -109,27 +109,6 @@ bool SurfaceMeshResult::ok() const {
   return std::all_of(faces.begin(), faces.end(), [](const FaceOutcome& f) { return f.problems.empty(); });
 }
 
-MetricQuality faceMeshQuality(const FaceMesh& mesh, const ControlSpace2d& cs) {
-  MetricQuality q;
-  std::vector<std::pair<int, int>> edges;
-  edges.reserve(mesh.triangles.size() * 3);
-  for (const auto& t : mesh.triangles) {
-    const Vec2& a = mesh.uv[t[0]];
-    const Vec2& b = mesh.uv[t[1]];
-    const Vec2& c = mesh.uv[t[2]];
-    q.eta.add(meanRatio(cs.getMetric((a + b + c) / 3).transformation(), a, b, c));
-    for (int k = 0; k < 3; ++k) edges.emplace_back(std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]));
-  }
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  for (const auto& [i, j] : edges) {
-    const Vec2& a = mesh.uv[i];
-    const Vec2& b = mesh.uv[j];
-    q.mu.add((cs.getMetric(0.5 * (a + b)).transformation() * (b - a)).norm());
-  }
-  return q;
-}
-
 SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
   const Model& model = *in.model;
   const int nf = static_cast<int>(model.faces.size());
@@ -199,7 +178,11 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
     FaceOutcome& o = r.faces[f];
     o.stats = meshes[f].stats;
     o.problems = meshes[f].problems;
-    if (meshes[f].ok()) o.quality = faceMeshQuality(meshes[f].mesh, *cs[f]);
+    if (meshes[f].ok()) {
+      const FaceMesh& fm = meshes[f].mesh;
+      const FaceQuality q = faceQuality(fm.uv, fm.triangles, *cs[f]);
+      o.quality = {q.eta, q.mu, q.ek};
+    }
   }, "faces");
   r.times.emplace_back("faces", since(t));
 

@@ -28,13 +28,14 @@ struct SurfaceMesherInput {
   FaceMesherOptions face;
 };
 
-/// Quality in metric space (thesis 2.5) of one face or of the whole mesh.
+/// Quality in metric space (thesis 2.5) of one face or of the whole mesh: η_M, μ_M and
+/// E_K as FaceQuality (improve/FaceQuality.h) measures them.
 struct MetricQuality {
-  QualityStats eta;  ///< mean ratio η_M per triangle (M at the centroid)
-  QualityStats mu;   ///< metric edge length μ_M per edge (M at the midpoint, eq. 2.14)
+  QualityStats eta, mu, ek;
   void merge(const MetricQuality& o) {
     eta.merge(o.eta);
     mu.merge(o.mu);
+    ek.merge(o.ek);
   }
 };
 
@@ -56,8 +57,5 @@ struct SurfaceMeshResult {
 /// Throws MeshingError only for errors that stop everything (e.g. an edge that cannot be
 /// discretized); a face that fails is reported in faces[f].problems and left unmeshed.
 SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in);
-
-/// η_M and μ_M of a face mesh in the face's metric.
-MetricQuality faceMeshQuality(const FaceMesh& mesh, const ControlSpace2d& cs);
 
 }  // namespace aniso

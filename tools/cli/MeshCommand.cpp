@@ -74,11 +74,13 @@ static void fillSurfaceReport(const SurfaceMeshResult& sr, io::Report& report) {
   };
   report.quality["eta_M"] = stats(sr.quality.eta);
   report.quality["mu_M"] = stats(sr.quality.mu);
+  report.quality["E_K"] = stats(sr.quality.ek);
   nlohmann::ordered_json faces = nlohmann::ordered_json::array();
   for (size_t f = 0; f < sr.faces.size(); ++f) {
     const FaceOutcome& o = sr.faces[f];
     faces.push_back({{"face", f + 1}, {"triangles", o.triangles}, {"eta_M", o.quality.eta.count() ? o.quality.eta.mean() : 0.0},
                      {"mu_M", o.quality.mu.count() ? o.quality.mu.mean() : 0.0},
+                     {"E_K", o.quality.ek.count() ? o.quality.ek.mean() : 0.0},
                      {"missing_boundary_edges", o.stats.missingBoundaryEdges}});
     for (const std::string& p : o.problems) report.failures.push_back({"face " + std::to_string(f + 1), p});
   }
