@@ -287,16 +287,27 @@ void TreeControlSpace<D>::setContinuous(const MetricFn& source) {
       const int n = work.back();
       work.pop_back();
       if (!tree_.isLeaf(n)) continue;
-      const Vec centre = tree_.nodeCentre(n), half = Vec::Constant(0.5);
-      const Metric<D> exact = source(centre);
-      const Metric<D> interpolated = metricIn(n, half);
-      // Fresh: the field must reproduce the source. Valued: only where the source asks for
-      // a finer metric than the field gives (where earlier sources were finer, splitting
-      // could never bring the two closer).
-      const Metric<D> target = continuousExact_ ? exact : intersect(interpolated, exact);
-      if (metricDifference(target, interpolated) <= epsDelta_) continue;
-      if (belowResolution(n, exact)) continue;
-      splitLeaf(n);
+      // The source is compared with the field at the leaf's centre and at the centres of
+      // its would-be children: the centre alone misses a feature that vanishes there (the
+      // curvature of SURF1, eq. A.3, is zero at the centre of its domain and the whole patch
+      // stayed at h_max).
+      bool split = false;
+      for (int k = -1; k < (1 << D) && !split; ++k) {
+        Vec local = Vec::Constant(0.5);
+        if (k >= 0)
+          for (int d = 0; d < D; ++d) local[d] = (k >> d) & 1 ? 0.75 : 0.25;
+        const Vec at = tree_.nodeLo(n) + local.cwiseProduct(tree_.nodeSize(n));
+        const Metric<D> exact = source(at);
+        const Metric<D> interpolated = metricIn(n, local);
+        // Fresh: the field must reproduce the source. Valued: only where the source asks for
+        // a finer metric than the field gives (where earlier sources were finer, splitting
+        // could never bring the two closer).
+        const Metric<D> target = continuousExact_ ? exact : intersect(interpolated, exact);
+        if (metricDifference(target, interpolated) <= epsDelta_) continue;
+        if (belowResolution(n, exact)) continue;
+        split = true;
+      }
+      if (split) splitLeaf(n);
     }
   } catch (...) {
     continuous_ = nullptr;
