@@ -55,6 +55,41 @@ void insertContourCurvature(CSQuadtree2d& cs, const Model& model, int face, cons
   }
 }
 
+/// The user's 3D sizing restricted to the face (alg. 3.2 step 4). The global metric is a
+/// continuous source. A local source usually covers a small part of a face, which the
+/// continuous adaptation (it compares at a few points per control element) would miss: the
+/// face is sampled on a (u, v) grid fine enough for the source's size and every sample inside
+/// the source becomes a point source, which refines the control space around it.
+void insertUserSizing(CSQuadtree2d& cs, const UserSizing& user, const ParametricSurface& surface,
+                      const Box2& bounds, double gMin, double hMax) {
+  auto restricted = [&](const Vec2& uv, const Metric3d& m3) {
+    const SurfaceD1 d = surface.d1(uv);
+    return restrictToSurface(m3, d.pu, d.pv, surface.parameterizationTensor(uv, gMin));
+  };
+  if (user.global) {
+    const Metric3d g = *user.global;
+    cs.setContinuousSource(CSAnalytic2d(bounds, [&](const Vec2& uv) { return restricted(uv, g); }));
+  }
+  if (user.sources.empty()) return;
+  // The face's extent in space, from a coarse sample.
+  Box3 faceBox;
+  for (int i = 0; i <= 8; ++i)
+    for (int j = 0; j <= 8; ++j)
+      faceBox.add(surface.point(bounds.lo + Vec2(i / 8.0, j / 8.0).cwiseProduct(bounds.size())));
+  const double extent = std::max(faceBox.diagonal(), 1e-300);
+  for (const SizingSource& src : user.sources) {
+    const double h = src.metric.axes().lengths.minCoeff();
+    const int n = std::clamp(static_cast<int>(std::ceil(2 * extent / h)), 8, 512);
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= n; ++j) {
+        const Vec2 uv = bounds.lo + Vec2(double(i) / n, double(j) / n).cwiseProduct(bounds.size());
+        if (!src.contains(surface.point(uv))) continue;
+        const Metric2d m = restricted(uv, src.metric);
+        if (m.angleLengths().h1 < hMax) cs.insertDiscreteSource(uv, m);
+      }
+  }
+}
+
 }  // namespace
 
 double parameterizationGuard(const SizingParameters& params, double modelDiagonal) {
@@ -85,16 +120,7 @@ std::unique_ptr<CSQuadtree2d> buildFaceControlSpace(const FaceSizingInput& in) {
     }
     // 4: the user's control spaces.
     if (in.analytic) cs->superpose(*in.analytic);
-    if (in.user && !in.user->empty()) {
-      const UserSizing& user = *in.user;
-      const Metric2d none = Metric2d::isotropic(sizing.hMax);
-      cs->setContinuousSource(CSAnalytic2d(bounds, [&](const Vec2& uv) {
-        const SurfaceD1 d = surface->d1(uv);
-        const std::optional<Metric3d> m3 = user.metricAt(d.p);
-        if (!m3) return none;
-        return restrictToSurface(*m3, d.pu, d.pv, surface->parameterizationTensor(uv, gMin));
-      }));
-    }
+    if (in.user && !in.user->empty()) insertUserSizing(*cs, *in.user, *surface, bounds, gMin, sizing.hMax);
     // 6: contour curvature.
     if (!in.params.size) insertContourCurvature(*cs, model, face, *surface, gMin, sizing);
     // 7, 8.

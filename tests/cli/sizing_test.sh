@@ -50,5 +50,21 @@ assert np.all(h2 <= h1 * (1 + 1e-9)), (h1, h2)
 [ $rc -eq 2 ] && grep -q "out of range" "$t/e" && [ ! -e "$t/x.vtu" ] && ok face-out-of-range || bad "face-out-of-range: $rc $(cat "$t/e")"
 "$cli" sizing "$models/cylinder.step" -o "$t/x.msh" 2> "$t/e"; rc=$?
 [ $rc -eq 2 ] && [ ! -e "$t/x.msh" ] && ok not-vtu || bad "not-vtu: $rc"
+# a user sizing source (--sizing) refines the surface mesh where it touches the surface, and
+# only there: a ball of radius 2 at a point of the top rim asks for h = 0.2
+echo '{"sources": [{"type": "point", "at": [10, 0, 40], "radius": 2, "h": 0.2}]}' > "$t/src.json"
+"$cli" mesh "$models/cylinder.step" --dim 2 -o "$t/src.msh" --sizing "$t/src.json" 2> "$t/e"; rc=$?
+if [ $rc -eq 0 ] && py "
+import meshio, numpy as np
+m = meshio.read('$t/src.msh'); P = m.points
+T = np.vstack([c.data for c in m.cells if c.type == 'triangle'])
+E = np.vstack([T[:, [0, 1]], T[:, [1, 2]], T[:, [2, 0]]])
+L = np.linalg.norm(P[E[:, 0]] - P[E[:, 1]], axis=1)
+d = np.linalg.norm(0.5 * (P[E[:, 0]] + P[E[:, 1]]) - [10, 0, 40], axis=1)
+near, far = L[d < 1.5], L[d > 8]
+assert len(near) > 50, len(near)
+assert np.median(near) < 0.35, ('edges inside the source', np.median(near))
+assert np.median(far) > 1.0, ('edges far from the source', np.median(far))
+"; then ok user-source-refines; else bad "user-source-refines: exit $rc $(cat "$t/e")"; fi
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

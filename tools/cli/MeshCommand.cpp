@@ -52,7 +52,6 @@ void checkArguments(const MeshArgs& a) {
     throw InputError(a.output + ": the " + ext + " writer is not available yet in this build (use .msh .stl .obj .off)");
   const std::string bad = a.options.sizing.check();
   if (!bad.empty()) throw InputError(a.file + ": " + bad);
-  if (!a.options.sizingFile.empty()) (void)io::readSizingFile(a.options.sizingFile);  // throws on a bad file
   const auto dir = std::filesystem::path(a.output).parent_path();
   if (!dir.empty() && !std::filesystem::is_directory(dir))
     throw InputError(a.output + ": output folder does not exist");
@@ -101,6 +100,8 @@ int runMesh(const MeshArgs& args) {
   const auto t0 = Clock::now();
   auto seconds = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
   checkArguments(args);
+  // The sizing file is read (and checked) before the model, so a bad one fails fast.
+  const UserSizing user = args.options.sizingFile.empty() ? UserSizing{} : io::readSizingFile(args.options.sizingFile);
 
   io::Report report;
   report.input = args.file;
@@ -139,7 +140,6 @@ int runMesh(const MeshArgs& args) {
                        report.failures.front().what);
   }
 
-  const UserSizing user = args.options.sizingFile.empty() ? UserSizing{} : io::readSizingFile(args.options.sizingFile);
   const std::unique_ptr<ControlSpace2d> analytic = analyticControlSpace(in);
   SurfaceMesherInput sin;
   sin.model = &topo;
