@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cctype>
-#include <filesystem>
+
+#include "mesher/core/FileExtension.h"
 
 namespace aniso::cad {
 
 std::optional<CadFormat> formatFromExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  const std::string ext = lowerExtension(path);
   if (ext == ".step" || ext == ".stp") return CadFormat::Step;
   if (ext == ".igs" || ext == ".iges") return CadFormat::Iges;
   if (ext == ".brep" || ext == ".brp") return CadFormat::Brep;

@@ -1,4 +1,5 @@
 #include "io/AnalyticModel.h"
+#include "io/JsonFields.h"
 
 #include <muParser.h>
 #include <nlohmann/json.hpp>
@@ -6,9 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 
 #include "mesher/core/Error.h"
+#include "mesher/core/FileExtension.h"
 #include "mesher/geometry/Circle2d.h"
 #include "mesher/geometry/CurveOnSurface3d.h"
 #include "mesher/geometry/ExpressionSurface.h"
@@ -21,35 +22,7 @@ namespace {
 
 using nlohmann::json;
 
-struct Reader {
-  const std::string& path;
-
-  [[noreturn]] void fail(const std::string& what) const { throw InputError(path + ": " + what); }
-
-  const json& field(const json& j, const char* key, const std::string& where) const {
-    if (!j.is_object() || !j.contains(key)) fail(where + " has no \"" + key + "\"");
-    return j.at(key);
-  }
-  double number(const json& j, const std::string& where) const {
-    if (!j.is_number()) fail(where + " must be a number");
-    const double x = j.get<double>();
-    if (!std::isfinite(x)) fail(where + " must be finite");
-    return x;
-  }
-  Vec2 vec2(const json& j, const std::string& where) const {
-    if (!j.is_array() || j.size() != 2) fail(where + " must be [a, b]");
-    return {number(j[0], where), number(j[1], where)};
-  }
-  Vec3 vec3(const json& j, const std::string& where) const {
-    if (!j.is_array() || j.size() != 3) fail(where + " must be [x, y, z]");
-    return {number(j[0], where), number(j[1], where), number(j[2], where)};
-  }
-  std::string expression(const json& j, const std::string& where) const {
-    if (j.is_number()) return j.dump();
-    if (!j.is_string() || j.get<std::string>().empty()) fail(where + " must be an expression string");
-    return j.get<std::string>();
-  }
-};
+using Reader = JsonFields;
 
 /// Loop builder: adds vertices, edges (line or circle pcurves) and uses to the model.
 struct LoopBuilder {
@@ -158,24 +131,12 @@ void checkSizingExpressions(const Reader& r, const AnalyticSizing& s, const Vec2
 }  // namespace
 
 bool isAnalyticModelPath(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext == ".json";
+  return lowerExtension(path) == ".json";
 }
 
 AnalyticModel readAnalyticModel(const std::string& path) {
-  Reader r{path};
-  if (!std::filesystem::exists(path)) r.fail("no such file");
-  if (!std::filesystem::is_regular_file(path)) r.fail("not a regular file");
-  std::ifstream in(path);
-  if (!in) r.fail("cannot be opened for reading");
-  json j;
-  try {
-    j = json::parse(in);
-  } catch (const json::exception& e) {
-    r.fail(std::string("not a valid JSON analytic model: ") + e.what());
-  }
-  if (!j.is_object()) r.fail("an analytic model must be a JSON object");
+  const Reader r(path);
+  const json j = r.parseObject("analytic model");
 
   AnalyticModel out;
   out.name = j.value("name", std::filesystem::path(path).stem().string());

@@ -8,6 +8,7 @@
 
 #include "io/MeshWriter.h"
 #include "mesher/core/Error.h"
+#include "mesher/core/FileExtension.h"
 
 namespace aniso::io {
 
@@ -48,8 +49,7 @@ void writeOpenMeshFormat(const SurfaceMesh& mesh, const std::string& path, const
 }
 
 void writeSurfaceMesh(const Model& model, const SurfaceMesh& mesh, const std::string& path, const WriteOptions& opt) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string ext = lowerExtension(path);
   if (ext == ".msh") return writeMsh41(model, mesh, path, opt);
   if (ext == ".stl" || ext == ".obj" || ext == ".off") return writeOpenMeshFormat(mesh, path, opt);
   throw InputError(path + ": this output format is not written yet for surface meshes");

@@ -1,10 +1,9 @@
 #include "io/SizingFile.h"
+#include "io/JsonFields.h"
 
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 
 #include "mesher/core/Error.h"
 
@@ -13,21 +12,9 @@ namespace {
 
 using nlohmann::json;
 
-struct Reader {
-  const std::string& path;
-  [[noreturn]] void fail(const std::string& what) const { throw InputError(path + ": " + what); }
-  double number(const json& j, const std::string& where) const {
-    if (!j.is_number() || !std::isfinite(j.get<double>())) fail(where + " must be a finite number");
-    return j.get<double>();
-  }
-  Vec3 vec3(const json& j, const std::string& where) const {
-    if (!j.is_array() || j.size() != 3) fail(where + " must be [x, y, z]");
-    return {number(j[0], where), number(j[1], where), number(j[2], where)};
-  }
-  const json& field(const json& j, const char* key, const std::string& where) const {
-    if (!j.contains(key)) fail(where + " has no \"" + key + "\"");
-    return j.at(key);
-  }
+/// The sizing file's own field: "h" as a length or as lengths with directions.
+struct Reader : JsonFields {
+  using JsonFields::JsonFields;
   /// "h": a length or three lengths with optional "directions".
   Metric3d metric(const json& j, const std::string& where) const {
     const json& h = field(j, "h", where);
@@ -57,16 +44,8 @@ struct Reader {
 }  // namespace
 
 UserSizing readSizingFile(const std::string& path) {
-  Reader r{path};
-  if (!std::filesystem::is_regular_file(path)) r.fail("sizing file not found");
-  std::ifstream in(path);
-  json j;
-  try {
-    j = json::parse(in);
-  } catch (const json::exception& e) {
-    r.fail(std::string("not a valid JSON sizing file: ") + e.what());
-  }
-  if (!j.is_object()) r.fail("a sizing file must be a JSON object");
+  const Reader r(path);
+  const json j = r.parseObject("sizing file");
   UserSizing out;
   if (j.contains("global")) out.global = r.metric(j["global"], "global");
   if (j.contains("sources")) {

@@ -1,5 +1,7 @@
 #include "mesher/control/ExtendedSource2d.h"
 
+#include "mesher/core/Segment.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -42,14 +44,6 @@ std::vector<Vec2> offsetOutline(const std::vector<Vec2>& pts, const std::vector<
   const double aStart = angleOf(-normals[0]);
   appendArc(out, pts[0], r, aStart, aStart - std::numbers::pi);
   return out;
-}
-
-/// Distance from x to segment ab.
-double segmentDistance(const Vec2& x, const Vec2& a, const Vec2& b) {
-  const Vec2 d = b - a;
-  const double l2 = d.squaredNorm();
-  const double t = l2 > 0 ? std::clamp((x - a).dot(d) / l2, 0.0, 1.0) : 0.0;
-  return (x - (a + t * d)).norm();
 }
 
 /// Points along a polyline at equal metric spacing ≤ 1, both ends included.
@@ -125,7 +119,7 @@ SegmentSource2d::SegmentSource2d(const Vec2& a, const Vec2& b, double r) : Exten
   if (!a.allFinite() || !b.allFinite()) throw InputError("segment metric source: an end point is not finite");
 }
 
-double SegmentSource2d::distance(const Vec2& x) const { return segmentDistance(x, a_, b_); }
+double SegmentSource2d::distance(const Vec2& x) const { return distanceToSegment<Vec2>(x, a_, b_); }
 
 Box2 SegmentSource2d::bounds() const {
   Box2 b;
@@ -174,7 +168,7 @@ double CurveSource2d::distance(const Vec2& x) const {
     const double d = (points_[i] - x).norm();
     if (d < best) best = d, nearest = i;
   }
-  for (std::size_t i = 0; i + 1 < points_.size(); ++i) best = std::min(best, segmentDistance(x, points_[i], points_[i + 1]));
+  for (std::size_t i = 0; i + 1 < points_.size(); ++i) best = std::min(best, distanceToSegment<Vec2>(x, points_[i], points_[i + 1]));
   const double t = curve_->project(x, params_[nearest], t1_, t2_);
   return std::min(best, (curve_->point(t) - x).norm());
 }

@@ -1,5 +1,7 @@
 #include "mesher/control/ExtendedSource3d.h"
 
+#include "mesher/core/Segment.h"
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -100,10 +102,7 @@ SegmentSource3d::SegmentSource3d(const Vec3& a, const Vec3& b, double r) : a_(a)
 }
 
 bool SegmentSource3d::contains(const Vec3& x) const {
-  const Vec3 d = b_ - a_;
-  const double l2 = d.squaredNorm();
-  const double t = l2 > 0 ? std::clamp((x - a_).dot(d) / l2, 0.0, 1.0) : 0.0;
-  return (x - (a_ + t * d)).norm() <= r_ + tolerance(bounds());
+  return distanceToSegment<Vec3>(x, a_, b_) <= r_ + tolerance(bounds());
 }
 
 Box3 SegmentSource3d::bounds() const {

@@ -4,16 +4,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mesher/core/Segment.h"
 namespace aniso {
 
 namespace {
-
-double distanceToSegment(const Vec3& x, const Vec3& a, const Vec3& b) {
-  const Vec3 ab = b - a;
-  const double l2 = ab.squaredNorm();
-  const double s = l2 > 0 ? std::clamp((x - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
-  return (x - (a + s * ab)).norm();
-}
 
 struct Refiner {
   const std::function<Vec3(double)>& point;

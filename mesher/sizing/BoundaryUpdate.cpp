@@ -9,6 +9,7 @@
 
 #include "mesher/metric/MetricComparison.h"
 #include "mesher/metric/MetricIntersection.h"
+#include "mesher/core/Segment.h"
 
 namespace aniso {
 namespace {
@@ -18,14 +19,6 @@ struct Segment {
   int loop, index;  ///< position in the loops
   double along;     ///< real length along the loop from its first node to the midpoint
 };
-
-/// Closest point to p on segment [a, b] (in the coordinates given).
-Vec2 closestOnSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 ab = b - a;
-  const double l2 = ab.squaredNorm();
-  const double t = l2 > 0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
-  return a + t * ab;
-}
 
 /// Bucket grid over the segments' (u, v) boxes.
 class SegmentGrid {
@@ -149,7 +142,7 @@ BoundaryUpdateStats updateFromBoundary(CSAdaptive2d& cs, const FaceBoundary& bou
       for (int t : grid.cell(c)) {
         if (t == s || stamp[t] == s) continue;
         stamp[t] = s;
-        const Vec2 p = closestOnSegment(mid, segs[t].a, segs[t].b);
+        const Vec2 p = closestPointOnSegment<Vec2>(mid, segs[t].a, segs[t].b);
         const double d = (m * (p - mid)).norm();
         if (d < best && !sameSideOfGap(sg, segs[t], (mp * (p - mid)).norm(), loopLength)) {
           best = d;

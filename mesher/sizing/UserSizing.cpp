@@ -5,17 +5,9 @@
 #include <Eigen/LU>
 
 #include "mesher/metric/MetricIntersection.h"
+#include "mesher/core/Segment.h"
 
 namespace aniso {
-namespace {
-double distanceToSegment(const Vec3& x, const Vec3& a, const Vec3& b) {
-  const Vec3 ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double t = len2 > 0 ? std::clamp((x - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (x - (a + t * ab)).norm();
-}
-}  // namespace
-
 bool SizingSource::contains(const Vec3& x) const {
   switch (kind) {
     case Kind::Point: return (x - a).norm() <= radius;

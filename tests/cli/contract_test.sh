@@ -37,7 +37,6 @@ p = j['prepared']
 assert p['solids'] == 2 and p['shared_faces'] == 1, p
 assert sorted(s['name'] for s in p['solid_list']) == ['BASE', 'BLOCK'], p['solid_list']
 assert abs(p['volume'] - 20000) < 1e-3 * 20000, p['volume']
-assert p['faces'] == j['faces'] + 1 - 1 or p['faces'] > j['faces'] - 1
 "; then ok assembly-conformal; else bad "assembly-conformal: $(cat "$t/e") $(head -c 600 "$t/a")"; fi
 "$cli" info --json --no-fragment "$models/assembly2.step" > "$t/a" 2> "$t/e"
 if py "

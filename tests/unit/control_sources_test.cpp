@@ -143,7 +143,9 @@ TEST(ControlSources, ExtendedSourcesBeforeInitializationAreAppliedAtInitializati
   cs.initializeControlVertices();
   cs.validate();
   cs.forEachControlVertex([](const Vec2& p, const Metric2d& m) {
-    if ((p - Vec2(0.3, 0.3)).norm() <= 0.1) EXPECT_LE(m.lengthAlong(Vec2(1, 0)), 0.01 * (1 + 1e-9));
+    if ((p - Vec2(0.3, 0.3)).norm() <= 0.1) {
+      EXPECT_LE(m.lengthAlong(Vec2(1, 0)), 0.01 * (1 + 1e-9));
+    }
   });
   EXPECT_LE(cs.getMetric(Vec2(0.75, 0.75)).sizing.lengthAlong(Vec2(1, 0)), 0.05 * (1 + 1e-9));
 }

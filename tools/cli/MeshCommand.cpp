@@ -8,18 +8,13 @@
 #include "io/Report.h"
 #include "io/SizingFile.h"
 #include "mesher/core/Error.h"
+#include "mesher/core/FileExtension.h"
 #include "tools/cli/Commands.h"
 #include "mesher/surface/SurfaceMesher.h"
 #include "tools/cli/ModelInput.h"
 
 namespace aniso::cli {
 namespace {
-
-std::string lowerExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
 
 nlohmann::ordered_json optionsJson(const MeshArgs& a) {
   const SizingParameters& s = a.options.sizing;

@@ -11,6 +11,7 @@
 #include "io/ControlSpaceVtu.h"
 #include "io/SizingFile.h"
 #include "mesher/core/Error.h"
+#include "mesher/core/FileExtension.h"
 #include "mesher/sizing/FaceControlSpace.h"
 #include "tools/cli/Commands.h"
 #include "tools/cli/ModelInput.h"
@@ -57,7 +58,7 @@ void appendFaceIn3d(const ControlSpaceGrid& g, const ParametricSurface& s, int f
 }  // namespace
 
 int runSizing(const SizingArgs& args) {
-  if (std::filesystem::path(args.output).extension() != ".vtu")
+  if (lowerExtension(args.output) != ".vtu")
     throw InputError(args.output + ": the control space is written as .vtu");
   const std::string bad = args.params.check();
   if (!bad.empty()) throw InputError(args.file + ": " + bad);

@@ -1,5 +1,7 @@
 #include "mesher/surface/face/Refinement.h"
 
+#include "mesher/core/Segment.h"
+
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -32,10 +34,7 @@ struct LowerPriority {
 
 /// Metric distance from p to the segment [x, y] under m.
 double segmentDistance(const Mat2& m, const Vec2& p, const Vec2& x, const Vec2& y) {
-  const Vec2 d = m * (p - x), e = m * (y - x);
-  const double ee = e.squaredNorm();
-  const double t = ee > 0 ? std::clamp(d.dot(e) / ee, 0.0, 1.0) : 0.0;
-  return (d - t * e).norm();
+  return distanceToSegment<Vec2>(m * p, m * x, m * y);
 }
 
 class Refiner {
