@@ -60,6 +60,7 @@ void writeMsh41(const Model& model, const SurfaceMesh& mesh, const std::string& 
       case NodeOn::Kind::Vertex: vertexNodes.at(on.entity).push_back(static_cast<int>(i)); break;
       case NodeOn::Kind::Edge: edgeNodes.at(on.entity).push_back(static_cast<int>(i)); break;
       case NodeOn::Kind::Face: faceNodes.at(on.entity).push_back(static_cast<int>(i)); break;
+      case NodeOn::Kind::Solid: break;  // no volume nodes in a surface mesh
     }
   }
   std::vector<std::vector<int>> faceTris(nf);

@@ -21,8 +21,9 @@
 namespace aniso {
 
 struct NodeOn {
-  enum class Kind : std::uint8_t { Vertex, Edge, Face } kind = Kind::Face;
-  int entity = -1;  ///< 0-based index of the model vertex, edge or face
+  /// Solid: a node inside a solid (volume meshes only), entity = the solid's index.
+  enum class Kind : std::uint8_t { Vertex, Edge, Face, Solid } kind = Kind::Face;
+  int entity = -1;  ///< 0-based index of the model vertex, edge, face or solid
   double t = 0;     ///< edge nodes: the edge's curve parameter
   Vec2 uv{0, 0};    ///< face nodes: parameters on that face
 };
@@ -32,6 +33,10 @@ struct SurfaceMesh {
   std::vector<NodeOn> nodeOn;
   std::vector<std::array<int, 3>> triangles;
   std::vector<int> triangleFace;  ///< 0-based model face of each triangle
+  /// Quadrilaterals (quad-dominant meshes, thesis 4.7–4.8): corners counter-clockwise seen
+  /// from the face's oriented normal, like the triangles. Empty for triangle meshes.
+  std::vector<std::array<int, 4>> quads;
+  std::vector<int> quadFace;  ///< 0-based model face of each quad
 
   int addNode(const Vec3& p, const NodeOn& on) {
     nodes.push_back(p);
