@@ -38,6 +38,14 @@ struct SurfaceMesh {
   std::vector<std::array<int, 4>> quads;
   std::vector<int> quadFace;  ///< 0-based model face of each quad
 
+  /// Quadratic elements (--order 2), empty for linear meshes. The mid-edge nodes are
+  /// ordinary nodes (appended to `nodes`, with the NodeOn of the entity they were projected
+  /// on). triangleMid[t][k] is the node on edge (k, k+1 mod 3) of triangles[t];
+  /// quadMid[q][k] the node on edge (k, k+1 mod 4) of quads[q] (8-node serendipity quads).
+  /// Writers permute to their format's node order.
+  std::vector<std::array<int, 3>> triangleMid;
+  std::vector<std::array<int, 4>> quadMid;
+
   int addNode(const Vec3& p, const NodeOn& on) {
     nodes.push_back(p);
     nodeOn.push_back(on);

@@ -23,6 +23,11 @@ struct VolumeMesh {
   SurfaceMesh surface;                     ///< nodes (all), boundary triangles with their faces
   std::vector<std::array<int, 4>> tets;    ///< positively oriented
   std::vector<int> tetSolid;               ///< 0-based model solid of each tetrahedron
+  /// Quadratic tetrahedra (--order 2), empty for linear meshes: tetMid[t][k] is the node on
+  /// the edge kTetEdges[k] of tets[t] (shared with surface.triangleMid on the boundary).
+  /// Writers permute to their format's order (Gmsh type 11 and Abaqus C3D10 differ).
+  std::vector<std::array<int, 6>> tetMid;
+  static constexpr int kTetEdges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
 
   const std::vector<Vec3>& nodes() const { return surface.nodes; }
 
