@@ -45,8 +45,10 @@ Progress::~Progress() {
 
 void Progress::update(double done, const std::string& detail) {
   const long long t = nowNs();
-  if (t - lastNs_ < 100'000'000) return;  // at most 10 updates per second
-  lastNs_ = t;
+  long long last = lastNs_.load(std::memory_order_relaxed);
+  // At most 10 updates per second; of concurrent callers only the one that moves the
+  // time stamp reports.
+  if (t - last < 100'000'000 || !lastNs_.compare_exchange_strong(last, t, std::memory_order_relaxed)) return;
   if (auto s = currentSink()) s->progress(phase_, done, total_, detail);
 }
 

@@ -3,6 +3,7 @@
 // writes to stdout or stderr: it calls log() and Progress, and the program that links the
 // library installs a LogSink deciding what reaches the terminal. Without a sink, nothing
 // is printed. Thread-safe.
+#include <atomic>
 #include <memory>
 #include <string>
 
@@ -30,7 +31,8 @@ inline void logWarning(const std::string& t) { log(LogLevel::Warning, t); }
 inline void logDebug(const std::string& t) { log(LogLevel::Debug, t); }
 
 /// A phase with progress: construct at the start, update() as work is done; the
-/// destructor ends it. Updates are rate-limited so that hot loops may call update() often.
+/// destructor ends it. Updates are rate-limited so that hot loops may call update() often,
+/// and update() may be called from any thread (the sink serializes its output).
 class Progress {
  public:
   Progress(std::string phase, double total);
@@ -42,7 +44,7 @@ class Progress {
  private:
   std::string phase_;
   double total_;
-  long long lastNs_ = 0;
+  std::atomic<long long> lastNs_{0};
 };
 
 }  // namespace aniso

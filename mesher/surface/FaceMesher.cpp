@@ -69,6 +69,7 @@ void runPipeline(const face::FlatBoundary& flat, const ControlSpace2d& cs, const
   ro.maxEdgeMetricLength = options.maxEdgeMetricLength;
   ro.mleToCcsQuality = options.mleToCcsQuality;
   ro.innerAngles = options.innerAnglesCriterion;
+  ro.onPrediction = options.onPrediction;
   const face::RefineStats rs = face::refineFace(tri, cs, ro);
   res.stats.insertedInner = static_cast<int>(rs.inserted);
   res.stats.cancelledInsertions = static_cast<int>(rs.cancelled);

@@ -18,6 +18,7 @@
 //   5 improvement (4.6, improveFaceMesh): smoothing and swaps, N_imp passes.
 // Boundary vertices never move and boundary edges are never flipped or split: the face
 // mesh conforms exactly to the given boundary, so neighbouring faces stay conforming.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,8 @@ struct FaceMesherOptions {
   int improvementPasses = 2;        ///< N_imp (alg. 4.2)
   bool innerAnglesCriterion = false;///< inner-angles Delaunay criterion (4.2.2) instead of the circumcircle
   unsigned seed = 12345;            ///< randomised boundary insertion order (deterministic)
+  /// Predicted final triangle count while refining (face::RefineOptions::onPrediction).
+  std::function<void(double)> onPrediction;
 };
 
 struct FaceMeshStats {

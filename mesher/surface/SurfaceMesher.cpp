@@ -4,11 +4,13 @@
 #include <atomic>
 #include <chrono>
 #include <exception>
+#include <functional>
 #include <mutex>
 #include <thread>
 
 #include "mesher/core/Error.h"
 #include "mesher/core/Log.h"
+#include "mesher/core/PredictionBoard.h"
 #include "mesher/sizing/BoundaryUpdate.h"
 #include "mesher/sizing/FaceControlSpace.h"
 #include "mesher/surface/ContourDiscretization.h"
@@ -20,17 +22,27 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
+/// The progress of a parallel phase: items done, and an optional detail (e.g. the predicted
+/// element count) refreshed with every report. tick() may be called from any thread.
+struct PhaseProgress {
+  PhaseProgress(const char* phase, int n, std::function<std::string()> detailFn = {})
+      : progress(phase, n), detail(std::move(detailFn)) {}
+  void tick() { progress.update(done.load(), detail ? detail() : std::string()); }
+  Progress progress;
+  std::atomic<int> done{0};
+  std::function<std::string()> detail;
+};
+
 /// Runs work(i) for i in [0, n) on `threads` threads (0 = all cores). The first exception
 /// thrown by any work item is rethrown after all threads have stopped.
 template <class Work>
-void parallelFor(int n, int threads, Work work, const char* phase) {
+void parallelFor(int n, int threads, Work work, PhaseProgress& progress) {
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   threads = std::min(threads, std::max(1, n));
-  std::atomic<int> next{0}, done{0};
+  std::atomic<int> next{0};
   std::exception_ptr error;
   std::mutex errorMutex;
-  Progress progress(phase, n);
-  auto run = [&](bool main) {
+  auto run = [&](bool) {
     for (int i = next++; i < n; i = next++) {
       try {
         work(i);
@@ -39,8 +51,8 @@ void parallelFor(int n, int threads, Work work, const char* phase) {
         if (!error) error = std::current_exception();
         next = n;
       }
-      ++done;
-      if (main) progress.update(done);  // Progress is updated from one thread only
+      ++progress.done;
+      progress.tick();
     }
   };
   std::vector<std::thread> pool;
@@ -48,6 +60,12 @@ void parallelFor(int n, int threads, Work work, const char* phase) {
   run(true);
   for (auto& t : pool) t.join();
   if (error) std::rethrow_exception(error);
+}
+
+template <class Work>
+void parallelFor(int n, int threads, Work work, const char* phase) {
+  PhaseProgress progress(phase, n);
+  parallelFor(n, threads, work, progress);
 }
 
 bool faceMeshed(const Model& m, int f) { return !m.faces[f].loops.empty(); }
@@ -172,26 +190,40 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
   // 3: faces.
   t = Clock::now();
   std::vector<FaceMeshResult> meshes(nf);
+  PredictionBoard predicted(nf);
+  PhaseProgress faceProgress("faces", nf, [&predicted] {
+    std::string text = std::to_string(static_cast<long long>(predicted.total()));
+    text.append(" triangles predicted");
+    return text;
+  });
   parallelFor(nf, in.options.threads, [&](int f) {
     if (!cs[f]) return;
-    meshes[f] = meshFace(boundaries[f], *cs[f], in.face);
+    FaceMesherOptions fo = in.face;
+    fo.onPrediction = [&predicted, &faceProgress, f](double n) {
+      predicted.post(f, n);
+      faceProgress.tick();
+    };
+    meshes[f] = meshFace(boundaries[f], *cs[f], fo);
+    predicted.post(f, static_cast<double>(meshes[f].mesh.triangles.size()));
     FaceOutcome& o = r.faces[f];
     o.stats = meshes[f].stats;
     o.problems = meshes[f].problems;
     if (meshes[f].ok()) {
-      const FaceMesh& fm = meshes[f].mesh;
+      FaceMesh& fm = meshes[f].mesh;
+      if (in.options.quad) o.quad = quad::convertToQuads(fm, *cs[f]);
       const FaceQuality q = faceQuality(fm.uv, fm.triangles, *cs[f]);
-      o.quality = {q.eta, q.mu, q.ek};
+      o.quality = {q.eta, in.options.quad ? o.quad.mu : q.mu, q.ek};
     }
-  }, "faces");
+  }, faceProgress);
   r.times.emplace_back("faces", since(t));
 
   // 4: assembly, in face order.
   t = Clock::now();
   for (int f = 0; f < nf; ++f) {
     if (!cs[f] || !meshes[f].ok()) continue;
-    const size_t before = r.mesh.triangles.size();
+    const size_t before = r.mesh.triangles.size(), quadsBefore = r.mesh.quads.size();
     addFaceMesh(model, f, meshes[f].mesh, r.mesh);
+    r.faces[f].quads = static_cast<int>(r.mesh.quads.size() - quadsBefore);
     if (const int folded = cancelFoldedPairs(r.mesh, before))
       logDebug("face " + std::to_string(f + 1) + ": " + std::to_string(folded) + " folded triangles removed");
     r.faces[f].triangles = static_cast<int>(r.mesh.triangles.size() - before);

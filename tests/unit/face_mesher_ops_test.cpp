@@ -214,6 +214,29 @@ TEST(FaceOperators, RefinementStopsAtTheInsertionLimit) {
   EXPECT_TRI_VALID(bt.tri, del2d::ValidateOptions{});
 }
 
+TEST(FaceOperators, RefinementPredictsTheFinalCount) {
+  // Thesis 6.5: eq. 6.2 first (a rough estimate), then eq. 6.1 while refining, which must
+  // approach the final count (fig. 6.16: within a few percent in 2D).
+  const double h = 0.01;
+  const auto cs = isotropicSpace(boxOf(0, 0, 1, 1), h);
+  const FaceBoundary b = polygonBoundary({rectangle(0, 0, 1, 1)}, h);
+  const FlatBoundary flat = flattenBoundary(b);
+  BoundaryTriangulation bt = triangulateBoundary(flat, *cs, 1);
+  ASSERT_TRUE(recoverBoundaryEdges(bt.tri, flat, bt.vertexOf, *cs).empty());
+  ASSERT_TRUE(removeOutside(bt.tri, flat, bt.vertexOf).empty());
+  std::vector<double> predictions;
+  RefineOptions ro;
+  ro.predictionInterval = 1000;
+  ro.onPrediction = [&](double n) { predictions.push_back(n); };
+  const RefineStats st = refineFace(bt.tri, *cs, ro);
+  const double final = static_cast<double>(bt.tri.numTriangles());
+  ASSERT_GE(predictions.size(), 5u);
+  EXPECT_EQ(predictions.front(), st.predictedTriangles);
+  EXPECT_GT(predictions.front(), 0.5 * final);
+  EXPECT_LT(predictions.front(), 2.0 * final);
+  EXPECT_NEAR(predictions.back(), final, 0.1 * final);
+}
+
 TEST(FaceOperators, VisibleWalkStopsAtContours) {
   // A C-shaped domain: from the lower arm the upper arm is behind the slot.
   const Polygon c = {Vec2(0, 0), Vec2(3, 0), Vec2(3, 1), Vec2(1, 1), Vec2(1, 2), Vec2(3, 2), Vec2(3, 3), Vec2(0, 3)};

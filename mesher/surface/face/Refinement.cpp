@@ -45,10 +45,13 @@ class Refiner {
 
   RefineStats run() {
     initialise();
+    if (opt_.onPrediction) opt_.onPrediction(stats_.predictedTriangles);
+    std::size_t pops = 0;
     while (!heap_.empty()) {
       std::pop_heap(heap_.begin(), heap_.end(), LowerPriority());
       const HeapEntry e = heap_.back();
       heap_.pop_back();
+      if (opt_.onPrediction && ++pops % opt_.predictionInterval == 0) opt_.onPrediction(predictFinal(e.q));
       const TriId t(e.tri);
       if (!tri_.isAlive(t) || stamp_[t] != e.stamp) continue;
       if (stats_.inserted >= stats_.insertionLimit) {
@@ -93,6 +96,13 @@ class Refiner {
     const auto expected = static_cast<std::size_t>(std::min(stats_.predictedTriangles, 2e8));
     tri_.reserve(tri_.numVertices() + expected / 2 + 16, tri_.triangleSlots() + expected + 16);
     heap_.reserve(std::max(heap_.capacity(), expected / 4));
+  }
+
+  /// Eq. 6.1: NT_c · q_t / q(K) for the worst triangle K of the heap (never below NT_c).
+  double predictFinal(double worst) const {
+    const double current = static_cast<double>(tri_.numTriangles());
+    if (!(worst > 0)) return current;
+    return std::max(current, current * opt_.qualityThreshold / worst);
   }
 
   void push(TriId t, double q) {

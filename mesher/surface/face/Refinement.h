@@ -40,6 +40,7 @@
 // The result is a valid triangulation (Validate2d.h) conforming to the same constrained
 // edges. Allocation: the heap and the per-slot arrays grow with the mesh only.
 #include <cstddef>
+#include <functional>
 
 #include "mesher/control/ControlSpace2d.h"
 #include "mesher/delaunay/Triangulation2d.h"
@@ -59,6 +60,11 @@ struct RefineOptions {
   /// of the empty circumcircle; the metric-jump rule then does not apply.
   bool innerAngles = false;
   std::size_t maxSwapsPerPoint = 50;  ///< inner-angles swaps per inserted node (Table 4.1)
+  /// Receives the predicted final triangle count (thesis 6.5): eq. 6.2 once the initial
+  /// triangles are evaluated, then eq. 6.1, NT_c · q_t / q(K_root), every
+  /// predictionInterval heap pops while refining. May be empty.
+  std::function<void(double)> onPrediction;
+  std::size_t predictionInterval = 4096;
 };
 
 struct RefineStats {
