@@ -1,123 +1,99 @@
-// Gmsh MSH 4.1 writer for surface meshes (format reference: the Gmsh manual, "MSH file
-// format version 4.1").
+// Gmsh MSH 4.1 writer (format reference: the Gmsh manual, "MSH file format version 4.1").
 #include <algorithm>
 #include <cstdint>
-#include <cstring>
-#include <iomanip>
 #include <ostream>
 #include <vector>
 
 #include "io/AtomicFile.h"
-#include "io/MeshWriter.h"
+#include "io/ElementOrder.h"
+#include "io/FormatWriters.h"
+#include "io/MshOut.h"
 #include "mesher/core/Error.h"
 
 namespace aniso::io {
-namespace {
 
-/// Writes either ASCII tokens or raw binary values, as MSH 4.1 asks for each section.
-class MshOut {
- public:
-  MshOut(std::ostream& o, bool binary) : o_(o), binary_(binary) { o_ << std::setprecision(17); }
-  template <class T>
-  void value(T v, char sep = ' ') {
-    if (binary_) {
-      o_.write(reinterpret_cast<const char*>(&v), sizeof(T));
-    } else {
-      o_ << v << sep;
-    }
+int gmshElementType(Shape s, bool quadratic) {
+  switch (s) {
+    case Shape::Triangle: return quadratic ? 9 : 2;
+    case Shape::Quad: return quadratic ? 16 : 3;
+    case Shape::Tet: return quadratic ? 11 : 4;
   }
-  void endLine() {
-    if (!binary_) o_ << '\n';
-  }
-  void text(const char* s) { o_ << s; }
-  bool binary() const { return binary_; }
-
- private:
-  std::ostream& o_;
-  bool binary_;
-};
-
-Box3 edgeBox(const Model& model, int e, const SurfaceMesh& mesh, const std::vector<std::vector<int>>& edgeNodes) {
-  Box3 b;
-  const ModelEdge& me = model.edges[e];
-  if (me.v0 >= 0) b.add(model.vertices[me.v0].p);
-  if (me.v1 >= 0) b.add(model.vertices[me.v1].p);
-  for (int n : edgeNodes[e]) b.add(mesh.nodes[n]);
-  return b;
+  return 0;
 }
 
-}  // namespace
+namespace {
 
-void writeMsh41(const Model& model, const SurfaceMesh& mesh, const std::string& path, const WriteOptions& opt) {
-  const int nv = static_cast<int>(model.vertices.size());
-  const int ne = static_cast<int>(model.edges.size());
-  const int nf = static_cast<int>(model.faces.size());
-  // Nodes grouped by the entity they lie on (dim, index).
-  std::vector<std::vector<int>> vertexNodes(nv), edgeNodes(ne), faceNodes(nf);
-  for (size_t i = 0; i < mesh.nodes.size(); ++i) {
-    const NodeOn& on = mesh.nodeOn[i];
-    switch (on.kind) {
-      case NodeOn::Kind::Vertex: vertexNodes.at(on.entity).push_back(static_cast<int>(i)); break;
-      case NodeOn::Kind::Edge: edgeNodes.at(on.entity).push_back(static_cast<int>(i)); break;
-      case NodeOn::Kind::Face: faceNodes.at(on.entity).push_back(static_cast<int>(i)); break;
-      case NodeOn::Kind::Solid: break;  // no volume nodes in a surface mesh
-    }
+/// Nodes grouped by the model entity they lie on: [kind][entity] -> node indices.
+std::array<std::vector<std::vector<int>>, 4> nodesByEntity(const OutputMesh& m) {
+  std::array<std::vector<std::vector<int>>, 4> by;
+  by[0].resize(m.model.vertices.size());
+  by[1].resize(m.model.edges.size());
+  by[2].resize(m.model.faces.size());
+  by[3].resize(m.model.solids.size());
+  for (size_t i = 0; i < m.surface.nodeOn.size(); ++i) {
+    const NodeOn& on = m.surface.nodeOn[i];
+    by[static_cast<int>(on.kind)][on.entity].push_back(static_cast<int>(i));
   }
-  std::vector<std::vector<int>> faceTris(nf);
-  for (size_t t = 0; t < mesh.triangles.size(); ++t) faceTris.at(mesh.triangleFace[t]).push_back(static_cast<int>(t));
-  std::vector<std::uint8_t> faceUsed(nf, 0);
-  for (int f = 0; f < nf; ++f) faceUsed[f] = !faceTris[f].empty();
+  return by;
+}
 
-  AtomicFile file(path, opt.binary);
-  std::ostream& o = file.stream();
-  MshOut w(o, opt.binary);
-  o << "$MeshFormat\n4.1 " << (opt.binary ? 1 : 0) << " 8\n";
-  if (opt.binary) {
-    const int one = 1;
-    o.write(reinterpret_cast<const char*>(&one), sizeof one);
-    o << '\n';
-  }
-  o << "$EndMeshFormat\n";
-
-  // Physical groups: one per meshed face, tag = face id.
-  int nPhys = 0;
-  for (int f = 0; f < nf; ++f) nPhys += faceUsed[f];
-  o << "$PhysicalNames\n" << nPhys << '\n';
-  for (int f = 0; f < nf; ++f)
-    if (faceUsed[f]) o << "2 " << f + 1 << " \"FACE" << f + 1 << "\"\n";
-  o << "$EndPhysicalNames\n";
-
-  // Entities: all model vertices and edges, the meshed faces.
+void writeEntities(const OutputMesh& m, MshOut& w, std::ostream& o,
+                   const std::array<std::vector<std::vector<int>>, 4>& byEntity, const std::vector<bool>& faces,
+                   const std::vector<bool>& solids) {
+  const Model& model = m.model;
+  const std::vector<Vec3>& p = m.nodes();
+  const auto nf = std::count(faces.begin(), faces.end(), true);
+  const auto ns = std::count(solids.begin(), solids.end(), true);
   o << "$Entities\n";
-  w.value<std::size_t>(nv);
-  w.value<std::size_t>(ne);
-  w.value<std::size_t>(nPhys);
-  w.value<std::size_t>(0);
+  w.value<std::size_t>(model.vertices.size());
+  w.value<std::size_t>(model.edges.size());
+  w.value<std::size_t>(static_cast<std::size_t>(nf));
+  w.value<std::size_t>(static_cast<std::size_t>(ns));
   w.endLine();
-  for (int v = 0; v < nv; ++v) {
-    w.value<int>(v + 1);
+  for (size_t v = 0; v < model.vertices.size(); ++v) {
+    w.value<int>(static_cast<int>(v) + 1);
     for (int k = 0; k < 3; ++k) w.value<double>(model.vertices[v].p[k]);
     w.value<std::size_t>(0);
     w.endLine();
   }
-  for (int e = 0; e < ne; ++e) {
-    const Box3 b = edgeBox(model, e, mesh, edgeNodes);
-    w.value<int>(e + 1);
-    for (int k = 0; k < 3; ++k) w.value<double>(b.lo[k]);
-    for (int k = 0; k < 3; ++k) w.value<double>(b.hi[k]);
-    w.value<std::size_t>(0);
+  auto box = [&](const Box3& b) {
+    for (int k = 0; k < 3; ++k) w.value<double>(b.empty() ? 0.0 : b.lo[k]);
+    for (int k = 0; k < 3; ++k) w.value<double>(b.empty() ? 0.0 : b.hi[k]);
+  };
+  // A surface or volume: its box, one physical group (same tag), its bounding entities.
+  auto bounded = [&](size_t index, const Box3& b, const std::vector<int>& bounding) {
+    w.value<int>(static_cast<int>(index) + 1);
+    box(b);
+    w.value<std::size_t>(1);
+    w.value<int>(static_cast<int>(index) + 1);
+    w.value<std::size_t>(bounding.size());
+    for (int tag : bounding) w.value<int>(tag);
+    w.endLine();
+  };
+  for (size_t e = 0; e < model.edges.size(); ++e) {
     const ModelEdge& me = model.edges[e];
+    Box3 b;
+    if (me.v0 >= 0) b.add(model.vertices[me.v0].p);
+    if (me.v1 >= 0) b.add(model.vertices[me.v1].p);
+    for (int n : byEntity[1][e]) b.add(p[n]);
+    w.value<int>(static_cast<int>(e) + 1);
+    box(b);
+    w.value<std::size_t>(0);
     const bool two = me.v0 >= 0 && me.v1 >= 0 && me.v0 != me.v1;
     w.value<std::size_t>(me.v0 < 0 ? 0 : (two ? 2 : 1));
     if (me.v0 >= 0) w.value<int>(me.v0 + 1);
     if (two) w.value<int>(-(me.v1 + 1));
     w.endLine();
   }
-  for (int f = 0; f < nf; ++f) {
-    if (!faceUsed[f]) continue;
-    Box3 b;
-    for (int t : faceTris[f])
-      for (int n : mesh.triangles[t]) b.add(mesh.nodes[n]);
+  std::vector<Box3> faceBox(model.faces.size());
+  std::array<int, 10> nodes{};
+  for (Shape s : {Shape::Triangle, Shape::Quad})
+    for (int i = 0, n = m.count(s); i < n; ++i) {
+      const int k = m.elementNodes(s, i, nodes);
+      for (int j = 0; j < k; ++j) faceBox[m.entityOf(s, i)].add(p[nodes[j]]);
+    }
+  for (size_t f = 0; f < model.faces.size(); ++f) {
+    if (!faces[f]) continue;
     std::vector<int> bounding;
     for (const Loop& loop : model.faces[f].loops)
       for (const EdgeUse& u : loop.uses) {
@@ -126,76 +102,113 @@ void writeMsh41(const Model& model, const SurfaceMesh& mesh, const std::string& 
             std::find(bounding.begin(), bounding.end(), -tag) == bounding.end())
           bounding.push_back(tag);
       }
-    w.value<int>(f + 1);
-    for (int k = 0; k < 3; ++k) w.value<double>(b.lo[k]);
-    for (int k = 0; k < 3; ++k) w.value<double>(b.hi[k]);
-    w.value<std::size_t>(1);
-    w.value<int>(f + 1);
-    w.value<std::size_t>(bounding.size());
-    for (int tag : bounding) w.value<int>(tag);
-    w.endLine();
+    bounded(f, faceBox[f], bounding);
   }
-  o << (opt.binary ? "\n" : "") << "$EndEntities\n";
+  std::vector<Box3> solidBox(model.solids.size());
+  for (int i = 0, n = m.count(Shape::Tet); i < n; ++i)
+    for (int v : m.volume->tets[i]) solidBox[m.volume->tetSolid[i]].add(p[v]);
+  for (size_t s = 0; s < model.solids.size(); ++s) {
+    if (!solids[s]) continue;
+    std::vector<int> bounding;
+    const ModelSolid& ms = model.solids[s];
+    std::vector<int> shells{ms.outerShell};
+    shells.insert(shells.end(), ms.voidShells.begin(), ms.voidShells.end());
+    for (int sh : shells) {
+      if (sh < 0) continue;
+      for (const FaceUse& fu : model.shells[sh].faces)
+        if (faces[fu.face]) bounding.push_back((fu.face + 1) * (fu.reversed ? -1 : 1));
+    }
+    bounded(s, solidBox[s], bounding);
+  }
+  w.endSection("$EndEntities");
+}
 
-  // Nodes: one block per entity holding nodes; tags are node index + 1.
-  struct Block {
-    int dim, tag;
-    const std::vector<int>* nodes;
-  };
-  std::vector<Block> blocks;
-  for (int v = 0; v < nv; ++v)
-    if (!vertexNodes[v].empty()) blocks.push_back({0, v + 1, &vertexNodes[v]});
-  for (int e = 0; e < ne; ++e)
-    if (!edgeNodes[e].empty()) blocks.push_back({1, e + 1, &edgeNodes[e]});
-  for (int f = 0; f < nf; ++f)
-    if (!faceNodes[f].empty()) blocks.push_back({2, f + 1, &faceNodes[f]});
-  const std::size_t nn = mesh.nodes.size();
+void writeNodes(const OutputMesh& m, MshOut& w, std::ostream& o,
+                const std::array<std::vector<std::vector<int>>, 4>& byEntity) {
+  std::size_t blocks = 0;
+  for (const auto& kind : byEntity)
+    for (const auto& list : kind) blocks += !list.empty();
+  const std::size_t nn = m.nodes().size();
   o << "$Nodes\n";
-  w.value<std::size_t>(blocks.size());
+  w.value<std::size_t>(blocks);
   w.value<std::size_t>(nn);
   w.value<std::size_t>(nn ? 1 : 0);
   w.value<std::size_t>(nn);
   w.endLine();
-  for (const Block& b : blocks) {
-    w.value<int>(b.dim);
-    w.value<int>(b.tag);
-    w.value<int>(0);
-    w.value<std::size_t>(b.nodes->size());
-    w.endLine();
-    for (int n : *b.nodes) {
-      w.value<std::size_t>(static_cast<std::size_t>(n) + 1);
+  for (int dim = 0; dim < 4; ++dim)
+    for (size_t e = 0; e < byEntity[dim].size(); ++e) {
+      const std::vector<int>& list = byEntity[dim][e];
+      if (list.empty()) continue;
+      w.value<int>(dim);
+      w.value<int>(static_cast<int>(e) + 1);
+      w.value<int>(0);
+      w.value<std::size_t>(list.size());
       w.endLine();
+      for (int n : list) {
+        w.value<std::size_t>(static_cast<std::size_t>(n) + 1);
+        w.endLine();
+      }
+      for (int n : list) {
+        for (int k = 0; k < 3; ++k) w.value<double>(m.nodes()[n][k]);
+        w.endLine();
+      }
     }
-    for (int n : *b.nodes) {
-      for (int k = 0; k < 3; ++k) w.value<double>(mesh.nodes[n][k]);
-      w.endLine();
-    }
-  }
-  o << (opt.binary ? "\n" : "") << "$EndNodes\n";
+  w.endSection("$EndNodes");
+}
 
-  // Elements: 3-node triangles (type 2), one block per face; tags in face order.
-  const std::size_t nt = mesh.triangles.size();
+void writeElements(const OutputMesh& m, MshOut& w, std::ostream& o) {
+  struct Block {
+    Shape shape;
+    int dim, entity;
+    const std::vector<int>* elements;
+  };
+  const auto tris = m.byEntity(Shape::Triangle), quads = m.byEntity(Shape::Quad), tets = m.byEntity(Shape::Tet);
+  std::vector<Block> blocks;
+  for (size_t f = 0; f < tris.size(); ++f) {
+    if (!tris[f].empty()) blocks.push_back({Shape::Triangle, 2, static_cast<int>(f), &tris[f]});
+    if (!quads[f].empty()) blocks.push_back({Shape::Quad, 2, static_cast<int>(f), &quads[f]});
+  }
+  for (size_t s = 0; s < tets.size(); ++s)
+    if (!tets[s].empty()) blocks.push_back({Shape::Tet, 3, static_cast<int>(s), &tets[s]});
+  const std::size_t ne = static_cast<std::size_t>(m.count(Shape::Triangle) + m.count(Shape::Quad) + m.count(Shape::Tet));
   o << "$Elements\n";
-  w.value<std::size_t>(nPhys);
-  w.value<std::size_t>(nt);
-  w.value<std::size_t>(nt ? 1 : 0);
-  w.value<std::size_t>(nt);
+  w.value<std::size_t>(blocks.size());
+  w.value<std::size_t>(ne);
+  w.value<std::size_t>(ne ? 1 : 0);
+  w.value<std::size_t>(ne);
   w.endLine();
   std::size_t tag = 1;
-  for (int f = 0; f < nf; ++f) {
-    if (!faceUsed[f]) continue;
-    w.value<int>(2);
-    w.value<int>(f + 1);
-    w.value<int>(2);
-    w.value<std::size_t>(faceTris[f].size());
+  std::array<int, 10> nodes{};
+  for (const Block& b : blocks) {
+    const bool q = m.quadratic(b.shape);
+    const auto& perm = b.shape == Shape::Tet && q ? order::kGmshTet10 : order::kIdentity;
+    w.value<int>(b.dim);
+    w.value<int>(b.entity + 1);
+    w.value<int>(gmshElementType(b.shape, q));
+    w.value<std::size_t>(b.elements->size());
     w.endLine();
-    for (int t : faceTris[f]) {
+    for (int e : *b.elements) {
+      const int k = m.elementNodes(b.shape, e, nodes);
       w.value<std::size_t>(tag++);
-      for (int n : mesh.triangles[t]) w.value<std::size_t>(static_cast<std::size_t>(n) + 1);
+      for (int j = 0; j < k; ++j) w.value<std::size_t>(static_cast<std::size_t>(nodes[perm[j]]) + 1);
       w.endLine();
     }
   }
-  o << (opt.binary ? "\n" : "") << "$EndElements\n";
+  w.endSection("$EndElements");
+}
+
+}  // namespace
+
+void writeMsh41(const OutputMesh& m, const std::string& path, const WriteOptions& opt) {
+  const std::vector<bool> faces = m.meshedFaces(), solids = m.meshedSolids();
+  const auto byEntity = nodesByEntity(m);
+  AtomicFile file(path, opt.binary);
+  std::ostream& o = file.stream();
+  MshOut w(o, opt.binary);
+  writeMshHeader(o, "4.1", opt.binary, m);
+  writeEntities(m, w, o, byEntity, faces, solids);
+  writeNodes(m, w, o, byEntity);
+  writeElements(m, w, o);
   file.commit();
 }
 

@@ -1,0 +1,73 @@
+// Gmsh MSH 2.2 writer, ASCII or binary (format reference: the Gmsh manual, "MSH file format
+// version 2 (Legacy)"). Every element carries two tags: its physical group (the face id
+// for triangles and quads, the solid id for tetrahedra, as in $PhysicalNames) and its
+// elementary entity (the same ids).
+#include <ostream>
+#include <vector>
+
+#include "io/AtomicFile.h"
+#include "io/ElementOrder.h"
+#include "io/FormatWriters.h"
+#include "io/MshOut.h"
+
+namespace aniso::io {
+
+void writeMsh22(const OutputMesh& m, const std::string& path, const WriteOptions& opt) {
+  AtomicFile file(path, opt.binary);
+  std::ostream& o = file.stream();
+  MshOut w(o, opt.binary);
+  writeMshHeader(o, "2.2", opt.binary, m);
+
+  const std::vector<Vec3>& p = m.nodes();
+  o << "$Nodes\n" << p.size() << '\n';
+  for (size_t i = 0; i < p.size(); ++i) {
+    w.value<int>(static_cast<int>(i) + 1);
+    for (int k = 0; k < 3; ++k) w.value<double>(p[i][k]);
+    w.endLine();
+  }
+  w.endSection("$EndNodes");
+
+  // Elements: per face its triangles then its quads, then per solid its tetrahedra.
+  const auto tris = m.byEntity(Shape::Triangle), quads = m.byEntity(Shape::Quad), tets = m.byEntity(Shape::Tet);
+  struct Block {
+    Shape shape;
+    int entity;
+    const std::vector<int>* elements;
+  };
+  std::vector<Block> blocks;
+  for (size_t f = 0; f < tris.size(); ++f) {
+    if (!tris[f].empty()) blocks.push_back({Shape::Triangle, static_cast<int>(f), &tris[f]});
+    if (!quads[f].empty()) blocks.push_back({Shape::Quad, static_cast<int>(f), &quads[f]});
+  }
+  for (size_t s = 0; s < tets.size(); ++s)
+    if (!tets[s].empty()) blocks.push_back({Shape::Tet, static_cast<int>(s), &tets[s]});
+  o << "$Elements\n" << m.count(Shape::Triangle) + m.count(Shape::Quad) + m.count(Shape::Tet) << '\n';
+  int tag = 1;
+  std::array<int, 10> nodes{};
+  for (const Block& b : blocks) {
+    const bool q = m.quadratic(b.shape);
+    const int type = gmshElementType(b.shape, q);
+    const auto& perm = b.shape == Shape::Tet && q ? order::kGmshTet10 : order::kIdentity;
+    if (opt.binary) {  // binary header: type, number of elements, number of tags
+      w.value<int>(type);
+      w.value<int>(static_cast<int>(b.elements->size()));
+      w.value<int>(2);
+    }
+    for (int e : *b.elements) {
+      const int k = m.elementNodes(b.shape, e, nodes);
+      w.value<int>(tag++);
+      if (!opt.binary) {
+        w.value<int>(type);
+        w.value<int>(2);
+      }
+      w.value<int>(b.entity + 1);
+      w.value<int>(b.entity + 1);
+      for (int j = 0; j < k; ++j) w.value<int>(nodes[perm[j]] + 1);
+      w.endLine();
+    }
+  }
+  w.endSection("$EndElements");
+  file.commit();
+}
+
+}  // namespace aniso::io

@@ -1,0 +1,62 @@
+#pragma once
+// OutputMesh — what every writer reads: a surface mesh, or a volume mesh with its surface,
+// seen as one list of nodes and three element kinds (triangles, quads, tetrahedra), each
+// linear or quadratic. Element nodes come in our canonical order: the corners, then the
+// mid-edge nodes in the data contracts' edge order (SurfaceMesh::triangleMid / quadMid,
+// VolumeMesh::kTetEdges); io/ElementOrder.h permutes them to each format's order.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "mesher/model/Model.h"
+#include "mesher/surface/SurfaceMesh.h"
+#include "mesher/volume/VolumeMesh.h"
+
+namespace aniso::io {
+
+enum class Shape { Triangle, Quad, Tet };
+
+struct OutputMesh {
+  const Model& model;
+  const SurfaceMesh& surface;             ///< all nodes; the boundary (face) elements
+  const VolumeMesh* volume = nullptr;     ///< null for a surface mesh
+
+  OutputMesh(const Model& m, const SurfaceMesh& s) : model(m), surface(s) {}
+  OutputMesh(const Model& m, const VolumeMesh& v) : model(m), surface(v.surface), volume(&v) {}
+
+  bool isVolume() const { return volume != nullptr; }
+  const std::vector<Vec3>& nodes() const { return surface.nodes; }
+  int count(Shape s) const;
+  bool quadratic(Shape s) const;
+  /// Nodes per element of this shape: 3/6, 4/8, 4/10.
+  int nodesPer(Shape s) const;
+  /// The element's nodes (0-based) in canonical order; returns their number.
+  int elementNodes(Shape s, int i, std::array<int, 10>& out) const;
+  /// 0-based model face of a triangle or quad, solid of a tetrahedron.
+  int entityOf(Shape s, int i) const;
+
+  /// Elements of a shape grouped by entity (face for triangles/quads, solid for tets),
+  /// each list in increasing element index.
+  std::vector<std::vector<int>> byEntity(Shape s) const;
+  /// Faces (0-based) that hold at least one triangle or quad.
+  std::vector<bool> meshedFaces() const;
+  /// Solids (0-based) that hold at least one tetrahedron (none for a surface mesh).
+  std::vector<bool> meshedSolids() const;
+  /// Throws MeshingError naming `path` if the mesh's arrays are inconsistent (an element
+  /// pointing outside the nodes, an entity outside the model, missing mid-edge arrays).
+  void check(const std::string& path) const;
+};
+
+/// The physical-group name of every solid: its part name (or "SOLID<n>" without one),
+/// made unique when parts repeat ("nut", "nut_2", "nut_3"). With `abaqus`, names are
+/// first made valid Abaqus/CalculiX identifiers (letters, digits and '_', starting with a
+/// letter; other characters become '_') and never collide with the sets the INP writer
+/// defines itself (NALL, EALL, FACE<n>, S_FACE<n>), compared case-insensitively.
+std::vector<std::string> solidGroupNames(const Model& model, bool abaqus = false);
+
+/// Mean ratio of a triangle in 3D (1 equilateral, 0 degenerate), of a tetrahedron
+/// (negative when inverted), scaled Jacobian of a quad (min over the corners of the
+/// normalized corner Jacobian against the quad's mean normal). Corners only.
+double elementQuality(const OutputMesh& mesh, Shape s, int i);
+
+}  // namespace aniso::io

@@ -1,0 +1,152 @@
+// The writers on hand-made meshes: group names, the INP surfaces on the right CAD faces,
+// byte-identical output, atomic failure. (The real clients read the files in
+// tests/io/clients_test.py and ccx_tension_test.sh.)
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "io/ElementOrder.h"
+#include "io/MeshWriter.h"
+#include "io/OutputMesh.h"
+#include "mesher/core/Error.h"
+#include "tests/io/BoxFixture.h"
+
+using namespace aniso;
+using namespace aniso::io;
+namespace fs = std::filesystem;
+namespace fx = aniso::testing;
+
+namespace {
+
+fs::path tempDir() {
+  const fs::path d = fs::temp_directory_path() / ("aniso_io_test_" + std::to_string(::getpid()) +
+                                                  "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  fs::create_directories(d);
+  return d;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+Model namedSolids(const std::vector<std::string>& names) {
+  Model m;
+  for (const auto& n : names) m.solids.push_back({n, -1, {}});
+  return m;
+}
+
+}  // namespace
+
+TEST(IoWriters, SolidNamesAreMadeUnique) {
+  const auto n = solidGroupNames(namedSolids({"nut", "bolt", "nut", "", "nut_2", "nut"}));
+  const std::vector<std::string> want = {"nut", "bolt", "nut_2", "SOLID4", "nut_2_2", "nut_3"};
+  EXPECT_EQ(n, want);
+}
+
+TEST(IoWriters, AbaqusNamesAreIdentifiersAvoidingOurSets) {
+  const auto n = solidGroupNames(namedSolids({"my part", "2x", "EALL", "face3", "Nut", "nut", "S_FACE12", "FACEPLATE"}), true);
+  const std::vector<std::string> want = {"my_part", "P_2x", "EALL_2", "face3_2", "Nut", "nut_2", "S_FACE12_2", "FACEPLATE"};
+  EXPECT_EQ(n, want);
+}
+
+TEST(IoWriters, InpSurfacesLieOnTheirCadFaces) {
+  const Vec3 size(4, 2, 3);
+  for (bool quadratic : {false, true}) {
+    const Model model = fx::boxModel(size, "BOX");
+    const VolumeMesh vm = fx::boxTets(size, {2, 2, 2}, quadratic);
+    const fs::path file = tempDir() / "box.inp";
+    writeVolumeMesh(model, vm, file.string());
+    // Parse the elements and the surfaces back.
+    std::ifstream in(file);
+    std::map<long long, std::vector<long long>> elements;
+    std::map<int, std::vector<std::pair<long long, int>>> surfaces;
+    std::string line, section;
+    int face = 0;
+    while (std::getline(in, line)) {
+      if (line.rfind("**", 0) == 0) continue;
+      if (line[0] == '*') {
+        section = line.substr(0, line.find(','));
+        if (section == "*SURFACE") face = std::stoi(line.substr(line.find("S_FACE") + 6));
+        continue;
+      }
+      std::replace(line.begin(), line.end(), ',', ' ');
+      std::istringstream s(line);
+      if (section == "*ELEMENT") {
+        long long id, n;
+        s >> id;
+        while (s >> n) elements[id].push_back(n);
+      } else if (section == "*SURFACE") {
+        long long id;
+        std::string sk;
+        s >> id >> sk;
+        surfaces[face].push_back({id, std::stoi(sk.substr(1))});
+      }
+    }
+    ASSERT_EQ(elements.size(), vm.tets.size());
+    ASSERT_EQ(surfaces.size(), 6u);
+    const double sides[6] = {0, size.x(), 0, size.y(), 0, size.z()};
+    for (const auto& [f, entries] : surfaces) {
+      const int axis = (f - 1) / 2;
+      EXPECT_EQ(entries.size(), 8u) << "FACE" << f;  // 2x2 cells, 2 triangles each
+      for (const auto& [id, k] : entries) {
+        const auto& e = elements.at(id);
+        ASSERT_EQ(e.size(), quadratic ? 10u : 4u);
+        const int* corners = order::kAbaqusTetFaces[k - 1];
+        for (int j = 0; j < 3; ++j)
+          EXPECT_DOUBLE_EQ(vm.nodes()[e[corners[j]] - 1][axis], sides[f - 1]) << "FACE" << f << " element " << id << " S" << k;
+      }
+    }
+  }
+}
+
+TEST(IoWriters, OutputIsByteIdentical) {
+  const Vec3 size(1, 1, 1);
+  const Model model = fx::boxModel(size, "BOX");
+  const VolumeMesh vm = fx::boxTets(size, {2, 1, 1}, true);
+  const fs::path d = tempDir();
+  for (const char* name : {"a.msh", "a.inp", "a.vtu", "a.unv"})
+    for (bool binary : {false, true}) {
+      WriteOptions o;
+      o.binary = binary;
+      writeVolumeMesh(model, vm, (d / name).string(), o);
+      const std::string first = slurp(d / name);
+      writeVolumeMesh(model, vm, (d / name).string(), o);
+      EXPECT_EQ(first, slurp(d / name)) << name;
+      EXPECT_FALSE(first.empty());
+    }
+}
+
+TEST(IoWriters, FailuresLeaveNoFile) {
+  const Vec3 size(1, 1, 1);
+  const Model model = fx::boxModel(size, "BOX");
+  VolumeMesh vm = fx::boxTets(size, {1, 1, 1}, false);
+  const fs::path d = tempDir();
+  EXPECT_THROW(writeVolumeMesh(model, vm, (d / "a.xyz").string()), InputError);
+  WriteOptions o;
+  o.mshVersion = 30;
+  EXPECT_THROW(writeVolumeMesh(model, vm, (d / "a.msh").string(), o), InputError);
+  EXPECT_THROW(writeVolumeMesh(model, vm, (d / "no" / "c.msh").string()), InputError);  // no such folder
+  vm.tets[0][2] = 10000;  // a node out of range
+  EXPECT_THROW(writeVolumeMesh(model, vm, (d / "b.inp").string()), MeshingError);
+  EXPECT_TRUE(fs::is_empty(d));
+}
+
+TEST(IoWriters, QualityOfRegularElements) {
+  const Vec3 size(1, 1, 1);
+  const Model model = fx::boxModel(size, "BOX");
+  const SurfaceMesh sm = fx::boxSurface(size, {1, 1, 1}, false);
+  const OutputMesh m(model, sm);
+  ASSERT_GT(m.count(Shape::Quad), 0);
+  for (int q = 0; q < m.count(Shape::Quad); ++q) EXPECT_NEAR(elementQuality(m, Shape::Quad, q), 1.0, 1e-12);
+  // a right isosceles triangle: 4√3·(1/2) / (1 + 1 + 2)
+  EXPECT_NEAR(elementQuality(m, Shape::Triangle, 0), std::sqrt(3.0) / 2, 1e-12);
+}
