@@ -20,6 +20,7 @@ struct MeshArgs {
   std::string output;
   std::string report;
   bool binary = false;
+  int mshVersion = 41;  ///< MSH output: 41 or 22 (--msh-version 4.1 | 2.2)
   bool fragment = true;
   MeshOptions options;
 };

@@ -42,9 +42,6 @@ nlohmann::ordered_json optionsJson(const MeshArgs& a) {
 void checkArguments(const MeshArgs& a) {
   if (!isKnownOutputExtension(a.output))
     throw InputError(a.output + ": unknown output format (expected .msh .inp .vtu .stl .obj .off .unv)");
-  const std::string ext = lowerExtension(a.output);
-  if (ext == ".inp" || ext == ".vtu" || ext == ".unv")
-    throw InputError(a.output + ": the " + ext + " writer is not available yet in this build (use .msh .stl .obj .off)");
   const std::string bad = a.options.sizing.check();
   if (!bad.empty()) throw InputError(a.file + ": " + bad);
   const auto dir = std::filesystem::path(a.output).parent_path();
@@ -153,6 +150,7 @@ int runMesh(const MeshArgs& args) {
   const auto tw = Clock::now();
   io::WriteOptions wopt;
   wopt.binary = args.binary;
+  wopt.mshVersion = args.mshVersion;
   io::writeSurfaceMesh(topo, sr.mesh, args.output, wopt);
   report.times.emplace_back("write", seconds(tw, Clock::now()));
   report.status = io::RunStatus::Ok;

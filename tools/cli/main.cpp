@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <map>
 #include <memory>
 
 #include "mesher/core/Error.h"
