@@ -190,6 +190,23 @@ inline Model cylinder(double r = 1, double h = 2, double topShift = 0) {
   return b.m;
 }
 
+/// The closed cylinder: the lateral face of cylinder() and two planar caps (the bottom one
+/// reversed, its normal −z pointing out of the solid).
+inline Model cappedCylinder(double r, double h) {
+  ModelBuilder b;
+  b.m = cylinder(r, h);
+  const int bottom = b.face(std::make_shared<PlaneSurface>(Vec3::Zero(), Vec3::UnitX(), Vec3::UnitY(), -r, r, -r, r),
+                            box(-r, -r, r, r), true);
+  const int top = b.face(std::make_shared<PlaneSurface>(Vec3(0, 0, h), Vec3::UnitX(), Vec3::UnitY(), -r, r, -r, r),
+                         box(-r, -r, r, r), false);
+  const int kb = b.pcurve(0, bottom, std::make_shared<Circle2d>(Vec2(0, 0), r));
+  const int kt = b.pcurve(1, top, std::make_shared<Circle2d>(Vec2(0, 0), r));
+  b.loop(bottom, {{0, true, kb}}, true);  // a reversed face has its region on the right
+  b.loop(top, {{1, false, kt}}, true);
+  b.m.shells.push_back({{{0, false}, {bottom, false}, {top, false}}, true});
+  return b.m;
+}
+
 /// The full sphere of radius r: seam (edge 0, pcurve 0 at u = 2π, pcurve 1 at u = 0), south
 /// pole (edge 1) and north pole (edge 2) degenerate, vertices 0 (south) and 1 (north).
 inline Model sphere(double r = 1) {
