@@ -57,6 +57,9 @@ int main(int argc, char** argv) {
   meshCmd->add_option("--sizing", mesh.options.sizingFile, "User sizing sources (JSON)");
   meshCmd->add_option("--threads", mesh.options.threads, "Threads (0 = all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
   meshCmd->add_flag("--binary", mesh.binary, "Binary output where the format has it");
+  meshCmd->add_option("--msh-version", mesh.mshVersion, "MSH format version: 4.1 or 2.2")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, int>{{"4.1", 41}, {"2.2", 22}}))
+      ->default_str("4.1");
   meshCmd->add_flag("!--no-fragment", mesh.fragment, "Do not make touching solids conformal");
   meshCmd->add_option("--report", mesh.report, "Write the JSON run report here");
   meshCmd->fallthrough();
