@@ -1,6 +1,6 @@
 // make_models: writes anisomesh's own sample models as STEP AP214 through XCAF.
 //
-//   make_models OUTDIR        build the four models and write OUTDIR/{bracket,assembly2,plate,cylinder}.step
+//   make_models OUTDIR        build the five models and write OUTDIR/{bracket,assembly2,plate,cylinder,cantilever}.step
 //   make_models --check FILE  read FILE with STEPCAFControl_Reader and print solids, volume, part names
 //
 // Output is deterministic: the STEP header (name, time stamp, author, organization,
@@ -182,6 +182,10 @@ TopoDS_Shape makePlate() {
 
 // Cylinder r 10, h 40, axis z from the origin.
 TopoDS_Shape makeCylinder() { return cylinder(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1), 10.0, 40.0); }
+
+// Cantilever 100 x 10 x 10 from the origin. OCCT's box orders its faces x = 0, x = 100,
+// y = 0, y = 10, z = 0, z = 10: FACE1 is the clamped end, FACE2 the loaded end.
+TopoDS_Shape makeCantilever() { return box(0, 0, 0, 100, 10, 10); }
 
 // ---------------------------------------------------------------- XCAF / STEP
 
@@ -385,6 +389,7 @@ int main(int argc, char** argv) {
     writeAssembly2(out / "assembly2.step");
     writeSinglePart(makePlate(), "PLATE", out / "plate.step");
     writeSinglePart(makeCylinder(), "CYLINDER", out / "cylinder.step");
+    writeSinglePart(makeCantilever(), "CANTILEVER", out / "cantilever.step");
     return 0;
   } catch (const Standard_Failure& e) {
     std::cerr << "make_models: OCCT exception: " << e.GetMessageString() << "\n";
