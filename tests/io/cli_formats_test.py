@@ -1,0 +1,135 @@
+#!/usr/bin/python3
+"""Surface meshes from the real surface mesher, written by the CLI in every format, read by
+the real clients with the same counts.
+
+usage: cli_formats_test.py CLI MODELS_DIR [--dim 2|3]
+
+Meshes models/plate.step and models/assembly2.step once per output format (the mesher is
+deterministic, so every file holds the same mesh) and checks:
+  - Gmsh 4.8 opens the MSH 4.1 (ASCII, binary) and 2.2 (ASCII, binary) files and the UNV:
+    the same node and element counts in all, physical groups FACE1..FACE<n> and, in 3D, one
+    named volume per solid;
+  - meshio reads the INP, VTU (ASCII and base64), MSH, STL, OBJ and OFF with those counts;
+  - the INP has an element set per face (2D) or per solid (3D) and a node set per face;
+  - with --order 2, Gmsh (MSH 4.1, 2.2, UNV) and meshio (VTU) find the same numbers of
+    quadratic elements.
+"""
+import json, os, subprocess, sys, tempfile
+import meshio
+
+cli, models = sys.argv[1], sys.argv[2]
+dim = int(sys.argv[sys.argv.index("--dim") + 1]) if "--dim" in sys.argv else 2
+t = tempfile.mkdtemp(prefix="aniso_cli_formats_")
+bad, checks = [], 0
+
+
+def check(what, cond, why=""):
+    global checks
+    checks += 1
+    if not cond:
+        bad.append(f"{what}: {why}")
+
+
+GM = r'''
+import gmsh, sys, json
+gmsh.initialize(); gmsh.option.setNumber("General.Terminal", 0)
+res = {}
+for path in sys.argv[1:]:
+    gmsh.clear(); gmsh.open(path)
+    r = {"nodes": len(gmsh.model.mesh.getNodes()[0]), "types": {}}
+    for d in (2, 3):
+        for e, tg in zip(*gmsh.model.mesh.getElements(d)[:2]):
+            r["types"][str(e)] = r["types"].get(str(e), 0) + len(tg)
+    r["phys"] = [[d, gmsh.model.getPhysicalName(d, g)] for d, g in gmsh.model.getPhysicalGroups()]
+    res[path] = r
+gmsh.finalize(); print(json.dumps(res))
+'''
+open(f"{t}/gm.py", "w").write(GM)
+
+VARIANTS = [("a.msh", []), ("b.msh", ["--binary"]), ("c.msh", ["--msh-version", "2.2"]),
+            ("d.msh", ["--msh-version", "2.2", "--binary"]), ("e.inp", []), ("f.vtu", []),
+            ("g.vtu", ["--binary"]), ("h.unv", []), ("i.stl", []), ("j.stl", ["--binary"]),
+            ("k.obj", []), ("l.off", [])]
+
+for model, faces, solids in (("plate.step", 7, ["PLATE"]), ("assembly2.step", 12, ["BASE", "BLOCK"])):
+    stem = os.path.splitext(model)[0]
+    files = []
+    for name, extra in VARIANTS:
+        out = f"{t}/{stem}_{name}"
+        p = subprocess.run([cli, "mesh", os.path.join(models, model), "-o", out, "--dim", str(dim), "--hmax", "4", "-q"] + extra,
+                           capture_output=True, text=True, timeout=600)
+        check(f"{stem} {name} written", p.returncode == 0 and os.path.exists(out), p.stderr.strip()[-200:])
+        files.append(out)
+    p = subprocess.run(["/usr/bin/python3", f"{t}/gm.py"] + [f for f in files if f.endswith((".msh", ".unv"))],
+                       capture_output=True, text=True, timeout=600)
+    check(f"{stem} gmsh", p.returncode == 0, p.stderr[-300:])
+    gm = json.loads(p.stdout.strip().splitlines()[-1]) if p.returncode == 0 else {}
+    ref = gm.get(files[0])
+    if ref is None:
+        continue
+    types = ref["types"]
+    tris, tets = types.get("2", 0), types.get("4", 0)
+    check(f"{stem} elements", tris > 0 and (tets > 0) == (dim == 3), f"{types}")
+    for f in files:
+        if not f.endswith((".msh", ".unv")): continue
+        r = gm.get(f, {})
+        check(f"gmsh {os.path.basename(f)} counts", r.get("nodes") == ref["nodes"] and r.get("types") == types,
+              f"{r.get('nodes')} nodes {r.get('types')} vs {ref['nodes']} {types}")
+        if f.endswith(".msh"):
+            names2 = sorted(n for d, n in r["phys"] if d == 2)
+            names3 = [n for d, n in r["phys"] if d == 3]
+            check(f"gmsh {os.path.basename(f)} face groups", names2 == sorted(f"FACE{i}" for i in range(1, faces + 1)), f"{names2}")
+            check(f"gmsh {os.path.basename(f)} solid groups", names3 == (solids if dim == 3 else []), f"{names3}")
+    for f in files:
+        ext = os.path.splitext(f)[1]
+        if ext == ".unv": continue  # meshio 5.0 has no UNV reader
+        try:
+            m = meshio.read(f)
+        except Exception as ex:
+            check(f"meshio {os.path.basename(f)}", False, str(ex)[:200]); continue
+        counts = {}
+        for cb in m.cells: counts[cb.type] = counts.get(cb.type, 0) + len(cb.data)
+        if ext in (".stl", ".obj", ".off"):
+            want = {"triangle": tris}
+        elif ext == ".inp" and dim == 3:
+            want = {"tetra": tets}
+        else:
+            want = {k: v for k, v in (("triangle", tris), ("tetra", tets)) if v}
+        check(f"meshio {os.path.basename(f)} counts", counts == want, f"{counts} != {want}")
+        if ext in (".msh", ".inp", ".vtu"):
+            check(f"meshio {os.path.basename(f)} nodes", len(m.points) == ref["nodes"], f"{len(m.points)} != {ref['nodes']}")
+        if ext == ".inp":
+            nsets = sorted(k for k in m.point_sets if k.startswith("FACE"))
+            check(f"meshio {os.path.basename(f)} node sets", nsets == sorted(f"FACE{i}" for i in range(1, faces + 1)), f"{nsets}")
+            esets = sorted(k for k in m.cell_sets if k != "EALL")
+            want_sets = sorted(solids) if dim == 3 else sorted(f"FACE{i}" for i in range(1, faces + 1))
+            check(f"meshio {os.path.basename(f)} element sets", esets == want_sets, f"{esets}")
+
+    # Quadratic: the same mesh elevated (--order 2) keeps its element counts.
+    quad_files = []
+    for name, extra in (("q.msh", []), ("r.msh", ["--msh-version", "2.2"]), ("s.vtu", []), ("u.unv", [])):
+        out = f"{t}/{stem}_{name}"
+        p = subprocess.run([cli, "mesh", os.path.join(models, model), "-o", out, "--dim", str(dim), "--hmax", "4", "-q",
+                            "--order", "2"] + extra, capture_output=True, text=True, timeout=600)
+        check(f"{stem} {name} (order 2) written", p.returncode == 0 and os.path.exists(out), p.stderr.strip()[-200:])
+        quad_files.append(out)
+    want_types = {k: v for k, v in (("9", tris), ("11", tets)) if v}
+    p = subprocess.run(["/usr/bin/python3", f"{t}/gm.py"] + [f for f in quad_files if not f.endswith(".vtu")],
+                       capture_output=True, text=True, timeout=600)
+    gq = json.loads(p.stdout.strip().splitlines()[-1]) if p.returncode == 0 else {}
+    for f in quad_files:
+        if f.endswith(".vtu"):
+            try:
+                m = meshio.read(f)
+                counts = {cb.type: len(cb.data) for cb in m.cells}
+            except Exception as ex:
+                counts = str(ex)[:100]
+            want = {k: v for k, v in (("triangle6", tris), ("tetra10", tets)) if v}
+            check(f"meshio {os.path.basename(f)} (order 2) counts", counts == want, f"{counts} != {want}")
+        else:
+            r = gq.get(f, {})
+            check(f"gmsh {os.path.basename(f)} (order 2) counts", r.get("types") == want_types, f"{r.get('types')} != {want_types}")
+
+for b in bad: print("FAIL", b)
+print(f"cli formats (dim {dim}): {checks - len(bad)}/{checks} checks passed")
+sys.exit(1 if bad or checks < 40 else 0)
