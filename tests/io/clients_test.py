@@ -12,7 +12,10 @@ in every format and variant, with manifest.json saying what each holds. Then:
     Gmsh's node order puts them on, tetrahedra positively oriented;
   - meshio (python3-meshio) reads the INP, VTU (ASCII and base64), MSH, STL, OBJ and OFF:
     same counts, the INP's node sets FACE<n> and element sets per solid, the VTU's cell data,
-    mid-edge nodes where VTK's order puts them.
+    mid-edge nodes where VTK's order puts them;
+  - VTK 9 (python3-vtk9: ParaView's XML reader) reads every VTU: cell types and counts, the
+    cell data, and the cells' volumes and areas (VTK's own isoparametric integration, so a
+    wrong quadratic node order shows) add up to the boxes' volume and surface area.
 meshio 5.0 has no UNV reader, no S6/S8 element types and reads only triangle OFF files:
 UNV files are read by Gmsh only; quadratic shell INP files and OFF files with quads are not
 read by a client here.
@@ -182,6 +185,44 @@ for name, case in manifest.items():
                     check(f"meshio {f} {cb.type} ids", (reg > 0).all() == is_tet and (fc > 0).all() != is_tet,
                           "region set on tetrahedra only, face on boundary elements only")
                     check(f"meshio {f} {cb.type} quality", ((qual > 0) & (qual <= 1 + 1e-12)).all(), "quality out of (0, 1]")
+
+# ---------------------------------------------------------------- VTK (ParaView's reader)
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+VTK_TYPES = {False: (5, 9, 10), True: (22, 23, 24)}
+for name, case in manifest.items():
+    q = case["quadratic"]
+    size = np.array([10.0, 3.0, 2.0])  # the fixtures' box
+    boxes = max(case["solids"], 1)
+    for f in case["files"]:
+        if not f.endswith(".vtu"): continue
+        errors = []
+        reader = vtk.vtkXMLUnstructuredGridReader()
+        reader.AddObserver("ErrorEvent", lambda obj, ev: errors.append(ev))
+        reader.GetExecutive().AddObserver("ErrorEvent", lambda obj, ev: errors.append(ev))
+        reader.SetFileName(os.path.join(out, f))
+        reader.Update()
+        g = reader.GetOutput()
+        check(f"vtk {f} reads", not errors and g.GetNumberOfPoints() == case["nodes"],
+              f"{errors} {g.GetNumberOfPoints()} points")
+        types = vtk_to_numpy(g.GetCellTypesArray()) if g.GetNumberOfCells() else np.array([])
+        tri, quad, tet = VTK_TYPES[q]
+        want = {tri: case["triangles"], quad: case["quads"], tet: case["tets"]}
+        got = {t: int((types == t).sum()) for t in want}
+        check(f"vtk {f} cells", got == want and len(types) == sum(want.values()), f"{got} != {want}")
+        cd = g.GetCellData()
+        check(f"vtk {f} cell data", all(cd.GetArray(a) is not None for a in ("region", "face", "quality")),
+              "region, face, quality")
+        sizes = vtk.vtkCellSizeFilter()
+        sizes.SetInputData(g)
+        sizes.Update()
+        o = sizes.GetOutput().GetCellData()
+        volume = float(vtk_to_numpy(o.GetArray("Volume")).sum())
+        area = float(vtk_to_numpy(o.GetArray("Area")).sum())
+        want_v = boxes * np.prod(size) if case["tets"] else 0.0
+        want_a = boxes * 2 * (size[0] * size[1] + size[1] * size[2] + size[0] * size[2])
+        check(f"vtk {f} volume and area", abs(volume - want_v) < 1e-9 * want_a and abs(area - want_a) < 1e-9 * want_a,
+              f"volume {volume} (want {want_v}), area {area} (want {want_a})")
 
 for b in bad: print("FAIL", b)
 print(f"io clients: {checks - len(bad)}/{checks} checks passed")
