@@ -36,6 +36,14 @@ struct SizingArgs {
 };
 int runSizing(const SizingArgs& args);
 
+struct CheckArgs {
+  std::string file;
+  bool json = false;
+};
+/// Reads a mesh (MSH, INP, VTU, STL, OBJ, OFF) and reports counts, surface topology,
+/// validity and quality; 0 valid, 3 invalid (io/readers/MeshCheck.h).
+int runCheck(const CheckArgs& args);
+
 /// Output formats the mesh command writes, by extension.
 bool isKnownOutputExtension(const std::string& path);
 

@@ -74,6 +74,12 @@ int main(int argc, char** argv) {
   sizingCmd->add_flag("!--no-fragment", sizing.fragment, "Do not make touching solids conformal");
   sizingCmd->fallthrough();
 
+  cli::CheckArgs check;
+  CLI::App* checkCmd = app.add_subcommand("check", "Check a mesh file: counts, closed/manifold/oriented, inverted elements, quality");
+  checkCmd->add_option("MESH", check.file, "MSH, INP, VTU, STL, OBJ or OFF file")->required();
+  checkCmd->add_flag("--json", check.json, "One JSON object on stdout");
+  checkCmd->fallthrough();
+
   // CLI11 reports an unknown command as a missing one: name it instead.
   if (argc > 1 && argv[1][0] != '-' &&
       app.get_subcommands([&](CLI::App* sub) { return sub->get_name() == argv[1]; }).empty()) {
@@ -93,6 +99,7 @@ int main(int argc, char** argv) {
     if (infoCmd->parsed()) return cli::runInfo(info);
     if (meshCmd->parsed()) return cli::runMesh(mesh);
     if (sizingCmd->parsed()) return cli::runSizing(sizing);
+    if (checkCmd->parsed()) return cli::runCheck(check);
   } catch (const InputError& e) {
     std::fprintf(stderr, "anisomesh: %s\n", e.what());
     return 2;
