@@ -37,11 +37,16 @@ std::array<std::vector<std::vector<int>>, 4> nodesByEntity(const OutputMesh& m) 
   return by;
 }
 
+/// $Entities: every model vertex and edge; the faces and solids holding elements (with
+/// their physical group) or nodes (without).
 void writeEntities(const OutputMesh& m, MshOut& w, std::ostream& o,
-                   const std::array<std::vector<std::vector<int>>, 4>& byEntity, const std::vector<bool>& faces,
-                   const std::vector<bool>& solids) {
+                   const std::array<std::vector<std::vector<int>>, 4>& byEntity) {
   const Model& model = m.model;
   const std::vector<Vec3>& p = m.nodes();
+  const std::vector<bool> meshedFaces = m.meshedFaces(), meshedSolids = m.meshedSolids();
+  std::vector<bool> faces(model.faces.size()), solids(model.solids.size());
+  for (size_t f = 0; f < faces.size(); ++f) faces[f] = meshedFaces[f] || !byEntity[2][f].empty();
+  for (size_t s = 0; s < solids.size(); ++s) solids[s] = meshedSolids[s] || !byEntity[3][s].empty();
   const auto nf = std::count(faces.begin(), faces.end(), true);
   const auto ns = std::count(solids.begin(), solids.end(), true);
   o << "$Entities\n";
@@ -60,12 +65,12 @@ void writeEntities(const OutputMesh& m, MshOut& w, std::ostream& o,
     for (int k = 0; k < 3; ++k) w.value<double>(b.empty() ? 0.0 : b.lo[k]);
     for (int k = 0; k < 3; ++k) w.value<double>(b.empty() ? 0.0 : b.hi[k]);
   };
-  // A surface or volume: its box, one physical group (same tag), its bounding entities.
-  auto bounded = [&](size_t index, const Box3& b, const std::vector<int>& bounding) {
+  // A surface or volume: its box, its physical group (same tag) if meshed, its bounding entities.
+  auto bounded = [&](size_t index, const Box3& b, bool physical, const std::vector<int>& bounding) {
     w.value<int>(static_cast<int>(index) + 1);
     box(b);
-    w.value<std::size_t>(1);
-    w.value<int>(static_cast<int>(index) + 1);
+    w.value<std::size_t>(physical ? 1 : 0);
+    if (physical) w.value<int>(static_cast<int>(index) + 1);
     w.value<std::size_t>(bounding.size());
     for (int tag : bounding) w.value<int>(tag);
     w.endLine();
@@ -92,6 +97,8 @@ void writeEntities(const OutputMesh& m, MshOut& w, std::ostream& o,
       const int k = m.elementNodes(s, i, nodes);
       for (int j = 0; j < k; ++j) faceBox[m.entityOf(s, i)].add(p[nodes[j]]);
     }
+  for (size_t f = 0; f < faceBox.size(); ++f)
+    for (int n : byEntity[2][f]) faceBox[f].add(p[n]);
   for (size_t f = 0; f < model.faces.size(); ++f) {
     if (!faces[f]) continue;
     std::vector<int> bounding;
@@ -102,11 +109,13 @@ void writeEntities(const OutputMesh& m, MshOut& w, std::ostream& o,
             std::find(bounding.begin(), bounding.end(), -tag) == bounding.end())
           bounding.push_back(tag);
       }
-    bounded(f, faceBox[f], bounding);
+    bounded(f, faceBox[f], meshedFaces[f], bounding);
   }
   std::vector<Box3> solidBox(model.solids.size());
   for (int i = 0, n = m.count(Shape::Tet); i < n; ++i)
     for (int v : m.volume->tets[i]) solidBox[m.volume->tetSolid[i]].add(p[v]);
+  for (size_t s = 0; s < solidBox.size(); ++s)
+    for (int n : byEntity[3][s]) solidBox[s].add(p[n]);
   for (size_t s = 0; s < model.solids.size(); ++s) {
     if (!solids[s]) continue;
     std::vector<int> bounding;
@@ -118,7 +127,7 @@ void writeEntities(const OutputMesh& m, MshOut& w, std::ostream& o,
       for (const FaceUse& fu : model.shells[sh].faces)
         if (faces[fu.face]) bounding.push_back((fu.face + 1) * (fu.reversed ? -1 : 1));
     }
-    bounded(s, solidBox[s], bounding);
+    bounded(s, solidBox[s], meshedSolids[s], bounding);
   }
   w.endSection("$EndEntities");
 }
@@ -200,13 +209,12 @@ void writeElements(const OutputMesh& m, MshOut& w, std::ostream& o) {
 }  // namespace
 
 void writeMsh41(const OutputMesh& m, const std::string& path, const WriteOptions& opt) {
-  const std::vector<bool> faces = m.meshedFaces(), solids = m.meshedSolids();
   const auto byEntity = nodesByEntity(m);
   AtomicFile file(path, opt.binary);
   std::ostream& o = file.stream();
   MshOut w(o, opt.binary);
   writeMshHeader(o, "4.1", opt.binary, m);
-  writeEntities(m, w, o, byEntity, faces, solids);
+  writeEntities(m, w, o, byEntity);
   writeNodes(m, w, o, byEntity);
   writeElements(m, w, o);
   file.commit();

@@ -12,7 +12,7 @@ export HOME=$t
 cat > "$t/read.py" <<PY
 import Fem, json
 res = {}
-for name in ["tet4", "tet10", "quad4", "quad8", "parts"]:
+for name in ["tet4", "tet10", "quad4", "quad8", "open", "parts"]:
     fm = Fem.read("$t/%s.unv" % name)
     fm = getattr(fm, "FemMesh", fm)
     groups = {fm.getGroupName(g): [fm.getGroupElementType(g), len(fm.getGroupElements(g))] for g in fm.Groups}
@@ -31,9 +31,9 @@ for name, case in man.items():
     for k in ("nodes", "tets", "triangles", "quads"):
         if r[k] != case[k]: bad.append(f"{name}: {k} {r[k]} != {case[k]}")
     g = r["groups"]
-    for f in range(1, case["faces"] + 1):
-        if g.get(f"FACE{f}_Nodes", ["", 0])[0] != "Node" or g.get(f"FACE{f}_Faces", ["", 0])[0] != "Face":
-            bad.append(f"{name}: no node and face groups for FACE{f}")
+    for f in case["face_groups"]:
+        if g.get(f"{f}_Nodes", ["", 0])[0] != "Node" or g.get(f"{f}_Faces", ["", 0])[0] != "Face":
+            bad.append(f"{name}: no node and face groups for {f}")
     for s in case["solid_names"]:
         if g.get(s, [""])[0] != "Volume" or g[s][1] != case["tets"] // len(case["solid_names"]):
             bad.append(f"{name}: volume group {s}: {g.get(s)}")

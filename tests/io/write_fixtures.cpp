@@ -5,6 +5,7 @@
 //   tet4, tet10   box 10 x 3 x 2, 4 x 2 x 2 cells, 6 Kuhn tetrahedra per cell
 //   quad4, quad8  the same box's surface: quads on faces 1-5, triangles on face 6
 //   parts         three such boxes side by side named "nut", "nut", "bolt"
+//   open          quad4 without face 6's triangles: nodes on a face that has no element
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -37,14 +38,26 @@ nlohmann::ordered_json describe(const Model& model, const SurfaceMesh& sm, const
   std::set<int> corners;
   for (const auto& t : sm.triangles) corners.insert(t.begin(), t.end());
   for (const auto& q : sm.quads) corners.insert(q.begin(), q.end());
+  std::set<int> used = corners;  // nodes of any element
+  for (const auto& m : sm.triangleMid) used.insert(m.begin(), m.end());
+  for (const auto& m : sm.quadMid) used.insert(m.begin(), m.end());
+  if (vm)
+    for (const auto& t : vm->tets) used.insert(t.begin(), t.end());
+  if (vm)
+    for (const auto& m : vm->tetMid) used.insert(m.begin(), m.end());
   nlohmann::ordered_json j;
   j["nodes"] = sm.nodes.size();
+  j["used_nodes"] = used.size();
   j["corner_nodes"] = corners.size();
   j["triangles"] = sm.triangles.size();
   j["quads"] = sm.quads.size();
   j["tets"] = vm ? vm->tets.size() : 0;
   j["quadratic"] = !sm.triangleMid.empty() || !sm.quadMid.empty();
   j["faces"] = model.faces.size();
+  std::set<int> meshed(sm.triangleFace.begin(), sm.triangleFace.end());
+  meshed.insert(sm.quadFace.begin(), sm.quadFace.end());
+  j["face_groups"] = nlohmann::ordered_json::array();
+  for (int f : meshed) j["face_groups"].push_back("FACE" + std::to_string(f + 1));
   j["solids"] = vm ? model.solids.size() : 0;
   return j;
 }
@@ -92,6 +105,12 @@ int main(int argc, char** argv) {
       ds["solid_names"] = nlohmann::ordered_json::array();
       writeAll(quadratic ? "quad8" : "quad4", box, sm, out, manifest, ds);
     }
+    SurfaceMesh open = boxSurface(size, cells, false);
+    open.triangles.clear();
+    open.triangleFace.clear();
+    auto dopen = describe(box, open, nullptr);
+    dopen["solid_names"] = nlohmann::ordered_json::array();
+    writeAll("open", box, open, out, manifest, dopen);
     Model parts = boxModel(size, "nut");
     VolumeMesh partsMesh = boxTets(size, {2, 1, 1}, false);
     appendShifted(parts, partsMesh, boxModel(size, "nut"), boxTets(size, {2, 1, 1}, false), Vec3(0, 5, 0));
