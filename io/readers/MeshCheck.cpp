@@ -13,8 +13,23 @@
 namespace aniso::io {
 namespace {
 
-/// A triangle whose mean ratio is below this is degenerate (zero area up to round-off).
-constexpr double kDegenerateMeanRatio = 1e-12;
+/// A triangle or tetrahedron whose area or volume, relative to the cube (square) of its
+/// root-mean-square edge length, is below this is degenerate: zero up to round-off, its
+/// orientation (and a quadratic element's Jacobian sign) meaningless.
+constexpr double kDegenerateSize = 1e-12;
+
+bool degenerateTriangle(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const double l2 = ((b - a).squaredNorm() + (c - b).squaredNorm() + (a - c).squaredNorm()) / 3;
+  return !((b - a).cross(c - a).norm() > kDegenerateSize * l2);
+}
+
+bool degenerateTet(const std::array<Vec3, 4>& p) {
+  double l2 = 0;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) l2 += (p[j] - p[i]).squaredNorm() / 6;
+  const double v = std::abs((p[1] - p[0]).dot((p[2] - p[0]).cross(p[3] - p[0])));
+  return !(v > kDegenerateSize * l2 * std::sqrt(l2));
+}
 
 /// Outward faces of a positively oriented tetrahedron (p1−p0)·((p2−p0)×(p3−p0)) > 0.
 constexpr int kTetFaces[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
@@ -119,7 +134,7 @@ void measure(const ReadMesh& m, std::size_t i, MeshCheckReport& r, std::vector<s
     case CellType::Triangle6: {
       const double q = triangleMeanRatio(x[c[0]], x[c[1]], x[c[2]]);
       r.triangleMeanRatio.add(q);
-      if (q <= kDegenerateMeanRatio) ++r.degenerate;
+      if (degenerateTriangle(x[c[0]], x[c[1]], x[c[2]])) ++r.degenerate;
       else if (m.types[i] == CellType::Triangle6 &&
                tri6JacobianRatio({x[c[0]], x[c[1]], x[c[2]]}, {x[c[3]], x[c[4]], x[c[5]]}) <= 0)
         ++r.inverted;
@@ -147,7 +162,8 @@ void measure(const ReadMesh& m, std::size_t i, MeshCheckReport& r, std::vector<s
       const double q = meanRatio(p[0], p[1], p[2], p[3]);
       r.tetMeanRatio.add(q);
       for (double a : dihedralAngles(p)) r.tetDihedral.add(a);
-      if (q <= 0) ++r.inverted;
+      if (degenerateTet(p)) ++r.degenerate;
+      else if (q <= 0) ++r.inverted;
       else if (m.types[i] == CellType::Tet10 &&
                tet10JacobianRatio(p, {x[c[4]], x[c[5]], x[c[6]], x[c[7]], x[c[8]], x[c[9]]}) <= 0)
         ++r.inverted;
@@ -177,7 +193,7 @@ void listProblems(MeshCheckReport& r) {
     if (n) r.problems.push_back(std::to_string(n) + " " + what);
   };
   add(r.inverted, "inverted elements (non-positive Jacobian)");
-  add(r.degenerate, "degenerate elements (zero area)");
+  add(r.degenerate, "degenerate elements (zero area or volume)");
   if (r.volume) {
     add(r.nonManifoldFaces, "faces shared by more than two tetrahedra");
     add(r.openEdges, "open edges on the boundary of the volume mesh");

@@ -6,9 +6,10 @@
 //     tetrahedron, oriented outward), else the triangles and quads; its edges counted as
 //     open (one face), non-manifold (more than two) and misoriented (two faces running the
 //     same way); for a volume mesh also tetrahedron faces shared by more than two.
-//   validity: inverted tetrahedra (signed volume ≤ 0, or for 10-node ones a Jacobian ≤ 0
-//     at a corner or the centroid), degenerate triangles and quads (zero area, folded: a
-//     6-node triangle's Jacobian or a quad's scaled Jacobian ≤ 0).
+//   validity: degenerate triangles and tetrahedra (zero area or volume up to round-off);
+//     inverted tetrahedra (signed volume < 0, or for 10-node ones a Jacobian ≤ 0 at a
+//     corner or the centroid), folded 6-node triangles (Jacobian against the corners'
+//     normal ≤ 0) and quads (scaled Jacobian ≤ 0, or an 8/9-node one's Jacobian ≤ 0).
 //   quality (corner nodes): mean ratio of triangles (in 3D) and tetrahedra, every dihedral
 //     angle of the tetrahedra, scaled Jacobian of quads: min, average, histogram.
 // The mesh is invalid (problems non-empty) with inverted or degenerate elements; for a
