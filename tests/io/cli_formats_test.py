@@ -14,20 +14,16 @@ deterministic, so every file holds the same mesh) and checks:
   - with --order 2, Gmsh (MSH 4.1, 2.2, UNV) and meshio (VTU) find the same numbers of
     quadratic elements.
 """
-import json, os, subprocess, sys, tempfile
+import json, os, subprocess, sys
 import meshio
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checklib import Checks, scratch
 
 cli, models = sys.argv[1], sys.argv[2]
 dim = int(sys.argv[sys.argv.index("--dim") + 1]) if "--dim" in sys.argv else 2
-t = tempfile.mkdtemp(prefix="aniso_cli_formats_")
-bad, checks = [], 0
-
-
-def check(what, cond, why=""):
-    global checks
-    checks += 1
-    if not cond:
-        bad.append(f"{what}: {why}")
+t = scratch("aniso_cli_formats_")
+check = Checks()
 
 
 GM = r'''
@@ -130,6 +126,4 @@ for model, faces, solids in (("plate.step", 7, ["PLATE"]), ("assembly2.step", 12
             r = gq.get(f, {})
             check(f"gmsh {os.path.basename(f)} (order 2) counts", r.get("types") == want_types, f"{r.get('types')} != {want_types}")
 
-for b in bad: print("FAIL", b)
-print(f"cli formats (dim {dim}): {checks - len(bad)}/{checks} checks passed")
-sys.exit(1 if bad or checks < 40 else 0)
+check.finish(f"cli formats (dim {dim})", 40)

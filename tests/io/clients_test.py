@@ -21,22 +21,18 @@ meshio 5.0 has no UNV reader, no S6/S8 element types and reads only triangle OFF
 UNV files are read by Gmsh only; quadratic shell INP files and OFF files with quads are not
 read by a client here.
 """
-import json, os, subprocess, sys, tempfile
+import json, os, subprocess, sys
 import numpy as np
 import meshio
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checklib import Checks, scratch
+
 fixtures = sys.argv[1]
-out = tempfile.mkdtemp(prefix="aniso_clients_")
+out = scratch("aniso_clients_")
 subprocess.run([fixtures, out], check=True)
 manifest = json.load(open(os.path.join(out, "manifest.json")))
-bad, checks = [], 0
-
-
-def check(what, cond, why=""):
-    global checks
-    checks += 1
-    if not cond:
-        bad.append(f"{what}: {why}")
+check = Checks()
 
 
 # Mid-edge nodes by reader convention: (position, corner a, corner b)
@@ -228,6 +224,4 @@ for name, case in manifest.items():
         check(f"vtk {f} volume and area", abs(volume - want_v) < 1e-9 * want_a and abs(area - want_a) < 1e-9 * want_a,
               f"volume {volume} (want {want_v}), area {area} (want {want_a})")
 
-for b in bad: print("FAIL", b)
-print(f"io clients: {checks - len(bad)}/{checks} checks passed")
-sys.exit(1 if bad or checks < 50 else 0)
+check.finish("io clients", 50)

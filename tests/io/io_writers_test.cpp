@@ -24,12 +24,13 @@ namespace fx = aniso::testing;
 
 namespace {
 
-fs::path tempDir() {
-  const fs::path d = fs::temp_directory_path() / ("aniso_io_test_" + std::to_string(::getpid()) +
-                                                  "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-  fs::create_directories(d);
-  return d;
-}
+/// A folder of this test's own, removed with everything in it when the test ends.
+struct TempDir {
+  fs::path path = fs::temp_directory_path() / ("aniso_io_test_" + std::to_string(::getpid()) + "_" +
+                                               ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  TempDir() { fs::create_directories(path); }
+  ~TempDir() { fs::remove_all(path); }
+};
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -63,7 +64,8 @@ TEST(IoWriters, InpSurfacesLieOnTheirCadFaces) {
   for (bool quadratic : {false, true}) {
     const Model model = fx::boxModel(size, "BOX");
     const VolumeMesh vm = fx::boxTets(size, {2, 2, 2}, quadratic);
-    const fs::path file = tempDir() / "box.inp";
+    const TempDir dir;
+    const fs::path file = dir.path / "box.inp";
     writeVolumeMesh(model, vm, file.string());
     // Parse the elements and the surfaces back.
     std::ifstream in(file);
@@ -112,7 +114,8 @@ TEST(IoWriters, OutputIsByteIdentical) {
   const Vec3 size(1, 1, 1);
   const Model model = fx::boxModel(size, "BOX");
   const VolumeMesh vm = fx::boxTets(size, {2, 1, 1}, true);
-  const fs::path d = tempDir();
+  const TempDir dir;
+  const fs::path& d = dir.path;
   for (const char* name : {"a.msh", "a.inp", "a.vtu", "a.unv"})
     for (bool binary : {false, true}) {
       WriteOptions o;
@@ -129,7 +132,8 @@ TEST(IoWriters, FailuresLeaveNoFile) {
   const Vec3 size(1, 1, 1);
   const Model model = fx::boxModel(size, "BOX");
   VolumeMesh vm = fx::boxTets(size, {1, 1, 1}, false);
-  const fs::path d = tempDir();
+  const TempDir dir;
+  const fs::path& d = dir.path;
   EXPECT_THROW(writeVolumeMesh(model, vm, (d / "a.xyz").string()), InputError);
   WriteOptions o;
   o.mshVersion = 30;
