@@ -282,3 +282,29 @@ TEST(HighOrder, InvertedTetLeftStraightSurfaceKeepsValid) {
     if (vm.tetMid[0][k] == ab) curvedMid[k] = cyl.surface->point({theta / 2, 0});
   EXPECT_LT(tet10JacobianRatio(corner, curvedMid), 0);
 }
+
+TEST(HighOrder, QuadMidNodesOnSurface) {
+  // Two quads of the cylinder sharing an edge: 8-node quads with their mid nodes on r = 1.
+  const CylinderPatch cyl;
+  SurfaceMesh m;
+  int n[2][3];
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 3; ++j) n[i][j] = cyl.node(m, {0.4 * j, 0.5 * i});
+  m.quads = {{n[0][0], n[0][1], n[1][1], n[1][0]}, {n[0][1], n[0][2], n[1][2], n[1][1]}};
+  m.quadFace = {0, 0};
+  const Order2Stats stats = elevateToOrder2(cyl.model, m);
+  EXPECT_EQ(stats.midNodes, 7);  // 4 + 4 edges, one shared
+  EXPECT_EQ(stats.straightened, 0);
+  ASSERT_EQ(m.quadMid.size(), 2u);
+  EXPECT_EQ(m.quadMid[0][1], m.quadMid[1][3]);  // the shared edge's node
+  for (std::size_t q = 0; q < 2; ++q) {
+    std::array<Vec3, 4> c, mid;
+    for (int k = 0; k < 4; ++k) {
+      c[k] = m.nodes[m.quads[q][k]];
+      mid[k] = m.nodes[m.quadMid[q][k]];
+      EXPECT_NEAR(std::hypot(mid[k].x(), mid[k].y()), 1, 1e-9);
+      EXPECT_EQ(m.nodeOn[m.quadMid[q][k]].kind, NodeOn::Kind::Face);
+    }
+    EXPECT_GE(quad8JacobianRatio(c, mid), kMinJacobianRatio);
+  }
+}
