@@ -43,6 +43,13 @@ class TetMesh {
   /// One live tetrahedron incident to v, or an invalid id if v is in none.
   TetId vertexTet(VertexId v) const { return TetId(vtet_[v.index]); }
   void setVertexTet(VertexId v, TetId t) { vtet_[v.index] = t.index; }
+  /// Moves vertex v to p. No check: the caller (smoothing, sec. 5.6.1) has verified that
+  /// every incident tet stays positively oriented. Clears certifiedDelaunay().
+  void movePoint(VertexId v, const Vec3& p) {
+    double* c = &xyz_[3 * std::size_t{v.index}];
+    c[0] = p.x(), c[1] = p.y(), c[2] = p.z();
+    certified_ = false;
+  }
 
   // ---- tetrahedra ----
   /// Number of slots (live + free); TetIds range over [0, tetSlots()).

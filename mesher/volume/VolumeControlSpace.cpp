@@ -1,0 +1,123 @@
+#include "mesher/volume/VolumeControlSpace.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "mesher/control/CSAnalytic3d.h"
+#include "mesher/control/CSOctree3d.h"
+#include "mesher/control/ExtendedSource3d.h"
+#include "mesher/core/Error.h"
+#include "mesher/metric/AnisotropyLimit.h"
+#include "mesher/metric/MetricIntersection.h"
+#include "mesher/metric/MetricInterpolation.h"
+#include "mesher/metric/SimplexMetric.h"
+
+namespace aniso {
+namespace {
+
+/// Relative triangle area (of the squared longest edge) below which a boundary triangle
+/// gives no metric (a sliver triangle's simplex metric is meaningless).
+constexpr double kFlatTriangle = 1e-8;
+
+std::vector<char> solidFaces(const Model& model, int solid) {
+  std::vector<char> in(model.faces.size(), 0);
+  const ModelSolid& s = model.solids.at(static_cast<std::size_t>(solid));
+  auto addShell = [&](int shell) {
+    if (shell < 0) return;
+    for (const FaceUse& u : model.shells.at(static_cast<std::size_t>(shell)).faces)
+      if (u.face >= 0 && static_cast<std::size_t>(u.face) < in.size()) in[u.face] = 1;
+  };
+  addShell(s.outerShell);
+  for (const int v : s.voidShells) addShell(v);
+  return in;
+}
+
+/// Eq. 3.3: the surface metric of triangle (a, b, c) extended to 3D (see the header).
+bool triangleMetric(const Vec3& a, const Vec3& b, const Vec3& c, double gammaA, double hmin, Metric3d& out) {
+  const Vec3 ab = b - a, ac = c - a;
+  const Vec3 n = ab.cross(ac);
+  const double longest = std::max({ab.squaredNorm(), ac.squaredNorm(), (c - b).squaredNorm()});
+  if (!(n.norm() > kFlatTriangle * longest)) return false;
+  const Vec3 u = ab.normalized(), nn = n.normalized(), w = nn.cross(u);
+  const Vec2 pa(0, 0), pb(ab.dot(u), ab.dot(w)), pc(ac.dot(u), ac.dot(w));
+  const MetricAxes<2> ax = Metric2d::fromTensor(simplexMetricTensor(pa, pb, pc)).axes();
+  const double h1 = std::max(ax.lengths(0), hmin), h2 = std::max(ax.lengths(1), hmin);
+  const double h3 = std::max(std::min(h1, h2), std::max(h1, h2) / gammaA);
+  const Vec3 e1 = ax.directions(0, 0) * u + ax.directions(1, 0) * w;
+  const Vec3 e2 = ax.directions(0, 1) * u + ax.directions(1, 1) * w;
+  out = limitAnisotropy(Metric3d::fromDirections(e1, e2, nn, h1, h2, h3), gammaA);
+  return true;
+}
+
+std::unique_ptr<ExtendedSource3d> extendedSource(const SizingSource& src) {
+  switch (src.kind) {
+    case SizingSource::Kind::Point: return std::make_unique<PointSource3d>(src.a, src.radius);
+    case SizingSource::Kind::Segment: return std::make_unique<SegmentSource3d>(src.a, src.b, src.radius);
+    case SizingSource::Kind::Box: return std::make_unique<PrismSource3d>(PrismSource3d::box(src.a, src.b));
+  }
+  return nullptr;
+}
+
+bool overlaps(const Box3& a, const Box3& b) {
+  return !a.empty() && !b.empty() && (a.lo.array() <= b.hi.array()).all() && (b.lo.array() <= a.hi.array()).all();
+}
+
+}  // namespace
+
+std::shared_ptr<ControlSpace3d> buildVolumeControlSpace(const Model& model, const SurfaceMesh& surface, int solid,
+                                                        const SizingParameters& sizing, const UserSizing* user) {
+  const std::vector<char> faces = solidFaces(model, solid);
+  const double diag = model.diagonal();
+  const double hmax = sizing.hmaxFor(diag), hmin = sizing.hminFor(diag);
+  const double gammaA = std::max(1.0, sizing.anisotropy);
+
+  // 4 (gathered first for the box): per boundary node, the blend of its triangles' metrics.
+  std::vector<MetricBlend<3>> blend(surface.nodes.size());
+  Box3 box;
+  std::size_t triangles = 0;
+  for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
+    const int f = surface.triangleFace[t];
+    if (f < 0 || static_cast<std::size_t>(f) >= faces.size() || !faces[f]) continue;
+    const std::array<int, 3>& tri = surface.triangles[t];
+    ++triangles;
+    for (const int v : tri) box.add(surface.nodes[v]);
+    Metric3d m;
+    if (!triangleMetric(surface.nodes[tri[0]], surface.nodes[tri[1]], surface.nodes[tri[2]], gammaA, hmin, m)) continue;
+    for (const int v : tri) blend[v].add(m, 1.0);
+  }
+  if (triangles == 0) throw MeshingError("solid " + std::to_string(solid + 1) + ": no boundary triangle for the volume control space");
+
+  // 1–2
+  const double margin = kVolumeBoxMargin * std::max(box.diagonal(), 1e-300);
+  box.lo.array() -= margin;
+  box.hi.array() += margin;
+  auto cs = std::make_shared<CSOctree3d>(box, sizing);
+
+  for (std::size_t v = 0; v < blend.size(); ++v)
+    if (!blend[v].empty()) cs->insertDiscreteSource(surface.nodes[v], blend[v].result());
+
+  // h_max everywhere (and the user's global metric): folds in the point sources above.
+  Metric3d global = Metric3d::isotropic(hmax);
+  if (user && user->global) global = intersect(global, *user->global);
+  cs->setContinuousSource(CSAnalytic3d(box, [global](const Vec3&) { return global; }));
+
+  // 3: the user's sources meeting the solid.
+  if (user)
+    for (const SizingSource& src : user->sources) {
+      const std::unique_ptr<ExtendedSource3d> ext = extendedSource(src);
+      if (ext && overlaps(ext->bounds(), box)) cs->insertExtendedSource(*ext, src.metric);
+    }
+
+  // 5
+  cs->modifyControlVertices([gammaA](const Vec3&, Metric3d& m) {
+    if (anisotropyRatio(m) <= gammaA * (1 + 1e-9)) return false;
+    m = limitAnisotropy(m, gammaA);
+    return true;
+  });
+  cs->smoothGradation(sizing.gradation);
+  return cs;
+}
+
+}  // namespace aniso

@@ -1,0 +1,43 @@
+#include "mesher/volume/VolumeImprovement.h"
+
+#include "mesher/volume/improve/QualityFlips.h"
+#include "mesher/volume/improve/SliverRemoval.h"
+#include "mesher/volume/improve/VertexMover.h"
+
+namespace aniso {
+
+namespace {
+/// Floor of the smoothing acceptance (VertexMover::smooth): stars whose worst η_M is
+/// below it must raise their worst; others keep it and their mean.
+constexpr double kSmoothingQualityFloor = 0.3;
+}  // namespace
+
+VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, const VolumeImproveOptions& o) {
+  VolumeImproveStats st;
+  s.node.resize(s.mesh.numVertices(), -1);
+  improve3d::VertexMetrics vm(s.mesh, cs);
+  improve3d::VertexMover mover(s, vm);
+  for (int pass = 0; pass < o.passes; ++pass) {
+    for (int sweep = 0; sweep < o.smoothingSweeps; ++sweep)
+      for (std::uint32_t v = 0; v < s.mesh.numVertices(); ++v)
+        if (mover.smooth(del3d::VertexId(v), o.lowGradation, kSmoothingQualityFloor)) ++st.moved;
+    improve3d::QualityFlips flips(s, vm, o.flipGain);
+    flips.run();
+    st.flips23 += flips.counts().f23;
+    st.flips32 += flips.counts().f32;
+    st.flips44 += flips.counts().f44;
+  }
+  if (o.sliverRounds > 0) {
+    const improve3d::SliverStats ss = improve3d::removeSlivers(s, cs, vm, o.sliverAngleDeg, o.sliverRounds, o.sliverInsertion);
+    st.sliversBefore = ss.before;
+    st.sliversAfter = ss.after;
+    st.sliverFlips = ss.flips;
+    st.sliverMoves = ss.moves;
+    st.sliverInsertions = ss.insertions;
+  } else {
+    st.sliversBefore = st.sliversAfter = improve3d::countSlivers(s, vm, o.sliverAngleDeg);
+  }
+  return st;
+}
+
+}  // namespace aniso

@@ -1,0 +1,51 @@
+#pragma once
+// improveVolume — improvement of the tetrahedral mesh of one solid (thesis sec. 5.6,
+// alg. 5.4), then sliver removal (issue 5):
+//   for i = 1..passes (table 5.6: one pass by default, later passes degrade graded and
+//   anisotropic meshes):
+//     Laplace smoothing of the free vertices (sec. 5.6.1): the mean of the neighbours, or
+//       the metric version (eq. 4.3) where the local gradation is high; a move is kept
+//       only when every tet of the star stays positive (exact orient3d) and the star's
+//       worst η_M does not decrease (else the half move is tried);
+//     geometric flipping (sec. 5.6.2): T23 for faces, T32 / T44 for edges (legality by
+//       the kernel's exact checks; constrained faces are never removed) whenever the
+//       worst η_M of the new tets beats that of the old ones by flipGain; all tets are
+//       visited, a changed region is revisited.
+//   sliver removal: every tet whose smallest dihedral angle is below sliverAngleDeg is
+//     attacked by (1) flips of its faces and edges raising the local minimum of η_M,
+//     (2) relocation of its free vertices (smoothing, then deterministic perturbations)
+//     raising the minimum dihedral angle of their stars, (3) inserting a point at its
+//     metric circumcentre (del3d::Inserter, mustRemove = the sliver) followed by (2) on
+//     the new vertex; rounds repeat while they make progress (at most sliverRounds).
+// η_M of a tet uses the mean of the four vertices' transformation tensors (cached per
+// vertex, one control-space call per vertex: improve/VertexMetrics.h). Fixed vertices (node ≥ 0) never move; the hull (the
+// constrained boundary triangles) is unchanged, so validateSolidTetMesh holds afterwards.
+// Deterministic.
+#include <cstddef>
+
+#include "mesher/control/ControlSpace3d.h"
+#include "mesher/volume/SolidTetMesh.h"
+
+namespace aniso {
+
+struct VolumeImproveOptions {
+  int passes = 1;                ///< N_imp of alg. 5.4 (table 5.6)
+  int smoothingSweeps = 1;       ///< Laplace sweeps per pass
+  double lowGradation = 0.05;    ///< δ_M threshold of the mixed (plain / metric) smoothing
+  double flipGain = 1e-3;        ///< required increase of the worst η_M for a flip
+  double sliverAngleDeg = 10.0;  ///< sliver removal target (smallest dihedral angle)
+  int sliverRounds = 4;
+  bool sliverInsertion = true;   ///< allow step (3)
+};
+
+struct VolumeImproveStats {
+  std::size_t moved = 0;          ///< accepted smoothing moves
+  std::size_t flips23 = 0, flips32 = 0, flips44 = 0;
+  std::size_t sliversBefore = 0;  ///< tets below sliverAngleDeg before sliver removal
+  std::size_t sliversAfter = 0;
+  std::size_t sliverFlips = 0, sliverMoves = 0, sliverInsertions = 0;
+};
+
+VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, const VolumeImproveOptions& o = {});
+
+}  // namespace aniso

@@ -1,0 +1,233 @@
+#include "mesher/volume/VolumeRefinement.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "mesher/delaunay3d/Inserter.h"
+#include "mesher/delaunay3d/Locate.h"
+#include "mesher/volume/refine/BoundaryEdge.h"
+#include "mesher/volume/refine/RefineHeap.h"
+#include "mesher/volume/refine/TetMetricGeometry.h"
+
+namespace aniso {
+namespace {
+
+using del3d::TetId;
+using del3d::VertexId;
+
+constexpr int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+/// The edge check (5.5.1) first measures the edges in M_K; only when one is longer than
+/// edgeLengthMax / kEdgePrefilter there are the midpoint metrics queried (gradation γ_M ≤ 4
+/// changes a length by far less than this factor across one element).
+constexpr double kEdgePrefilter = 1.3;
+/// Volume of the unit regular tet, V_M(K_I) of eq. 6.2.
+constexpr double kIdealVolume = 0.11785113019775793;  // 1 / (6√2)
+
+struct TetPoints {
+  std::array<Vec3, 4> p;
+  Vec3 centroid() const { return 0.25 * (p[0] + p[1] + p[2] + p[3]); }
+};
+
+TetPoints pointsOf(const del3d::TetMesh& mesh, TetId t) {
+  TetPoints tp;
+  for (int i = 0; i < 4; ++i) tp.p[i] = mesh.point(mesh.vertex(t, i));
+  return tp;
+}
+
+class Refiner {
+ public:
+  Refiner(SolidTetMesh& s, const ControlSpace3d& cs, const VolumeRefineOptions& o)
+      : s_(s), mesh_(s.mesh), cs_(cs), o_(o), inserter_(s.mesh) {}
+
+  VolumeRefineStats run();
+
+ private:
+  double evaluate(TetId t);
+  void enqueue(TetId t);
+  bool refine(TetId k, double q);
+  bool longestInnerEdgeMidpoint(TetId k, const Metric3d& m, const TetPoints& tp, Vec3& out) const;
+  enum class Outcome { Inserted, Outside, Close, Metric, Refused };
+  Outcome tryInsert(const Vec3& p, TetId k, bool mle);
+  bool nearHull(const Vec3& p, const Metric3d& m, TetId c) const;
+
+  SolidTetMesh& s_;
+  del3d::TetMesh& mesh_;
+  const ControlSpace3d& cs_;
+  const VolumeRefineOptions& o_;
+  del3d::Inserter inserter_;
+  refine3d::RefineHeap heap_;
+  std::vector<std::uint8_t> postponed_;
+  std::uint32_t rng_ = 0x9E3779B9u;
+  VolumeRefineStats st_;
+};
+
+double Refiner::evaluate(TetId t) {
+  ++st_.evaluated;
+  const TetPoints tp = pointsOf(mesh_, t);
+  const Metric3d m = cs_.getMetric(tp.centroid());
+  double q = refine3d::metricSphereQuality(m, tp.p[0], tp.p[1], tp.p[2], tp.p[3]);
+  if (q < o_.qualityThreshold) return q;
+  // 5.5.1: a tet of good q with a too long edge is refined all the same.
+  const std::uint32_t* tv = mesh_.tetVertices(t);
+  for (const auto& e : kEdges) {
+    // An edge between two surface nodes may be a boundary edge, which no inner node can
+    // shorten: such edges are left to q (their tets' circumspheres).
+    if (s_.isFixed(VertexId(tv[e[0]])) && s_.isFixed(VertexId(tv[e[1]]))) continue;
+    const Vec3& a = tp.p[e[0]];
+    const Vec3& b = tp.p[e[1]];
+    if (m.length(b - a) * kEdgePrefilter <= o_.edgeLengthMax) continue;
+    if (cs_.getMetric(0.5 * (a + b)).length(b - a) > o_.edgeLengthMax) return 0.95 * o_.qualityThreshold;
+  }
+  return q;
+}
+
+void Refiner::enqueue(TetId t) {
+  heap_.renew(t);
+  if (t.index >= postponed_.size()) postponed_.resize(std::size_t{t.index} + 1 + postponed_.size() / 2, 0);
+  postponed_[t.index] = 0;
+  const double q = evaluate(t);
+  if (q < o_.qualityThreshold) heap_.push(t, q);
+}
+
+bool Refiner::longestInnerEdgeMidpoint(TetId k, const Metric3d& m, const TetPoints& tp, Vec3& out) const {
+  std::array<std::pair<double, int>, 6> len;
+  for (int e = 0; e < 6; ++e) len[e] = {m.length(tp.p[kEdges[e][1]] - tp.p[kEdges[e][0]]), e};
+  std::sort(len.begin(), len.end(), [](const auto& x, const auto& y) { return x.first > y.first || (x.first == y.first && x.second < y.second); });
+  for (const auto& [l, e] : len) {
+    if (refine3d::isBoundaryEdge(s_, k, kEdges[e][0], kEdges[e][1])) continue;
+    out = 0.5 * (tp.p[kEdges[e][0]] + tp.p[kEdges[e][1]]);
+    return true;
+  }
+  return false;
+}
+
+// Is p within minBoundaryDistance (in m) of the plane of a hull face of tet c?
+bool Refiner::nearHull(const Vec3& p, const Metric3d& m, TetId c) const {
+  for (int i = 0; i < 4; ++i) {
+    if (mesh_.neighbour(c, i).valid()) continue;
+    const std::uint32_t* tv = mesh_.tetVertices(c);
+    const Vec3 a = m.apply(mesh_.point(VertexId(tv[del3d::kFaceVertex[i][0]])));
+    const Vec3 b = m.apply(mesh_.point(VertexId(tv[del3d::kFaceVertex[i][1]])));
+    const Vec3 d = m.apply(mesh_.point(VertexId(tv[del3d::kFaceVertex[i][2]])));
+    const Vec3 n = (b - a).cross(d - a);
+    if (std::abs(n.dot(m.apply(p) - a)) < o_.minBoundaryDistance * n.norm()) return true;
+  }
+  return false;
+}
+
+Refiner::Outcome Refiner::tryInsert(const Vec3& p, TetId k, bool mle) {
+  const double xyz[3] = {p.x(), p.y(), p.z()};
+  const del3d::LocateResult loc = del3d::locate(mesh_, xyz, k, rng_);
+  if (loc.status == del3d::LocateStatus::Outside) return Outcome::Outside;
+  if (loc.status == del3d::LocateStatus::OnVertex) return Outcome::Close;
+  const Metric3d mp = cs_.getMetric(p);
+  for (int i = 0; i < 4; ++i)
+    if (mp.length(mesh_.point(mesh_.vertex(loc.tet, i)) - p) < o_.minVertexDistance) return Outcome::Close;
+  if (mle && nearHull(p, mp, loc.tet)) return Outcome::Close;
+  del3d::InsertOptions io;
+  io.start = loc.tet;
+  io.transform = &mp.matrix();
+  io.mustRemove = k;
+  const del3d::InsertResult r = inserter_.insert(p, io);
+  switch (r.status) {
+    case del3d::InsertStatus::Inserted: break;
+    case del3d::InsertStatus::Outside: return Outcome::Outside;
+    case del3d::InsertStatus::Duplicate: return Outcome::Close;
+    case del3d::InsertStatus::Pointless: return Outcome::Metric;
+    case del3d::InsertStatus::Refused: return Outcome::Refused;
+  }
+  s_.node.resize(mesh_.numVertices(), -1);
+  ++st_.inserted;
+  for (const TetId t : inserter_.newTets()) enqueue(t);
+  return Outcome::Inserted;
+}
+
+bool Refiner::refine(TetId k, double q) {
+  const TetPoints tp = pointsOf(mesh_, k);
+  const Metric3d m = cs_.getMetric(tp.centroid());
+  const bool mleFirst = q < o_.methodSwitch;
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    const bool mle = (attempt == 0) == mleFirst;
+    Vec3 p;
+    const bool placed = mle ? longestInnerEdgeMidpoint(k, m, tp, p)
+                            : refine3d::metricCircumcentre(m, tp.p[0], tp.p[1], tp.p[2], tp.p[3], p);
+    if (!placed) continue;
+    switch (tryInsert(p, k, mle)) {
+      case Outcome::Inserted: ++(mle ? st_.insertedMLE : st_.insertedCCS); return true;
+      case Outcome::Outside: ++st_.cancelledOutside; return false;  // retried later, no MLE
+      case Outcome::Close: ++st_.cancelledClose; break;
+      case Outcome::Metric: ++st_.cancelledMetric; break;
+      case Outcome::Refused: ++st_.cancelledRefused; break;
+    }
+  }
+  return false;
+}
+
+VolumeRefineStats Refiner::run() {
+  st_.initialTets = mesh_.numTets();
+  st_.predictedInitial = predictTetCount(s_, cs_);
+  s_.node.resize(mesh_.numVertices(), -1);
+  for (std::uint32_t k = 0; k < mesh_.tetSlots(); ++k)
+    if (mesh_.isAlive(TetId(k))) enqueue(TetId(k));
+  refine3d::RefineHeap::Entry e;
+  std::size_t sinceProgress = 0;
+  while (heap_.pop(mesh_, e)) {
+    if (mesh_.numVertices() >= o_.maxVertices) {
+      st_.budgetExhausted = true;
+      break;
+    }
+    const TetId k(e.tet);
+    if (refine(k, e.q)) {
+      if (o_.progress && ++sinceProgress >= o_.progressInterval) {
+        sinceProgress = 0;
+        const double worst = std::min<double>(e.q, heap_.topQuality());
+        o_.progress({mesh_.numTets(), worst, predictTetCount(mesh_.numTets(), worst, o_.qualityThreshold)});
+      }
+      continue;
+    }
+    // 5.5.2: K cannot be refined now; retry it later with a raised q.
+    if (postponed_[k.index] < o_.maxPostpones) {
+      ++postponed_[k.index];
+      const double raised = std::min<double>(e.q * o_.postponeFactor + 1e-3, std::nextafter(o_.qualityThreshold, 0.0));
+      heap_.push(k, raised);
+    } else {
+      ++st_.abandoned;
+    }
+  }
+  st_.finalTets = mesh_.numTets();
+  return st_;
+}
+
+}  // namespace
+
+double refinementQuality(const Metric3d& m, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  return refine3d::metricSphereQuality(m, a, b, c, d);
+}
+
+double predictTetCount(const SolidTetMesh& s, const ControlSpace3d& cs) {
+  const del3d::TetMesh& mesh = s.mesh;
+  double sum = 0;
+  for (std::uint32_t k = 0; k < mesh.tetSlots(); ++k) {
+    const TetId t(k);
+    if (!mesh.isAlive(t)) continue;
+    const TetPoints tp = pointsOf(mesh, t);
+    const double vol = (tp.p[1] - tp.p[0]).cross(tp.p[2] - tp.p[0]).dot(tp.p[3] - tp.p[0]) / 6.0;
+    sum += std::abs(vol) * cs.getMetric(tp.centroid()).determinant();
+  }
+  return sum / kIdealVolume;
+}
+
+double predictTetCount(std::size_t currentTets, double worstQuality, double qualityThreshold) {
+  const double n = static_cast<double>(currentTets);
+  if (!(worstQuality > 0) || worstQuality >= qualityThreshold) return n;
+  return n * qualityThreshold / worstQuality;
+}
+
+VolumeRefineStats refineVolume(SolidTetMesh& s, const ControlSpace3d& cs, const VolumeRefineOptions& o) {
+  Refiner r(s, cs, o);
+  return r.run();
+}
+
+}  // namespace aniso

@@ -1,0 +1,85 @@
+#include "mesher/volume/improve/QualityFlips.h"
+
+#include <algorithm>
+#include <array>
+#include <span>
+
+#include "mesher/delaunay3d/EdgeRing.h"
+#include "mesher/delaunay3d/FlipT23.h"
+#include "mesher/delaunay3d/FlipT32.h"
+#include "mesher/delaunay3d/FlipT44.h"
+
+namespace aniso::improve3d {
+namespace {
+constexpr int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+
+/// Worst η_M over tets given as ids or as vertex quadruples.
+template <class Range>
+double worstEta(const VertexMetrics& vm, const Range& tets) {
+  double w = 1e300;
+  for (const auto& t : tets) w = std::min(w, vm.eta(t));
+  return w;
+}
+}  // namespace
+
+bool QualityFlips::tryFace(del3d::TetId t, int i, std::vector<del3d::TetId>& created) {
+  if (s_.mesh.isConstrained(t, i) || !s_.mesh.neighbour(t, i).valid()) return false;
+  del3d::Flip23Plan plan;
+  if (!del3d::canFlip23(s_.mesh, t, i, &plan)) return false;
+  if (!(worstEta(vm_, plan.newTets) > worstEta(vm_, plan.oldTets) + gain_)) return false;
+  const auto nt = del3d::flip23(s_.mesh, plan);
+  created.insert(created.end(), nt.begin(), nt.end());
+  ++counts_.f23;
+  return true;
+}
+
+bool QualityFlips::tryEdge(del3d::TetId t, int i, int j, std::vector<del3d::TetId>& created) {
+  std::array<del3d::TetId, 4> ring;
+  std::array<del3d::VertexId, 4> apex;
+  const int n = del3d::closedEdgeRing(s_.mesh, t, i, j, ring, apex);
+  if (n == 3) {
+    del3d::Flip32Plan plan;
+    if (!del3d::canFlip32(s_.mesh, t, i, j, &plan)) return false;
+    if (!(worstEta(vm_, plan.newTets) > worstEta(vm_, plan.oldTets) + gain_)) return false;
+    const auto nt = del3d::flip32(s_.mesh, plan);
+    created.insert(created.end(), nt.begin(), nt.end());
+    ++counts_.f32;
+    return true;
+  }
+  if (n != 4) return false;
+  const double before = worstEta(vm_, ring);
+  del3d::Flip44Plan best;
+  double bestAfter = before + gain_;
+  bool found = false;
+  for (int diag = 0; diag < 2; ++diag) {
+    del3d::Flip44Plan plan;
+    if (!del3d::canFlip44(s_.mesh, t, i, j, diag, &plan)) continue;
+    const double after = worstEta(vm_, plan.newTets);
+    if (after > bestAfter) bestAfter = after, best = plan, found = true;
+  }
+  if (!found) return false;
+  const auto nt = del3d::flip44(s_.mesh, best);
+  created.insert(created.end(), nt.begin(), nt.end());
+  ++counts_.f44;
+  return true;
+}
+
+bool QualityFlips::visit(del3d::TetId t, std::vector<del3d::TetId>& created) {
+  if (!s_.mesh.isAlive(t)) return false;
+  for (int i = 0; i < 4; ++i)
+    if (tryFace(t, i, created)) return true;
+  for (const auto& e : kEdges)
+    if (tryEdge(t, e[0], e[1], created)) return true;
+  return false;
+}
+
+void QualityFlips::run() {
+  std::vector<del3d::TetId> work;
+  work.reserve(s_.mesh.numTets());
+  for (std::uint32_t k = 0; k < s_.mesh.tetSlots(); ++k)
+    if (s_.mesh.isAlive(del3d::TetId(k))) work.push_back(del3d::TetId(k));
+  const std::size_t cap = kMaxFlipsPerTet * work.size() + counts_.total();
+  for (std::size_t k = 0; k < work.size() && counts_.total() < cap; ++k) visit(work[k], work);
+}
+
+}  // namespace aniso::improve3d

@@ -1,0 +1,47 @@
+#pragma once
+// Geometric flipping of faces and edges by quality (thesis sec. 5.6.2): T23 for a face,
+// T32 for an edge with three tets around it, T44 (both diagonals) for an edge with four.
+// Legality is the kernel's (canFlip23/32/44: exact orientation, constrained faces never
+// removed); a flip is applied when the worst η_M of the new tets exceeds the worst η_M of
+// the old ones by more than `gain` (η_M in the mean of the vertices' tensors,
+// VertexMetrics). visit() tries every flip of one tet and applies the first beneficial one;
+// run() visits all tets and then the new ones until nothing changes (or a cap of
+// kMaxFlipsPerTet flips per initial tet is reached).
+#include <cstddef>
+#include <vector>
+
+#include "mesher/volume/SolidTetMesh.h"
+#include "mesher/volume/improve/VertexMetrics.h"
+
+namespace aniso::improve3d {
+
+/// Cap of run(): at most this many flips per tet present at its start.
+inline constexpr std::size_t kMaxFlipsPerTet = 8;
+
+struct FlipCounts {
+  std::size_t f23 = 0, f32 = 0, f44 = 0;
+  std::size_t total() const { return f23 + f32 + f44; }
+};
+
+class QualityFlips {
+ public:
+  QualityFlips(SolidTetMesh& s, const VertexMetrics& vm, double gain) : s_(s), vm_(vm), gain_(gain) {}
+
+  /// Tries the flips of the live tet t; on success appends the new tets to `created` and
+  /// returns true (t is then dead).
+  bool visit(del3d::TetId t, std::vector<del3d::TetId>& created);
+  /// All live tets, then the created ones, until stable.
+  void run();
+  const FlipCounts& counts() const { return counts_; }
+
+ private:
+  bool tryFace(del3d::TetId t, int i, std::vector<del3d::TetId>& created);
+  bool tryEdge(del3d::TetId t, int i, int j, std::vector<del3d::TetId>& created);
+
+  SolidTetMesh& s_;
+  const VertexMetrics& vm_;
+  double gain_;
+  FlipCounts counts_;
+};
+
+}  // namespace aniso::improve3d

@@ -1,0 +1,37 @@
+#pragma once
+// Sliver removal (issue 5 §1, after alg. 5.4): a tet is a sliver when its smallest
+// dihedral angle, measured in its metric (VertexMetrics::metricMinDihedral; Euclidean for
+// an isotropic field), is below the target angle. Each round visits the slivers in slot
+// order and, for each one still a sliver, tries in turn:
+//   1 flips of its faces and edges (QualityFlips::visit with gain 0, repeated on the
+//     tets created while one of them is still a sliver);
+//   2 relocation of its free vertices (VertexMover::relocate);
+//   3 (optional) a point at its metric circumcentre, inserted with del3d::Inserter
+//     (transform = the metric there, mustRemove = the sliver, never crossing a
+//     constrained face; cancelled when outside the solid or closer than
+//     kSliverInsertDistance, in that metric, to a vertex of its containing tet), then
+//     relocation of the new vertex and flips of its star.
+// Rounds stop when one removes no sliver or after `rounds`.
+#include <cstddef>
+
+#include "mesher/control/ControlSpace3d.h"
+#include "mesher/volume/SolidTetMesh.h"
+#include "mesher/volume/improve/VertexMetrics.h"
+
+namespace aniso::improve3d {
+
+/// Metric distance below which a sliver's circumcentre is too close to an existing vertex.
+inline constexpr double kSliverInsertDistance = 0.25;
+
+struct SliverStats {
+  std::size_t before = 0, after = 0;
+  std::size_t flips = 0, moves = 0, insertions = 0;
+};
+
+/// Number of live tets of s below angleDeg (metric dihedral).
+std::size_t countSlivers(const SolidTetMesh& s, const VertexMetrics& vm, double angleDeg);
+
+SliverStats removeSlivers(SolidTetMesh& s, const ControlSpace3d& cs, VertexMetrics& vm, double angleDeg, int rounds,
+                          bool insertion);
+
+}  // namespace aniso::improve3d

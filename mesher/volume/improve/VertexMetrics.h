@@ -1,0 +1,44 @@
+#pragma once
+// Per-vertex metric cache of the improvement phase (sec. 5.6): one control-space call per
+// vertex; the metric of a tetrahedron is the mean of its four vertices' transformation
+// tensors (a mean of SPD matrices is SPD; for a constant field it is that field). η_M of
+// a tet (MeanRatio.h) is measured in that mean, so comparing configurations of the same
+// vertices (flips, relocations) costs no control-space call.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "mesher/control/ControlSpace3d.h"
+#include "mesher/delaunay3d/TetMesh.h"
+
+namespace aniso::improve3d {
+
+class VertexMetrics {
+ public:
+  VertexMetrics(const del3d::TetMesh& mesh, const ControlSpace3d& cs) : mesh_(mesh), cs_(cs) { sync(); }
+  /// Queries the metric of vertices added to the mesh since the last call.
+  void sync();
+  const Mat3& at(del3d::VertexId v) const { return m_[v.index]; }
+  /// Re-queries v's metric (after v moved).
+  void refresh(del3d::VertexId v);
+
+  Mat3 tetMetric(const std::uint32_t* v) const { return 0.25 * (m_[v[0]] + m_[v[1]] + m_[v[2]] + m_[v[3]]); }
+  /// η_M of the tet with vertex ids v (signed).
+  double eta(const std::uint32_t* v) const;
+  double eta(const std::array<del3d::VertexId, 4>& v) const {
+    const std::uint32_t ids[4] = {v[0].index, v[1].index, v[2].index, v[3].index};
+    return eta(ids);
+  }
+  double eta(del3d::TetId t) const { return eta(mesh_.tetVertices(t)); }
+  /// η_M of the tet with vertex ids v where vertex `moved` is placed at p.
+  double etaWith(const std::uint32_t* v, std::uint32_t moved, const Vec3& p) const;
+  /// Smallest dihedral angle (degrees) of the tet mapped by its metric.
+  double metricMinDihedral(del3d::TetId t) const;
+
+ private:
+  const del3d::TetMesh& mesh_;
+  const ControlSpace3d& cs_;
+  std::vector<Mat3> m_;
+};
+
+}  // namespace aniso::improve3d

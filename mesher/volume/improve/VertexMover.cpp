@@ -1,0 +1,137 @@
+#include "mesher/volume/improve/VertexMover.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "mesher/predicates/Predicates.h"
+#include "mesher/volume/improve/TetStar.h"
+
+namespace aniso::improve3d {
+namespace {
+/// Perturbation radii of relocate(), relative to the shortest edge of the star.
+constexpr double kPerturbRadii[2] = {0.15, 0.05};
+}  // namespace
+
+void VertexMover::loadStar(del3d::VertexId v) {
+  vertexStar(s_.mesh, v, star_);
+  nbrs_.clear();
+  for (const del3d::TetId t : star_)
+    for (int i = 0; i < 4; ++i) {
+      const std::uint32_t w = s_.mesh.tetVertices(t)[i];
+      if (w != v.index) nbrs_.push_back(w);
+    }
+  std::sort(nbrs_.begin(), nbrs_.end());
+  nbrs_.erase(std::unique(nbrs_.begin(), nbrs_.end()), nbrs_.end());
+}
+
+bool VertexMover::legal(del3d::VertexId v, const Vec3& p) const {
+  const double xyz[3] = {p.x(), p.y(), p.z()};
+  for (const del3d::TetId t : star_) {
+    const std::uint32_t* tv = s_.mesh.tetVertices(t);
+    const double* c[4];
+    for (int i = 0; i < 4; ++i) c[i] = tv[i] == v.index ? xyz : s_.mesh.coords(del3d::VertexId(tv[i]));
+    if (predicates::orient3d(c[0], c[1], c[2], c[3]) <= 0) return false;
+  }
+  return true;
+}
+
+void VertexMover::quality(del3d::VertexId v, const Vec3& p, double& worst, double& mean) const {
+  worst = 1e300;
+  double sum = 0;
+  for (const del3d::TetId t : star_) {
+    const double e = vm_.etaWith(s_.mesh.tetVertices(t), v.index, p);
+    worst = std::min(worst, e);
+    sum += e;
+  }
+  mean = star_.empty() ? 0 : sum / static_cast<double>(star_.size());
+}
+
+Vec3 VertexMover::laplaceTarget(del3d::VertexId v, double lowGradation) const {
+  const Vec3 q = s_.mesh.point(v);
+  const Mat3& mq = vm_.at(v);
+  const double nq = mq.norm();
+  double grad = 0;
+  Vec3 mean = Vec3::Zero();
+  for (const std::uint32_t w : nbrs_) {
+    mean += s_.mesh.point(del3d::VertexId(w));
+    grad = std::max(grad, (vm_.at(del3d::VertexId(w)) - mq).norm() / nq);
+  }
+  mean /= static_cast<double>(nbrs_.size());
+  if (grad <= lowGradation) return mean;
+  // eq. 4.3: x^M = mean of M_i (P_i − Q), M_i the mid-edge tensor scaled to det M_Q.
+  const double detQ = mq.determinant();
+  Vec3 xm = Vec3::Zero();
+  for (const std::uint32_t w : nbrs_) {
+    Mat3 mi = 0.5 * (mq + vm_.at(del3d::VertexId(w)));
+    mi *= std::cbrt(detQ / mi.determinant());
+    xm += mi * (s_.mesh.point(del3d::VertexId(w)) - q);
+  }
+  xm /= static_cast<double>(nbrs_.size());
+  return q + mq.inverse() * xm;
+}
+
+void VertexMover::move(del3d::VertexId v, const Vec3& p) {
+  s_.mesh.movePoint(v, p);
+  vm_.refresh(v);
+}
+
+double VertexMover::starWorst(del3d::VertexId v) {
+  loadStar(v);
+  double worst, mean;
+  quality(v, s_.mesh.point(v), worst, mean);
+  return worst;
+}
+
+bool VertexMover::smooth(del3d::VertexId v, double lowGradation, double qualityFloor) {
+  if (s_.isFixed(v) || !s_.mesh.vertexTet(v).valid()) return false;
+  loadStar(v);
+  if (nbrs_.empty()) return false;
+  const Vec3 q = s_.mesh.point(v);
+  const Vec3 target = laplaceTarget(v, lowGradation);
+  double w0, m0;
+  quality(v, q, w0, m0);
+  for (const double step : {1.0, 0.5}) {
+    const Vec3 p = q + step * (target - q);
+    if (p == q || !legal(v, p)) continue;
+    double w1, m1;
+    quality(v, p, w1, m1);
+    const bool better = w0 < qualityFloor ? w1 > w0 : (w1 >= qualityFloor && m1 >= m0);
+    if (better) {
+      move(v, p);
+      return true;
+    }
+  }
+  return false;
+}
+
+bool VertexMover::relocate(del3d::VertexId v) {
+  if (s_.isFixed(v) || !s_.mesh.vertexTet(v).valid()) return false;
+  loadStar(v);
+  if (nbrs_.empty()) return false;
+  const Vec3 q = s_.mesh.point(v);
+  double best, mean;
+  quality(v, q, best, mean);
+  double shortest = 1e300;
+  for (const std::uint32_t w : nbrs_) shortest = std::min(shortest, (s_.mesh.point(del3d::VertexId(w)) - q).norm());
+  Vec3 bestP = q;
+  auto consider = [&](const Vec3& p) {
+    if (!legal(v, p)) return;
+    double w, m;
+    quality(v, p, w, m);
+    if (w > best) best = w, bestP = p;
+  };
+  consider(laplaceTarget(v, -1.0));
+  for (const double r : kPerturbRadii)
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
+          if (dx == 0 && dy == 0 && dz == 0) continue;
+          const Vec3 d(dx, dy, dz);
+          consider(q + (r * shortest / d.norm()) * d);
+        }
+  if (bestP == q) return false;
+  move(v, bestP);
+  return true;
+}
+
+}  // namespace aniso::improve3d

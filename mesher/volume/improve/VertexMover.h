@@ -1,0 +1,48 @@
+#pragma once
+// Relocation of one free vertex of a SolidTetMesh (sec. 5.6.1 and sliver removal).
+// Check, then change: a position is legal when every tet of the vertex's star stays
+// positively oriented (exact orient3d with the vertex at the new position); fixed vertices
+// (node ≥ 0) are never moved.
+//
+// smooth(): Laplace smoothing, the target being the mean of the star's other vertices
+//   (eq. 4.2), or where the local gradation (the largest relative Frobenius difference
+//   between the vertex's tensor and a neighbour's) exceeds lowGradation, the metric
+//   version (eq. 4.3, with the mean instead of the sum and each mid-edge tensor scaled to
+//   the determinant of the vertex's, as mesher/surface/improve/LaplaceSmoothing.h).
+//   Accepted when legal and the star gets better in η_M: a poor star (worst below
+//   qualityFloor) raises its worst, another keeps the worst ≥ qualityFloor and does not
+//   lower its mean; else the half move is tried.
+// relocate(): for slivers: the Laplace target and deterministic perturbations (26
+//   directions of the cube around the vertex, two radii relative to the shortest edge of
+//   the star); the legal candidate with the largest worst η_M of the star wins if it beats
+//   the current worst.
+#include <vector>
+
+#include "mesher/volume/SolidTetMesh.h"
+#include "mesher/volume/improve/VertexMetrics.h"
+
+namespace aniso::improve3d {
+
+class VertexMover {
+ public:
+  VertexMover(SolidTetMesh& s, VertexMetrics& vm) : s_(s), vm_(vm) {}
+
+  bool smooth(del3d::VertexId v, double lowGradation, double qualityFloor);
+  bool relocate(del3d::VertexId v);
+  /// Worst η_M of v's star at its current position (recomputes the star).
+  double starWorst(del3d::VertexId v);
+
+ private:
+  void loadStar(del3d::VertexId v);
+  bool legal(del3d::VertexId v, const Vec3& p) const;
+  void quality(del3d::VertexId v, const Vec3& p, double& worst, double& mean) const;
+  Vec3 laplaceTarget(del3d::VertexId v, double lowGradation) const;
+  void move(del3d::VertexId v, const Vec3& p);
+
+  SolidTetMesh& s_;
+  VertexMetrics& vm_;
+  std::vector<del3d::TetId> star_;
+  std::vector<std::uint32_t> nbrs_;
+};
+
+}  // namespace aniso::improve3d

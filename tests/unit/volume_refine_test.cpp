@@ -1,0 +1,160 @@
+// Tests of the volume refinement (thesis sec. 5.5, mesher/volume/VolumeRefinement.h) on a
+// cube whose boundary comes from a Delaunay triangulation (no recovery needed).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "mesher/control/CSAnalytic3d.h"
+#include "mesher/volume/TetQuality.h"
+#include "mesher/volume/VolumeRefinement.h"
+#include "volume_refine_fixture.h"
+
+using namespace aniso;
+using namespace aniso::testing;
+
+namespace {
+
+CSAnalytic3d uniform(double h) {
+  return CSAnalytic3d(unitBox(), [h](const Vec3&) { return Metric3d::isotropic(h); });
+}
+
+TEST(VolumeRefine, SphereQualityOfTheIdealTet) {
+  const Vec3 a(0, 0, 0), b(1, 0, 0), c(0.5, std::sqrt(3.0) / 2, 0), d(0.5, std::sqrt(3.0) / 6, std::sqrt(2.0 / 3));
+  EXPECT_NEAR(refinementQuality(Metric3d::identity(), a, b, c, d), 1.0, 1e-12);
+  // twice the size: circumsphere 8 times larger
+  EXPECT_NEAR(refinementQuality(Metric3d::identity(), 2 * a, 2 * b, 2 * c, 2 * d), 0.125, 1e-12);
+  // the same tet stretched 4 times along x is ideal in the metric with h_x = 4
+  const Vec3 s(4, 1, 1);
+  const Metric3d m = Metric3d::fromDirections(Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ(), 4, 1, 1);
+  EXPECT_NEAR(refinementQuality(m, a.cwiseProduct(s), b.cwiseProduct(s), c.cwiseProduct(s), d.cwiseProduct(s)), 1.0, 1e-12);
+  // flat tet
+  EXPECT_EQ(refinementQuality(Metric3d::identity(), a, b, c, Vec3(0.3, 0.3, 0)), 0.0);
+}
+
+TEST(VolumeRefine, RunningPrediction) {
+  EXPECT_DOUBLE_EQ(predictTetCount(1000, 0.057, 0.57), 10000.0);
+  EXPECT_DOUBLE_EQ(predictTetCount(1000, 0.6, 0.57), 1000.0);
+}
+
+TEST(VolumeRefine, FixtureIsASolid) {
+  std::set<Triple> boundary;
+  const SolidTetMesh s = cubeSolid(4, boundary);
+  EXPECT_TRUE(checkSolid(s, boundary).empty()) << joined(checkSolid(s, boundary));
+  EXPECT_NEAR(meshVolume(s.mesh), 1.0, 1e-12);
+  EXPECT_EQ(boundary.size(), 6u * 4 * 4 * 2);
+}
+
+TEST(VolumeRefine, UniformCubeReachesTheSize) {
+  std::set<Triple> boundary;
+  SolidTetMesh s = cubeSolid(8, boundary);
+  const auto fixed = fixedPositions(s);
+  const CSAnalytic3d cs = uniform(0.125);
+  const double predicted = predictTetCount(s, cs);
+  const VolumeRefineStats st = refineVolume(s, cs);
+  ASSERT_TRUE(checkSolid(s, boundary).empty()) << joined(checkSolid(s, boundary));
+  EXPECT_NEAR(meshVolume(s.mesh), 1.0, 1e-12);
+  EXPECT_EQ(fixedPositions(s), fixed);
+  EXPECT_GT(st.inserted, 100u);
+  EXPECT_EQ(st.inserted, st.insertedMLE + st.insertedCCS);
+  EXPECT_FALSE(st.budgetExhausted);
+  EXPECT_NEAR(st.predictedInitial, predicted, 1e-9 * predicted);
+  // tets left below q_t are those at the boundary whose circumcentre is outside (a surface
+  // triangle too large for q_t): none with fewer than two surface nodes
+  std::size_t innerBad = 0;
+  for (std::uint32_t k = 0; k < s.mesh.tetSlots(); ++k) {
+    const del3d::TetId t(k);
+    if (!s.mesh.isAlive(t)) continue;
+    Vec3 p[4];
+    int fixedCount = 0;
+    for (int i = 0; i < 4; ++i) {
+      p[i] = s.mesh.point(s.mesh.vertex(t, i));
+      fixedCount += s.isFixed(s.mesh.vertex(t, i));
+    }
+    if (fixedCount < 2 && refinementQuality(Metric3d::isotropic(0.125), p[0], p[1], p[2], p[3]) < 0.57) ++innerBad;
+  }
+  EXPECT_EQ(innerBad, 0u);
+  EXPECT_LT(st.abandoned, st.finalTets / 10);
+  TetQualitySummary q;
+  accumulateTetQuality(s, &cs, q);
+  EXPECT_EQ(q.inverted, 0u);
+  // a unit mesh: edges about one unit long, the count near the prediction of eq. 6.2
+  EXPECT_GT(q.muM.mean(), 0.8);
+  EXPECT_LT(q.muM.mean(), 1.2);
+  EXPECT_GT(q.meanRatio.mean(), 0.6);
+  EXPECT_GT(static_cast<double>(st.finalTets), 0.5 * predicted);
+  EXPECT_LT(static_cast<double>(st.finalTets), 3.0 * predicted);
+}
+
+TEST(VolumeRefine, GradedSizeFollowsTheField) {
+  std::set<Triple> boundary;
+  SolidTetMesh s = cubeSolid(6, boundary);
+  const CSAnalytic3d cs(unitBox(), [](const Vec3& x) { return Metric3d::isotropic(0.06 + 0.25 * x.x()); });
+  refineVolume(s, cs);
+  ASSERT_TRUE(checkSolid(s, boundary).empty()) << joined(checkSolid(s, boundary));
+  EXPECT_NEAR(meshVolume(s.mesh), 1.0, 1e-12);
+  TetQualitySummary q;
+  accumulateTetQuality(s, &cs, q);
+  EXPECT_GT(q.muM.mean(), 0.75);
+  EXPECT_LT(q.muM.mean(), 1.25);
+  // more vertices on the fine side
+  std::size_t low = 0, high = 0;
+  for (std::uint32_t v = 0; v < s.mesh.numVertices(); ++v) {
+    if (!s.mesh.vertexTet(del3d::VertexId(v)).valid() || s.isFixed(del3d::VertexId(v))) continue;
+    (s.mesh.point(del3d::VertexId(v)).x() < 0.5 ? low : high) += 1;
+  }
+  EXPECT_GT(low, 3 * high);
+}
+
+TEST(VolumeRefine, AnisotropicMetric) {
+  std::set<Triple> boundary;
+  SolidTetMesh s = cubeSolid(5, boundary);
+  const Metric3d m = Metric3d::fromDirections(Vec3(1, 1, 0), Vec3(-1, 1, 0), Vec3::UnitZ(), 0.4, 0.08, 0.08);
+  const CSAnalytic3d cs(unitBox(), [m](const Vec3&) { return m; });
+  refineVolume(s, cs);
+  ASSERT_TRUE(checkSolid(s, boundary).empty()) << joined(checkSolid(s, boundary));
+  TetQualitySummary q;
+  accumulateTetQuality(s, &cs, q);
+  EXPECT_GT(q.muM.mean(), 0.75);
+  EXPECT_LT(q.muM.mean(), 1.25);
+  EXPECT_GT(q.etaM.mean(), 0.6);
+}
+
+TEST(VolumeRefine, Deterministic) {
+  std::set<Triple> boundary;
+  SolidTetMesh a = cubeSolid(6, boundary), b = cubeSolid(6, boundary);
+  const CSAnalytic3d cs(unitBox(), [](const Vec3& x) { return Metric3d::isotropic(0.08 + 0.1 * x.y()); });
+  refineVolume(a, cs);
+  refineVolume(b, cs);
+  EXPECT_TRUE(sameMesh(a, b));
+}
+
+TEST(VolumeRefine, VertexBudgetStops) {
+  std::set<Triple> boundary;
+  SolidTetMesh s = cubeSolid(4, boundary);
+  VolumeRefineOptions o;
+  o.maxVertices = s.mesh.numVertices() + 50;
+  const VolumeRefineStats st = refineVolume(s, uniform(0.05), o);
+  EXPECT_TRUE(st.budgetExhausted);
+  EXPECT_LE(s.mesh.numVertices(), o.maxVertices);
+  EXPECT_TRUE(checkSolid(s, boundary).empty()) << joined(checkSolid(s, boundary));
+}
+
+TEST(VolumeRefine, ProgressReportsPredictions) {
+  std::set<Triple> boundary;
+  SolidTetMesh s = cubeSolid(4, boundary);
+  VolumeRefineOptions o;
+  o.progressInterval = 100;
+  std::vector<VolumeRefineProgress> seen;
+  o.progress = [&](const VolumeRefineProgress& p) { seen.push_back(p); };
+  const VolumeRefineStats st = refineVolume(s, uniform(0.1), o);
+  ASSERT_GE(seen.size(), 2u);
+  for (const VolumeRefineProgress& p : seen) {
+    EXPECT_GE(p.predictedTets, static_cast<double>(p.tets));
+    EXPECT_LE(p.tets, st.finalTets + 100);
+  }
+  // the last prediction is within a factor 2 of the final count (table 6.1)
+  EXPECT_GT(seen.back().predictedTets, 0.5 * static_cast<double>(st.finalTets));
+  EXPECT_LT(seen.back().predictedTets, 2.0 * static_cast<double>(st.finalTets));
+}
+
+}  // namespace
