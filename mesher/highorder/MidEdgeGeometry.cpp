@@ -13,9 +13,9 @@
 namespace aniso {
 namespace {
 
-/// A projection of the chord midpoint may land this far (times the edge length) from the
-/// parametric midpoint's image before it is distrusted (it jumped to another part of the
-/// surface or curve) and the parametric midpoint is kept.
+/// A mid node candidate farther than this (times the edge length) from the chord midpoint
+/// is distrusted: the (u, v) midpoint went the wrong way round a closed surface, or the
+/// projection converged elsewhere; other starting points are then tried.
 constexpr double kMaxProjectionShift = 0.5;
 
 std::uint64_t edgeKey(int a, int b) {
@@ -101,10 +101,12 @@ MidNode MidEdgeGeometry::onCurve(int a, int b, const Link& link) const {
   const double ta = a < b ? link.ta : link.tb, tb = a < b ? link.tb : link.ta;
   const Vec3 chordMid = 0.5 * (mesh_.nodes[a] + mesh_.nodes[b]);
   const double tm = 0.5 * (ta + tb);
+  // The projection of the chord midpoint (near the arc-length midpoint), unless the
+  // parameter midpoint's image is nearer the chord midpoint.
   double t = ed.curve->project(chordMid, tm, std::min(ta, tb), std::max(ta, tb));
   Vec3 p = ed.curve->point(t);
   const Vec3 pm = ed.curve->point(tm);
-  if (!p.allFinite() || (p - pm).norm() > kMaxProjectionShift * (mesh_.nodes[b] - mesh_.nodes[a]).norm()) {
+  if (!p.allFinite() || (pm.allFinite() && (pm - chordMid).norm() < (p - chordMid).norm())) {
     t = tm;
     p = pm;
   }
@@ -205,15 +207,30 @@ MidNode MidEdgeGeometry::onSurface(int a, int b, int face) const {
     on.uv = s.project(chordMid, Vec2(0.5 * (f.uvBounds.lo + f.uvBounds.hi)));
     return {s.point(on.uv), on};
   }
-  const Vec2 uvMid = 0.5 * (ua + ub);
-  const Vec3 pm = s.point(uvMid);
-  const Vec2 uvProj = s.project(chordMid, uvMid);
-  const Vec3 pp = s.point(uvProj);
+  // Candidates: the (u, v) midpoint's image and the chord midpoint projected from it; where
+  // both are far from the chord (a seam the domain does not declare periodic, say), the
+  // projections from either end too. The one nearest the chord midpoint wins.
   const double limit = kMaxProjectionShift * (mesh_.nodes[b] - mesh_.nodes[a]).norm();
-  const bool useProjection = pp.allFinite() && (!pm.allFinite() || (pp - pm).norm() <= limit);
-  on.uv = contour::PeriodicUv(s.domain(), f.uvBounds).intoBounds(useProjection ? uvProj : uvMid);
-  const Vec3 p = useProjection ? pp : pm;
-  return {p.allFinite() ? p : chordMid, on};
+  Vec2 best(0, 0);
+  double bestDistance = std::numeric_limits<double>::infinity();
+  auto consider = [&](const Vec2& uv) {
+    const Vec3 p = s.point(uv);
+    const double d = (p - chordMid).norm();
+    if (p.allFinite() && uv.allFinite() && d < bestDistance) {
+      best = uv;
+      bestDistance = d;
+    }
+  };
+  const Vec2 uvMid = 0.5 * (ua + ub);
+  consider(uvMid);
+  consider(s.project(chordMid, uvMid));
+  if (!(bestDistance <= limit)) {
+    consider(s.project(chordMid, ua));
+    consider(s.project(chordMid, ub));
+  }
+  if (!std::isfinite(bestDistance)) return {chordMid, on};
+  on.uv = contour::PeriodicUv(s.domain(), f.uvBounds).intoBounds(best);
+  return {s.point(best), on};
 }
 
 }  // namespace aniso

@@ -5,12 +5,14 @@
 // Placement (MidEdgeGeometry.h):
 //   - an edge along a model edge (its two nodes consecutive on that edge's discretization):
 //     on the 3D curve, at the projection of the chord midpoint started from the parameter
-//     midpoint of the two nodes' t (closed edges: the vertex takes t0 or t1, whichever its
-//     neighbour is next to), NodeOn{Edge, e, t};
+//     midpoint of the two nodes' t (near the arc-length midpoint; a closed edge's vertex
+//     takes t0 or t1, whichever its neighbour is next to), NodeOn{Edge, e, t};
 //   - an edge inside a face: on the surface, at the projection of the chord midpoint started
 //     from the (u, v) midpoint of its nodes (seams and periodic parameters: the two nodes'
 //     representatives nearest each other; a pole: the pole's (u, v) nearest the other
-//     node), NodeOn{Face, f, uv};
+//     node), or at the (u, v) midpoint's image if that is nearer the chord midpoint; when
+//     both are far from it (a seam the surface does not declare periodic), the projections
+//     started from either end are tried too. NodeOn{Face, f, uv};
 //   - an edge inside a solid (tetrahedra only): the straight midpoint, NodeOn{Solid, s}.
 // Nodes are appended to the mesh's nodes after the existing ones, in the order of first use
 // (elements in order, edges in element order): deterministic.

@@ -10,6 +10,7 @@
 
 #include "contour_test_models.h"
 #include "mesher/core/Error.h"
+#include "mesher/geometry/ExpressionSurface.h"
 #include "mesher/highorder/Order2.h"
 #include "mesher/highorder/QuadraticJacobian.h"
 #include "mesher/surface/SurfaceMesher.h"
@@ -307,4 +308,32 @@ TEST(HighOrder, QuadMidNodesOnSurface) {
     }
     EXPECT_GE(quad8JacobianRatio(c, mid), kMinJacobianRatio);
   }
+}
+
+TEST(HighOrder, SeamOfASurfaceNotDeclaredPeriodic) {
+  // A cylinder given by expressions on u in [0, 2π] without periodicity: an edge across
+  // the seam has its (u, v) midpoint on the far side; the mid node must still be the near one.
+  SurfaceDomain d;
+  d.u0 = 0;
+  d.u1 = 2 * kPi;
+  d.v0 = -1;
+  d.v1 = 1;
+  ModelBuilder builder;
+  builder.face(std::make_shared<ExpressionSurface>("cos(u)", "sin(u)", "v", d), box(0, -1, 2 * kPi, 1));
+  builder.m.bbox.add(Vec3(-1, -1, -1));
+  builder.m.bbox.add(Vec3(1, 1, 1));
+  const Model& model = builder.m;
+  SurfaceMesh m;
+  auto node = [&](double u, double v) {
+    return m.addNode(model.faces[0].surface->point({u, v}), NodeOn{NodeOn::Kind::Face, 0, 0, Vec2(u, v)});
+  };
+  const int a = node(2 * kPi - 0.2, 0), b = node(0.2, 0), c = node(0, 0.3);
+  m.triangles = {{a, b, c}};
+  m.triangleFace = {0};
+  const Order2Stats stats = elevateToOrder2(model, m);
+  EXPECT_EQ(stats.straightened, 0);
+  const Vec3 mid = m.nodes[m.triangleMid[0][0]];
+  EXPECT_NEAR(mid.x(), 1, 1e-6);  // (1, 0, 0), not (−1, 0, 0)
+  EXPECT_NEAR(mid.y(), 0, 1e-6);
+  EXPECT_NEAR(mid.z(), 0, 1e-6);
 }
