@@ -43,12 +43,14 @@ Progress::~Progress() {
   if (auto s = currentSink()) s->progressEnd(phase_);
 }
 
-void Progress::update(double done, const std::string& detail) {
+void Progress::update(double done, const std::string& detail, bool force) {
   const long long t = nowNs();
   long long last = lastNs_.load(std::memory_order_relaxed);
   // At most 10 updates per second; of concurrent callers only the one that moves the
   // time stamp reports.
-  if (t - last < 100'000'000 || !lastNs_.compare_exchange_strong(last, t, std::memory_order_relaxed)) return;
+  if (!force &&
+      (t - last < 100'000'000 || !lastNs_.compare_exchange_strong(last, t, std::memory_order_relaxed)))
+    return;
   if (auto s = currentSink()) s->progress(phase_, done, total_, detail);
 }
 

@@ -39,7 +39,9 @@ class Progress {
   ~Progress();
   Progress(const Progress&) = delete;
   Progress& operator=(const Progress&) = delete;
-  void update(double done, const std::string& detail = {});
+  /// Reports done (of the total) with an optional detail; at most 10 times per second
+  /// unless `force` (e.g. the final state of a phase).
+  void update(double done, const std::string& detail = {}, bool force = false);
 
  private:
   std::string phase_;

@@ -27,7 +27,7 @@ double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::
 struct PhaseProgress {
   PhaseProgress(const char* phase, int n, std::function<std::string()> detailFn = {})
       : progress(phase, n), detail(std::move(detailFn)) {}
-  void tick() { progress.update(done.load(), detail ? detail() : std::string()); }
+  void tick(bool force = false) { progress.update(done.load(), detail ? detail() : std::string(), force); }
   Progress progress;
   std::atomic<int> done{0};
   std::function<std::string()> detail;
@@ -60,6 +60,7 @@ void parallelFor(int n, int threads, Work work, PhaseProgress& progress) {
   run(true);
   for (auto& t : pool) t.join();
   if (error) std::rethrow_exception(error);
+  progress.tick(true);  // the final state, whatever the rate limit let through
 }
 
 template <class Work>

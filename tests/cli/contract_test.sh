@@ -44,6 +44,13 @@ import json; p = json.load(open('$t/a'))['prepared']
 assert p['shared_faces'] == 0, p
 "; then ok no-fragment; else bad "no-fragment"; fi
 
+# --progress: one line per update on a pipe, the faces phase with its predicted count
+# (thesis 6.5), ended by a "done" line; without it a pipe gets no progress at all.
+"$cli" --progress mesh "$models/plate.step" --dim 2 -o "$t/p.msh" > /dev/null 2> "$t/pe"
+if grep -q '^progress: faces [0-9]*% .*triangles predicted' "$t/pe" && grep -q '^progress: faces done' "$t/pe" \
+   && "$cli" mesh "$models/plate.step" --dim 2 -o "$t/q.msh" 2>&1 | { ! grep -q progress; }; then ok progress-lines
+else bad "progress-lines: $(head -3 "$t/pe")"; fi
+
 # mesh: until the meshers exist it must fail honestly: exit 3, a report with status failed,
 # a failure entry, and no mesh file.
 "$cli" mesh "$models/bracket.step" -o "$t/out.msh" --report "$t/r.json" > "$t/so" 2> "$t/se"; rc=$?

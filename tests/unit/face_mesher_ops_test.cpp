@@ -3,6 +3,7 @@
 // mesh validator. del2d::validate() runs after every operator.
 #include <gtest/gtest.h>
 
+#include <iostream>
 #include <numbers>
 #include <random>
 
@@ -12,6 +13,7 @@
 #include "mesher/surface/face/DomainRemoval.h"
 #include "mesher/surface/face/EdgeRecovery.h"
 #include "mesher/surface/face/FaceMetric.h"
+#include "mesher/surface/face/FrontalPoint.h"
 #include "mesher/surface/face/Refinement.h"
 #include "mesher/surface/face/ValidateFaceMesh.h"
 #include "mesher/surface/face/VisibleWalk.h"
@@ -163,8 +165,7 @@ TEST(FaceOperators, PipelineKeepsTheTriangulationValid) {
   EXPECT_TRI_VALID(tri, del2d::ValidateOptions{});
   const RefineStats st = refineFace(tri, *cs);
   EXPECT_GT(st.inserted, 100u);
-  EXPECT_GT(st.ccs, 0u);
-  EXPECT_GT(st.mle, 0u);
+  EXPECT_GT(st.frontal, st.inserted / 2);  // the frontal phase places most points
   EXPECT_FALSE(st.limitReached);
   EXPECT_GT(st.predictedTriangles, 500.0);
   // Constant metric and empty-circle insertions: constrained Delaunay in that metric.
@@ -196,6 +197,89 @@ TEST(FaceOperators, PipelineKeepsTheTriangulationValid) {
     EXPECT_TRUE(tri.isConstrained(t, i));
     EXPECT_EQ(tri.point(bt.vertexOf[k]), flat.uv[k]);
   }
+}
+
+TEST(FaceOperators, FrontalPointMakesTheUnitTriangle) {
+  Vec2 p(-1, -1);
+  // A tall triangle on a unit front edge: the apex of the unit equilateral triangle.
+  ASSERT_TRUE(frontalPoint(Mat2::Identity(), Vec2(0, 0), Vec2(1, 0), Vec2(0.5, 3), p));
+  EXPECT_NEAR(p.x(), 0.5, 1e-12);
+  EXPECT_NEAR(p.y(), std::sqrt(3.0) / 2, 1e-12);
+  // The same in a metric 10 times finer across the edge: the point is 10 times closer.
+  Mat2 m = Mat2::Identity();
+  m(1, 1) = 10;
+  ASSERT_TRUE(frontalPoint(m, Vec2(0, 0), Vec2(1, 0), Vec2(0.5, 0.3), p));
+  EXPECT_NEAR(p.x(), 0.5, 1e-12);
+  EXPECT_NEAR(p.y(), std::sqrt(3.0) / 20, 1e-12);
+  // The point stays inside K's circumcircle (centre (0.5, 0.11/1.2), through the apex).
+  ASSERT_TRUE(frontalPoint(Mat2::Identity(), Vec2(0, 0), Vec2(1, 0), Vec2(0.5, 0.6), p));
+  const Vec2 centre(0.5, (0.36 - 0.25) / 1.2);
+  EXPECT_LT((p - centre).norm(), 0.6 - centre.y());
+  EXPECT_NEAR(p.x(), 0.5, 1e-12);
+  // A point on the far side of the edge (c below) gives a point below.
+  ASSERT_TRUE(frontalPoint(Mat2::Identity(), Vec2(0, 0), Vec2(1, 0), Vec2(0.5, -3), p));
+  EXPECT_NEAR(p.y(), -std::sqrt(3.0) / 2, 1e-12);
+  // Obtuse at c (circumcentre behind the front edge) and degenerate triangles: refused.
+  const Vec2 before = p;
+  EXPECT_FALSE(frontalPoint(Mat2::Identity(), Vec2(0, 0), Vec2(1, 0), Vec2(0.5, 0.2), p));
+  EXPECT_FALSE(frontalPoint(Mat2::Identity(), Vec2(0, 0), Vec2(1, 0), Vec2(2, 0), p));
+  EXPECT_FALSE(frontalPoint(Mat2::Zero(), Vec2(0, 0), Vec2(1, 0), Vec2(0.5, 3), p));
+  EXPECT_EQ(p, before);
+}
+
+TEST(FaceOperators, FrontalRefinementIsMoreRegular) {
+  // The same uniform square with and without the frontal phase, then improved as the
+  // face mesher does: valid either way, and the frontal mesh has the better mean and
+  // worst shape (the reason it is the default).
+  const double h = 0.02;
+  const auto cs = isotropicSpace(boxOf(0, 0, 1, 1), h);
+  const FaceBoundary b = polygonBoundary({rectangle(0, 0, 1, 1)}, h);
+  const FlatBoundary flat = flattenBoundary(b);
+  auto run = [&](bool frontal, double& mean, double& worst) {
+    BoundaryTriangulation bt = triangulateBoundary(flat, *cs, 1);
+    EXPECT_TRUE(recoverBoundaryEdges(bt.tri, flat, bt.vertexOf, *cs).empty());
+    EXPECT_TRUE(removeOutside(bt.tri, flat, bt.vertexOf).empty());
+    RefineOptions ro;
+    ro.frontal = frontal;
+    const RefineStats st = refineFace(bt.tri, *cs, ro);
+    EXPECT_FALSE(st.limitReached);
+    EXPECT_TRI_VALID(bt.tri, del2d::ValidateOptions{});
+    std::vector<std::uint8_t> fixed(bt.tri.numVertices(), 0);
+    for (const VertexId v : bt.vertexOf) fixed[v.index] = 1;
+    for (const VertexId v : bt.tri.corners()) fixed[v.index] = 1;
+    improveFaceMesh(bt.tri, *cs, fixed);
+    EXPECT_TRI_VALID(bt.tri, del2d::ValidateOptions{});
+    double sum = 0;
+    std::size_t n = 0;
+    worst = 1;
+    for (std::uint32_t k = 0; k < bt.tri.triangleSlots(); ++k) {
+      const TriId t(k);
+      if (!bt.tri.isAlive(t)) continue;
+      // Shape only (the Euclidean mean ratio): scale out the size.
+      const Vec2 &p0 = bt.tri.point(bt.tri.vertex(t, 0)), &p1 = bt.tri.point(bt.tri.vertex(t, 1)),
+                 &p2 = bt.tri.point(bt.tri.vertex(t, 2));
+      const double area = 0.5 * cross2(p1 - p0, p2 - p0);
+      const double l2 = (p1 - p0).squaredNorm() + (p2 - p1).squaredNorm() + (p0 - p2).squaredNorm();
+      const double eta = 4 * std::sqrt(3.0) * area / l2;
+      sum += eta;
+      ++n;
+      worst = std::min(worst, eta);
+    }
+    mean = sum / static_cast<double>(n);
+    return st;
+  };
+  double meanF = 0, worstF = 0, meanM = 0, worstM = 0;
+  const RefineStats sf = run(true, meanF, worstF);
+  const RefineStats sm = run(false, meanM, worstM);
+  EXPECT_GT(sf.frontal, 0u);
+  EXPECT_EQ(sm.frontal, 0u);
+  EXPECT_GT(sm.ccs, 0u);
+  EXPECT_GT(sm.mle, 0u);
+  EXPECT_GT(meanF, meanM);
+  EXPECT_GT(meanF, 0.98);
+  EXPECT_GE(worstF, worstM);
+  std::cout << "frontal: mean " << meanF << " worst " << worstF << "; MLE/CCS: mean " << meanM << " worst " << worstM
+            << "\n";
 }
 
 TEST(FaceOperators, RefinementStopsAtTheInsertionLimit) {

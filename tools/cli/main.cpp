@@ -37,6 +37,9 @@ int main(int argc, char** argv) {
   bool quiet = false;
   app.add_flag("-v,--verbose", verbose, "More messages on stderr");
   app.add_flag("-q,--quiet", quiet, "Only errors on stderr");
+  bool progressLines = false;
+  app.add_flag("--progress", progressLines,
+               "Progress as lines on stderr even when it is not a terminal (for programs running anisomesh)");
 
   cli::InfoArgs info;
   CLI::App* infoCmd = app.add_subcommand("info", "Describe a CAD model: counts, volume, area, solids");
@@ -93,7 +96,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "anisomesh: %s (see anisomesh --help)\n", e.what());
     return 2;
   }
-  setLogSink(std::make_shared<cli::TerminalSink>(quiet ? -1 : verbose));
+  setLogSink(std::make_shared<cli::TerminalSink>(quiet ? -1 : verbose, progressLines));
 
   try {
     if (infoCmd->parsed()) return cli::runInfo(info);

@@ -10,6 +10,7 @@
 #include "mesher/delaunay/InsertPoint.h"
 #include "mesher/delaunay/Workspace2d.h"
 #include "mesher/surface/face/FaceMetric.h"
+#include "mesher/surface/face/FrontalPoint.h"
 #include "mesher/surface/face/InnerAngleSwaps.h"
 #include "mesher/surface/face/VisibleWalk.h"
 
@@ -41,13 +42,25 @@ class Refiner {
  public:
   Refiner(Triangulation2d& tri, const ControlSpace2d& cs, const RefineOptions& opt)
       : tri_(tri), cs_(cs), opt_(opt), vertexMetric_(tri, Mat2::Identity()), triMetric_(tri, Mat2::Identity()),
-        stamp_(tri, 0u) {}
+        stamp_(tri, 0u), quality_(tri, 0.0), queued_(tri, kNotQueued), area_(tri, 0.0), counted_(tri, 0),
+        frontal_(opt.frontal) {}
 
   RefineStats run() {
     initialise();
     if (opt_.onPrediction) opt_.onPrediction(stats_.predictedTriangles);
     std::size_t pops = 0;
-    while (!heap_.empty()) {
+    for (;;) {
+      if (heap_.empty()) {
+        // Frontal phase over: whatever is still bad (regions the front never reached,
+        // triangles whose frontal point was cancelled) gets the mixed MLE/CCS method.
+        if (!frontal_) break;
+        frontal_ = false;
+        for (std::uint32_t s = 0; s < tri_.triangleSlots(); ++s) {
+          const TriId t(s);
+          if (tri_.isAlive(t) && quality_[t] < opt_.qualityThreshold && !isQueued(t)) push(t, quality_[t]);
+        }
+        if (heap_.empty()) break;
+      }
       std::pop_heap(heap_.begin(), heap_.end(), LowerPriority());
       const HeapEntry e = heap_.back();
       heap_.pop_back();
@@ -72,11 +85,16 @@ class Refiner {
     }
     double metricArea = 0;
     heap_.reserve(2 * tri_.numTriangles());
+    for (std::uint32_t k = 0; k < tri_.triangleSlots(); ++k)
+      if (tri_.isAlive(TriId(k))) {
+        evaluate(TriId(k));
+        count(TriId(k));
+      }
     for (std::uint32_t k = 0; k < tri_.triangleSlots(); ++k) {
       const TriId t(k);
       if (!tri_.isAlive(t)) continue;
-      const double q = evaluate(t);
-      if (q < opt_.qualityThreshold) push(t, q);
+      const double q = quality_[t];
+      if (q < opt_.qualityThreshold && (!frontal_ || frontEdge(t) >= 0)) push(t, q);
       const std::uint32_t* tv = tri_.triVertices(t);
       const Vec2 &a = tri_.point(VertexId(tv[0])), &b = tri_.point(VertexId(tv[1])), &c = tri_.point(VertexId(tv[2]));
       double det = 0;  // the largest finite |det M| of the four samples (unusable metrics skipped)
@@ -98,14 +116,34 @@ class Refiner {
     heap_.reserve(std::max(heap_.capacity(), expected / 4));
   }
 
-  /// Eq. 6.1: NT_c · q_t / q(K) for the worst triangle K of the heap (never below NT_c).
+  /// The predicted final count (thesis 6.5). Mixed MLE/CCS phase: eq. 6.1, NT_c · q_t /
+  /// q(K) for the worst triangle K of the heap (never below NT_c). Frontal phase, whose heap
+  /// holds only the front (so its root says little about the rest): the good triangles
+  /// count as they are and the bad ones by eq. 6.2, their metric area over S_M(K_I).
   double predictFinal(double worst) const {
     const double current = static_cast<double>(tri_.numTriangles());
+    if (frontal_) return current - static_cast<double>(badCount_) + badArea_ / kIdealTriangleArea;
     if (!(worst > 0)) return current;
     return std::max(current, current * opt_.qualityThreshold / worst);
   }
 
+  /// Bookkeeping of the bad triangles' metric area (predictFinal): count() after an
+  /// evaluation, uncount() before a triangle is removed or re-evaluated.
+  void count(TriId t) {
+    if (isAccepted(t) || !std::isfinite(area_[t])) return;
+    badArea_ += area_[t];
+    ++badCount_;
+    counted_[t] = 1;
+  }
+  void uncount(TriId t) {
+    if (!counted_[t]) return;
+    badArea_ -= area_[t];
+    --badCount_;
+    counted_[t] = 0;
+  }
+
   void push(TriId t, double q) {
+    queued_[t] = stamp_[t];
     heap_.push_back({q, t.index, stamp_[t]});
     std::push_heap(heap_.begin(), heap_.end(), LowerPriority());
   }
@@ -118,6 +156,8 @@ class Refiner {
     const Mat2 m = metricAt(cs_, (a + b + c) / 3.0);
     triMetric_[t] = m;
     double q = triangleQuality(m, a, b, c);
+    quality_[t] = q;
+    area_[t] = metricArea(m, a, b, c);
     if (q < opt_.qualityThreshold) return q;
     const double maxLen = opt_.maxEdgeMetricLength;
     for (int i = 0; i < 3; ++i) {
@@ -125,13 +165,54 @@ class Refiner {
       const VertexId x(tv[kNext[i]]), y(tv[kPrev[i]]);
       const Vec2 e = tri_.point(y) - tri_.point(x);
       const double len = 0.5 * ((vertexMetric_[x] * e).norm() + (vertexMetric_[y] * e).norm());
-      if (len > maxLen) return 0.95 * opt_.qualityThreshold;
+      if (len > maxLen) return quality_[t] = 0.95 * opt_.qualityThreshold;
     }
     return q;
   }
 
+  bool isQueued(TriId t) const { return queued_[t] == stamp_[t]; }
+  bool isAccepted(TriId t) const { return quality_[t] >= opt_.qualityThreshold; }
+
+  /// The front edge of the bad triangle t (frontal phase): a contour or hull edge, or one
+  /// shared with an accepted triangle; the longest in t's metric when several; -1 if none.
+  int frontEdge(TriId t) const {
+    const std::uint32_t* tv = tri_.triVertices(t);
+    const Mat2& m = triMetric_[t];
+    int best = -1;
+    double bestLen = -1;
+    for (int i = 0; i < 3; ++i) {
+      const TriId n = tri_.neighbour(t, i);
+      if (!tri_.isConstrained(t, i) && n.valid() && !isAccepted(n)) continue;
+      const double len = (m * (tri_.point(VertexId(tv[kPrev[i]])) - tri_.point(VertexId(tv[kNext[i]])))).squaredNorm();
+      if (len > bestLen) {
+        bestLen = len;
+        best = i;
+      }
+    }
+    return best;
+  }
+
+  /// Frontal phase: the frontal point of K on its front edge (FrontalPoint.h), in the
+  /// metric at the edge's midpoint; false when K has no front edge or the point is
+  /// unusable (not found by the walk, refused or cancelled by the rules).
+  bool refineFrontal(TriId k) {
+    const int e = frontEdge(k);
+    if (e < 0) return false;
+    const std::uint32_t* tv = tri_.triVertices(k);
+    const Vec2 a = tri_.point(VertexId(tv[kNext[e]])), b = tri_.point(VertexId(tv[kPrev[e]]));
+    const Vec2 c = tri_.point(VertexId(tv[e]));
+    Vec2 p;
+    if (!frontalPoint(metricAt(cs_, 0.5 * (a + b)), a, b, c, p)) return false;
+    const VisibleLocation loc = locateVisible(tri_, k, p, opt_.maxWalkSteps);
+    if (!loc.found) return false;
+    if (!insertAt(k, p, loc.tri)) return false;
+    ++stats_.frontal;
+    return true;
+  }
+
   /// Chooses, checks and inserts the point for K; false when cancelled.
   bool refine(TriId k, double q) {
+    if (frontal_ && refineFrontal(k)) return true;
     const std::uint32_t* tv = tri_.triVertices(k);
     const Vec2 a = tri_.point(VertexId(tv[0])), b = tri_.point(VertexId(tv[1])), c = tri_.point(VertexId(tv[2]));
     const Mat2 m = triMetric_[k];
@@ -155,6 +236,15 @@ class Refiner {
       ++stats_.cancelBoundaryEdge;
       return false;
     }
+    if (!insertAt(k, p, start)) return false;
+    ++(mle ? stats_.mle : stats_.ccs);
+    return true;
+  }
+
+  /// Plans the insertion of p for K (walk from start), applies the cancellation rules,
+  /// inserts and re-evaluates the changed triangles; false (mesh unchanged) when refused
+  /// or cancelled.
+  bool insertAt(TriId k, const Vec2& p, TriId start) {
     const Mat2 mp = metricAt(cs_, p);
     const InsertPlan plan = opt_.innerAngles ? planInsertion(tri_, p, innerAnglesConflict(), start)
                                              : planInsertion(tri_, p, mp, start);
@@ -163,13 +253,14 @@ class Refiner {
       return false;
     }
     if (!acceptCavity(k, p, mp)) return false;
+    for (const TriId t : tri_.workspace().cavity) uncount(t);
     const InsertResult r = applyInsertion(tri_, plan);
     vertexMetric_[r.vertex] = mp;
     ++stats_.inserted;
-    ++(mle ? stats_.mle : stats_.ccs);
     const std::vector<TriId>& created = tri_.workspace().created;
     if (!opt_.innerAngles) {
-      for (const TriId t : created) reevaluate(t);
+      changed_.assign(created.begin(), created.end());
+      reevaluateAll(changed_);
       return true;
     }
     changed_.assign(created.begin(), created.end());
@@ -183,16 +274,34 @@ class Refiner {
         changed_.erase(std::unique(changed_.begin(), changed_.end()), changed_.end());
       }
     }
-    for (const TriId t : changed_)
-      if (tri_.isAlive(t)) reevaluate(t);
+    reevaluateAll(changed_);
     return true;
   }
 
-  /// A new or changed triangle: invalidates its heap entries, pushes it when bad.
-  void reevaluate(TriId t) {
-    ++stamp_[t];
-    const double q = evaluate(t);
-    if (q < opt_.qualityThreshold) push(t, q);
+  /// New or changed triangles: their heap entries are invalidated and each is evaluated;
+  /// then the bad ones are pushed (in the frontal phase only those on the front), and the
+  /// accepted ones put their bad, unqueued neighbours on the front. Two passes, so every
+  /// changed triangle has its new quality before a neighbour looks at it.
+  void reevaluateAll(const std::vector<TriId>& changed) {
+    for (const TriId t : changed) {
+      if (!tri_.isAlive(t)) continue;
+      uncount(t);
+      ++stamp_[t];
+      evaluate(t);
+      count(t);
+    }
+    for (const TriId t : changed) {
+      if (!tri_.isAlive(t)) continue;
+      if (!isAccepted(t)) {
+        if (!isQueued(t) && (!frontal_ || frontEdge(t) >= 0)) push(t, quality_[t]);
+        continue;
+      }
+      if (!frontal_) continue;
+      for (int i = 0; i < 3; ++i) {
+        const TriId n = tri_.neighbour(t, i);
+        if (n.valid() && !isAccepted(n) && !isQueued(n)) push(n, quality_[n]);
+      }
+    }
   }
 
   /// The middle of the longest edge of K in m; false when that edge is constrained.
@@ -242,6 +351,14 @@ class Refiner {
   VertexAttribute<Mat2> vertexMetric_;
   TriangleAttribute<Mat2> triMetric_;
   TriangleAttribute<std::uint32_t> stamp_;
+  static constexpr std::uint32_t kNotQueued = 0xFFFFFFFFu;
+  TriangleAttribute<double> quality_;          ///< last q(K) (with the long-edge rule)
+  TriangleAttribute<std::uint32_t> queued_;    ///< stamp_ when last pushed
+  TriangleAttribute<double> area_;             ///< metric area at the last evaluation
+  TriangleAttribute<std::uint8_t> counted_;    ///< area_ is in badArea_
+  double badArea_ = 0;
+  std::size_t badCount_ = 0;
+  bool frontal_;                               ///< in the frontal phase
   std::vector<HeapEntry> heap_;
   std::vector<TriId> changed_, swapStart_;    // inner-angles mode scratch
   std::vector<std::uint32_t> swapStack_;

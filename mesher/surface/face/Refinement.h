@@ -60,6 +60,13 @@ struct RefineOptions {
   /// of the empty circumcircle; the metric-jump rule then does not apply.
   bool innerAngles = false;
   std::size_t maxSwapsPerPoint = 50;  ///< inner-angles swaps per inserted node (Table 4.1)
+  /// Frontal phase first (FrontalPoint.h, Rebay's frontal Delaunay): only bad triangles on
+  /// the front — next to a contour or an accepted triangle — are refined, each by the
+  /// frontal point on its front edge (the MLE/CCS point when that is cancelled); when the
+  /// front is exhausted the remaining bad triangles get the mixed MLE/CCS method. Far more
+  /// regular meshes than MLE/CCS alone (measured: referee mean ratio 0.97 → 0.99 on a
+  /// uniform plane). false: the thesis' MLE/CCS method only.
+  bool frontal = true;
   /// Receives the predicted final triangle count (thesis 6.5): eq. 6.2 once the initial
   /// triangles are evaluated, then eq. 6.1, NT_c · q_t / q(K_root), every
   /// predictionInterval heap pops while refining. May be empty.
@@ -70,6 +77,7 @@ struct RefineOptions {
 struct RefineStats {
   std::size_t inserted = 0, cancelled = 0;
   std::size_t mle = 0, ccs = 0, ccsFallbacks = 0;  ///< insertions by method; CCS → MLE fallbacks
+  std::size_t frontal = 0;                         ///< insertions at a frontal point
   std::size_t swaps = 0;                           ///< inner-angles mode
   /// Cancellations by rule.
   std::size_t cancelBoundaryEdge = 0, cancelRefused = 0, cancelMetricJump = 0, cancelNearVertex = 0,
