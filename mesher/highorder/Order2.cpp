@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 #include <unordered_map>
+#include <utility>
 
 #include "mesher/core/Error.h"
 #include "mesher/highorder/MidEdgeGeometry.h"
@@ -63,8 +64,10 @@ double jacobianRatio(const QuadraticElement& e, const std::vector<Vec3>& x) {
                             {x[e.mid[0]], x[e.mid[1]], x[e.mid[2]], x[e.mid[3]]});
 }
 
-/// Puts back at their chord midpoints the curved mid nodes of every element whose Jacobian
-/// ratio is below kMinJacobianRatio, until none is. Returns the number of such elements.
+/// Puts back at their chord midpoints curved mid nodes of every element whose Jacobian ratio
+/// is below kMinJacobianRatio, until none is: the most displaced first, one at a time, until
+/// the element passes (so that as many nodes as possible stay on the geometry). Returns the
+/// number of elements that needed it.
 long long keepValid(std::vector<Vec3>& nodes, const MidNodes& mids, const std::vector<QuadraticElement>& elements) {
   std::vector<char> curved(nodes.size(), 0);
   for (std::size_t i = 0; i < nodes.size(); ++i)
@@ -78,10 +81,16 @@ long long keepValid(std::vector<Vec3>& nodes, const MidNodes& mids, const std::v
       bool anyCurved = false;
       for (int i = 0; i < e.mids(); ++i) anyCurved = anyCurved || curved[e.mid[i]];
       if (!anyCurved || jacobianRatio(e, nodes) >= kMinJacobianRatio) continue;
-      for (int i = 0; i < e.mids(); ++i) {
-        if (!curved[e.mid[i]]) continue;
-        nodes[e.mid[i]] = mids.chordMidpoint(nodes, e.mid[i]);
-        curved[e.mid[i]] = 0;
+      std::array<std::pair<double, int>, 6> order;
+      int n = 0;
+      for (int i = 0; i < e.mids(); ++i)
+        if (curved[e.mid[i]])
+          order[n++] = {-(nodes[e.mid[i]] - mids.chordMidpoint(nodes, e.mid[i])).squaredNorm(), e.mid[i]};
+      std::sort(order.begin(), order.begin() + n);  // most displaced first; ties by node: deterministic
+      for (int i = 0; i < n; ++i) {
+        nodes[order[i].second] = mids.chordMidpoint(nodes, order[i].second);
+        curved[order[i].second] = 0;
+        if (jacobianRatio(e, nodes) >= kMinJacobianRatio) break;
       }
       if (!straightened[k]) ++count;
       straightened[k] = 1;

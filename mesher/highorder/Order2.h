@@ -20,9 +20,10 @@
 // Validity (QuadraticJacobian.h): the Jacobian determinant of every element at its corners
 // and its centroid must be at least kMinJacobianRatio times the straight element's — for
 // triangles and quads on surfaces the 3D Jacobian measured along the straight element's
-// normal. An element failing it gets all its curved mid nodes put back at their chord
-// midpoints; since mid nodes are shared this is repeated until no element fails (it ends:
-// nodes only ever go from curved to straight, and a straight valid linear element passes).
+// normal. An element failing it gets its curved mid nodes put back at their chord
+// midpoints, the most displaced first, until it passes; since mid nodes are shared this is
+// repeated until no element fails (it ends: nodes only ever go from curved to straight,
+// and a straight valid linear element passes). Such elements are counted as straightened.
 // A straightened mid node keeps the NodeOn of the entity its edge lies on (so it stays in
 // that face's or edge's groups), though it lies on the chord.
 #include "mesher/model/Model.h"
