@@ -22,7 +22,7 @@ VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, cons
       for (std::uint32_t v = 0; v < s.mesh.numVertices(); ++v)
         if (mover.smooth(del3d::VertexId(v), o.lowGradation, kSmoothingQualityFloor)) ++st.moved;
     improve3d::QualityFlips flips(s, vm, o.flipGain);
-    flips.run();
+    flips.run(o.flipCandidate);
     st.flips23 += flips.counts().f23;
     st.flips32 += flips.counts().f32;
     st.flips44 += flips.counts().f44;

@@ -33,6 +33,10 @@ struct VolumeImproveOptions {
   int smoothingSweeps = 1;       ///< Laplace sweeps per pass
   double lowGradation = 0.05;    ///< δ_M threshold of the mixed (plain / metric) smoothing
   double flipGain = 1e-3;        ///< required increase of the worst η_M for a flip
+  /// Tets visited by the flip pass: η_M below this (> 1: all tets, as the thesis).
+  /// Measured (cube, h = 0.05): all tets 0.859 mean ratio in 0.72 s; 0.7: 0.864 in 0.32 s;
+  /// 0.5: 0.855 in 0.26 s.
+  double flipCandidate = 0.7;
   double sliverAngleDeg = 10.0;  ///< sliver removal target (smallest dihedral angle)
   int sliverRounds = 4;
   bool sliverInsertion = true;   ///< allow step (3)

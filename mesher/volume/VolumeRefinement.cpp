@@ -7,6 +7,7 @@
 
 #include "mesher/delaunay3d/Inserter.h"
 #include "mesher/delaunay3d/Locate.h"
+#include "mesher/delaunay3d/SpatialSort.h"
 #include "mesher/volume/refine/BoundaryEdge.h"
 #include "mesher/volume/refine/RefineHeap.h"
 #include "mesher/volume/refine/TetMetricGeometry.h"
@@ -24,6 +25,15 @@ constexpr int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 constexpr double kEdgePrefilter = 1.3;
 /// Volume of the unit regular tet, V_M(K_I) of eq. 6.2.
 constexpr double kIdealVolume = 0.11785113019775793;  // 1 / (6√2)
+
+/// Relative off-isotropy below which M(P) is taken as s·I for the in-sphere test.
+constexpr double kIsotropicTolerance = 1e-12;
+
+bool isIsotropic(const Metric3d& m) {
+  const Mat3& a = m.matrix();
+  const double s = a.trace() / 3;
+  return (a - s * Mat3::Identity()).norm() <= kIsotropicTolerance * s;
+}
 
 struct TetPoints {
   std::array<Vec3, 4> p;
@@ -47,6 +57,7 @@ class Refiner {
   double evaluate(TetId t);
   void enqueue(TetId t);
   bool refine(TetId k, double q);
+  void process(const refine3d::RefineHeap::Entry& e);
   bool longestInnerEdgeMidpoint(TetId k, const Metric3d& m, const TetPoints& tp, Vec3& out) const;
   enum class Outcome { Inserted, Outside, Close, Metric, Refused };
   Outcome tryInsert(const Vec3& p, TetId k, bool mle);
@@ -61,6 +72,7 @@ class Refiner {
   std::vector<std::uint8_t> postponed_;
   std::uint32_t rng_ = 0x9E3779B9u;
   VolumeRefineStats st_;
+  std::size_t sinceProgress_ = 0;
 };
 
 double Refiner::evaluate(TetId t) {
@@ -128,7 +140,8 @@ Refiner::Outcome Refiner::tryInsert(const Vec3& p, TetId k, bool mle) {
   if (mle && nearHull(p, mp, loc.tet)) return Outcome::Close;
   del3d::InsertOptions io;
   io.start = loc.tet;
-  io.transform = &mp.matrix();
+  // An isotropic M(P) = I/h gives the same in-sphere signs as the identity, exactly.
+  io.transform = isIsotropic(mp) ? nullptr : &mp.matrix();
   io.mustRemove = k;
   const del3d::InsertResult r = inserter_.insert(p, io);
   switch (r.status) {
@@ -165,36 +178,56 @@ bool Refiner::refine(TetId k, double q) {
   return false;
 }
 
+void Refiner::process(const refine3d::RefineHeap::Entry& e) {
+  const TetId k(e.tet);
+  if (refine(k, e.q)) {
+    if (o_.progress && ++sinceProgress_ >= o_.progressInterval) {
+      sinceProgress_ = 0;
+      // q(K_0) of eq. 6.1: the tet just refined, the front of the refinement (the heap's top
+      // may be a tet at the boundary that cannot be refined, with q near 0).
+      o_.progress({mesh_.numTets(), e.q, predictTetCount(mesh_.numTets(), e.q, o_.qualityThreshold)});
+    }
+    return;
+  }
+  // 5.5.2: K cannot be refined now; retry it later with a raised q.
+  if (postponed_[k.index] < o_.maxPostpones) {
+    ++postponed_[k.index];
+    const double raised = std::min<double>(e.q * o_.postponeFactor + 1e-3, std::nextafter(o_.qualityThreshold, 0.0));
+    heap_.push(k, raised);
+  } else {
+    ++st_.abandoned;
+  }
+}
+
 VolumeRefineStats Refiner::run() {
   st_.initialTets = mesh_.numTets();
   st_.predictedInitial = predictTetCount(s_, cs_);
   s_.node.resize(mesh_.numVertices(), -1);
   for (std::uint32_t k = 0; k < mesh_.tetSlots(); ++k)
     if (mesh_.isAlive(TetId(k))) enqueue(TetId(k));
+  std::vector<refine3d::RefineHeap::Entry> batch;
+  std::vector<Vec3> centres;
   refine3d::RefineHeap::Entry e;
-  std::size_t sinceProgress = 0;
-  while (heap_.pop(mesh_, e)) {
-    if (mesh_.numVertices() >= o_.maxVertices) {
-      st_.budgetExhausted = true;
-      break;
+  for (;;) {
+    // The worst tets of the heap, refined in the Hilbert order of their centroids.
+    const std::size_t want = std::clamp<std::size_t>(heap_.size() / o_.batchDivisor, 1, o_.maxBatch);
+    batch.clear();
+    centres.clear();
+    while (batch.size() < want && heap_.pop(mesh_, e)) {
+      batch.push_back(e);
+      centres.push_back(pointsOf(mesh_, TetId(e.tet)).centroid());
     }
-    const TetId k(e.tet);
-    if (refine(k, e.q)) {
-      if (o_.progress && ++sinceProgress >= o_.progressInterval) {
-        sinceProgress = 0;
-        const double worst = std::min<double>(e.q, heap_.topQuality());
-        o_.progress({mesh_.numTets(), worst, predictTetCount(mesh_.numTets(), worst, o_.qualityThreshold)});
+    if (batch.empty()) break;
+    const std::vector<std::uint32_t> order =
+        batch.size() > 1 ? del3d::hilbertOrder(centres) : std::vector<std::uint32_t>{0};
+    for (const std::uint32_t i : order) {
+      if (mesh_.numVertices() >= o_.maxVertices) {
+        st_.budgetExhausted = true;
+        break;
       }
-      continue;
+      if (heap_.current(mesh_, batch[i])) process(batch[i]);
     }
-    // 5.5.2: K cannot be refined now; retry it later with a raised q.
-    if (postponed_[k.index] < o_.maxPostpones) {
-      ++postponed_[k.index];
-      const double raised = std::min<double>(e.q * o_.postponeFactor + 1e-3, std::nextafter(o_.qualityThreshold, 0.0));
-      heap_.push(k, raised);
-    } else {
-      ++st_.abandoned;
-    }
+    if (st_.budgetExhausted) break;
   }
   st_.finalTets = mesh_.numTets();
   return st_;

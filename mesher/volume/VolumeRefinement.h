@@ -31,6 +31,12 @@
 // and it is retried, at most maxPostpones times, after other insertions.
 // New vertices are free (node = −1, SolidTetMesh::addFreeVertex semantics); fixed vertices
 // and constrained faces are untouched, so validateSolidTetMesh holds afterwards.
+// Order: the heap is consumed in batches — the worst heap.size() / batchDivisor entries
+// (at most maxBatch) are refined in the Hilbert order of their centroids, entries made
+// stale by earlier insertions of the batch skipped. Worst first holds between batches;
+// within one, spatial order keeps the walks short and the memory accesses local (a strict
+// heap order jumps across the mesh at every insertion: measured 2.3 times slower per tet
+// at 1.4 M tets than at 90 k). batchDivisor = heap size gives the thesis' strict order.
 // Deterministic: the heap orders by (q, tet slot), no randomness beyond the Inserter's
 // seeded walk.
 // Budget: refinement stops (stats.budgetExhausted) once the solid has maxVertices
@@ -46,7 +52,7 @@ namespace aniso {
 
 struct VolumeRefineProgress {
   std::size_t tets = 0;       ///< current number of tets (NT_c)
-  double worstQuality = 0;    ///< q(K_0) of the heap's top
+  double worstQuality = 0;    ///< q(K_0): of the tet just refined (the refinement front)
   double predictedTets = 0;   ///< eq. 6.1 (NT_c q_t / q(K_0))
 };
 
@@ -62,6 +68,8 @@ struct VolumeRefineOptions {
   double postponeFactor = 1.5;      ///< q raised by this factor when K cannot be refined now
   int maxPostpones = 3;
   std::size_t maxVertices = 100'000'000;  ///< vertex budget of the solid
+  std::size_t batchDivisor = 4;     ///< batch = heap size / batchDivisor (see above)
+  std::size_t maxBatch = 1 << 16;
   /// Called about every progressInterval insertions (may be empty).
   std::function<void(const VolumeRefineProgress&)> progress;
   std::size_t progressInterval = 10000;

@@ -89,6 +89,28 @@ TEST(VolumeImprove, SliverRemovalReachesTheAngle) {
   EXPECT_GT(q.minDihedral, 2.0);
 }
 
+TEST(VolumeImprove, AnisotropicFromANonMetricDelaunayBoundary) {
+  // The cube stretched 5 times along (1, 1, 0), its boundary triangulated Delaunay in space
+  // (not in the metric: as after boundary recovery, the mesh is not metric-Delaunay).
+  const Metric3d stretch = Metric3d::fromDirections(Vec3(1, 1, 0), Vec3(-1, 1, 0), Vec3::UnitZ(), 5, 1, 1);
+  const Mat3 map = stretch.inverseMatrix();
+  std::set<Triple> boundary;
+  SolidTetMesh s = cubeSolid(12, boundary, 11, map, false);
+  const Metric3d m = Metric3d::fromDirections(Vec3(1, 1, 0), Vec3(-1, 1, 0), Vec3::UnitZ(), 5 / 12.0, 1 / 12.0, 1 / 12.0);
+  Box3 box;
+  for (int c = 0; c < 8; ++c) box.add(map * Vec3(c & 1, (c >> 1) & 1, (c >> 2) & 1));
+  const CSAnalytic3d cs(box, [m](const Vec3&) { return m; });
+  refineVolume(s, cs);
+  const TetQualitySummary before = measure(s, cs);
+  improveVolume(s, cs);
+  ASSERT_TRUE(checkSolid(s, boundary).empty()) << joined(checkSolid(s, boundary));
+  EXPECT_NEAR(meshVolume(s.mesh), map.determinant(), 1e-12);
+  const TetQualitySummary after = measure(s, cs);
+  EXPECT_GT(after.etaM.mean(), before.etaM.mean() + 0.02);
+  EXPECT_GT(after.etaM.mean(), 0.75);
+  EXPECT_NEAR(after.muM.mean(), 1.0, 0.1);
+}
+
 TEST(VolumeImprove, Deterministic) {
   std::set<Triple> boundary;
   const CSAnalytic3d cs(unitBox(), [](const Vec3& x) { return Metric3d::isotropic(0.07 + 0.1 * x.x()); });

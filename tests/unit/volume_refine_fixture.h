@@ -55,15 +55,20 @@ inline std::vector<Vec3> cubeSurfacePoints(int n, std::uint64_t seed = 7) {
   return out;
 }
 
-/// The solid: every hull face constrained; `boundary` gets the hull faces as sorted point
-/// index triples.
-inline SolidTetMesh cubeSolid(int n, std::set<Triple>& boundary, std::uint64_t seed = 7) {
-  const std::vector<Vec3> pts = cubeSurfacePoints(n, seed);
+/// The solid (the cube mapped by the linear map `map`, triangulated Delaunay for the cube
+/// or, with !delaunayInMap, for the mapped points): every hull face constrained;
+/// `boundary` gets the hull faces as sorted point index triples.
+inline SolidTetMesh cubeSolid(int n, std::set<Triple>& boundary, std::uint64_t seed = 7,
+                              const Mat3& map = Mat3::Identity(), bool delaunayInMap = true) {
+  std::vector<Vec3> pts = cubeSurfacePoints(n, seed);
+  for (Vec3& p : pts) p = map * p;
   SolidTetMesh s;
   s.solid = 0;
   del3d::DelaunayOptions opt;
   opt.removeBox = true;
   opt.boxMargin = 10.0;
+  // Delaunay where the points are the cube's (sec. 5.3: in metric space), or in space
+  if (delaunayInMap) opt.transform = map.inverse();
   const del3d::DelaunayResult r = del3d::buildDelaunay(s.mesh, pts, opt);
   s.node.assign(s.mesh.numVertices(), -1);
   for (std::size_t i = 0; i < pts.size(); ++i)

@@ -13,12 +13,17 @@ namespace aniso::improve3d {
 namespace {
 constexpr int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 
-/// Worst η_M over tets given as ids or as vertex quadruples.
+/// Worst score (η_M³) over tets given as ids or as vertex quadruples.
 template <class Range>
-double worstEta(const VertexMetrics& vm, const Range& tets) {
+double worstScore(const VertexMetrics& vm, const Range& tets) {
   double w = 1e300;
-  for (const auto& t : tets) w = std::min(w, vm.eta(t));
+  for (const auto& t : tets) w = std::min(w, vm.score(t));
   return w;
+}
+
+/// The flip condition: worst η_M after > worst η_M before + gain, on scores.
+bool beats(double after, double before, double gain) {
+  return std::cbrt(after) > std::cbrt(before) + gain;
 }
 }  // namespace
 
@@ -26,7 +31,7 @@ bool QualityFlips::tryFace(del3d::TetId t, int i, std::vector<del3d::TetId>& cre
   if (s_.mesh.isConstrained(t, i) || !s_.mesh.neighbour(t, i).valid()) return false;
   del3d::Flip23Plan plan;
   if (!del3d::canFlip23(s_.mesh, t, i, &plan)) return false;
-  if (!(worstEta(vm_, plan.newTets) > worstEta(vm_, plan.oldTets) + gain_)) return false;
+  if (!(beats(worstScore(vm_, plan.newTets), worstScore(vm_, plan.oldTets), gain_))) return false;
   const auto nt = del3d::flip23(s_.mesh, plan);
   created.insert(created.end(), nt.begin(), nt.end());
   ++counts_.f23;
@@ -40,22 +45,22 @@ bool QualityFlips::tryEdge(del3d::TetId t, int i, int j, std::vector<del3d::TetI
   if (n == 3) {
     del3d::Flip32Plan plan;
     if (!del3d::canFlip32(s_.mesh, t, i, j, &plan)) return false;
-    if (!(worstEta(vm_, plan.newTets) > worstEta(vm_, plan.oldTets) + gain_)) return false;
+    if (!(beats(worstScore(vm_, plan.newTets), worstScore(vm_, plan.oldTets), gain_))) return false;
     const auto nt = del3d::flip32(s_.mesh, plan);
     created.insert(created.end(), nt.begin(), nt.end());
     ++counts_.f32;
     return true;
   }
   if (n != 4) return false;
-  const double before = worstEta(vm_, ring);
+  const double before = worstScore(vm_, ring);
   del3d::Flip44Plan best;
-  double bestAfter = before + gain_;
+  double bestAfter = before;
   bool found = false;
   for (int diag = 0; diag < 2; ++diag) {
     del3d::Flip44Plan plan;
     if (!del3d::canFlip44(s_.mesh, t, i, j, diag, &plan)) continue;
-    const double after = worstEta(vm_, plan.newTets);
-    if (after > bestAfter) bestAfter = after, best = plan, found = true;
+    const double after = worstScore(vm_, plan.newTets);
+    if (after > bestAfter && beats(after, before, gain_)) bestAfter = after, best = plan, found = true;
   }
   if (!found) return false;
   const auto nt = del3d::flip44(s_.mesh, best);
@@ -73,11 +78,11 @@ bool QualityFlips::visit(del3d::TetId t, std::vector<del3d::TetId>& created) {
   return false;
 }
 
-void QualityFlips::run() {
+void QualityFlips::run(double candidateBelow) {
   std::vector<del3d::TetId> work;
-  work.reserve(s_.mesh.numTets());
+  const double key = candidateBelow * candidateBelow * candidateBelow;
   for (std::uint32_t k = 0; k < s_.mesh.tetSlots(); ++k)
-    if (s_.mesh.isAlive(del3d::TetId(k))) work.push_back(del3d::TetId(k));
+    if (s_.mesh.isAlive(del3d::TetId(k)) && vm_.score(del3d::TetId(k)) < key) work.push_back(del3d::TetId(k));
   const std::size_t cap = kMaxFlipsPerTet * work.size() + counts_.total();
   for (std::size_t k = 0; k < work.size() && counts_.total() < cap; ++k) visit(work[k], work);
 }

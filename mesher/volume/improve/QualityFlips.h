@@ -5,7 +5,8 @@
 // removed); a flip is applied when the worst η_M of the new tets exceeds the worst η_M of
 // the old ones by more than `gain` (η_M in the mean of the vertices' tensors,
 // VertexMetrics). visit() tries every flip of one tet and applies the first beneficial one;
-// run() visits all tets and then the new ones until nothing changes (or a cap of
+// run() visits the tets (all, or those below a quality: a flip only helps when one of the
+// tets it replaces is poor) and then the new ones until nothing changes (or a cap of
 // kMaxFlipsPerTet flips per initial tet is reached).
 #include <cstddef>
 #include <vector>
@@ -30,8 +31,9 @@ class QualityFlips {
   /// Tries the flips of the live tet t; on success appends the new tets to `created` and
   /// returns true (t is then dead).
   bool visit(del3d::TetId t, std::vector<del3d::TetId>& created);
-  /// All live tets, then the created ones, until stable.
-  void run();
+  /// The live tets with η_M < candidateBelow (> 1: all), then the created ones, until
+  /// stable.
+  void run(double candidateBelow);
   const FlipCounts& counts() const { return counts_; }
 
  private:

@@ -9,7 +9,7 @@
 namespace aniso::improve3d {
 
 /// Fills `star` (cleared first) with the tets around v, starting at vertexTet(v); empty
-/// when v is in no tet. Linear membership test: stars are small (tens of tets).
+/// when v is in no tet. Visited tets are kept in a small hash table (stars are small).
 void vertexStar(const del3d::TetMesh& mesh, del3d::VertexId v, std::vector<del3d::TetId>& star);
 
 }  // namespace aniso::improve3d

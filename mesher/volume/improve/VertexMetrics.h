@@ -3,8 +3,11 @@
 // vertex; the metric of a tetrahedron is the mean of its four vertices' transformation
 // tensors (a mean of SPD matrices is SPD; for a constant field it is that field). η_M of
 // a tet (MeanRatio.h) is measured in that mean, so comparing configurations of the same
-// vertices (flips, relocations) costs no control-space call.
+// vertices (flips, relocations) costs no control-space call. When the four tensors are
+// isotropic (s·I, up to kIsotropicTolerance) the mean is too and η_M = η: no transform.
+// score() is the signed η_M³: the same order as η_M without the cube root (for minima).
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -12,6 +15,9 @@
 #include "mesher/delaunay3d/TetMesh.h"
 
 namespace aniso::improve3d {
+
+/// Relative off-isotropy (|M − s·I| / s) below which a vertex tensor counts as isotropic.
+inline constexpr double kIsotropicTolerance = 1e-12;
 
 class VertexMetrics {
  public:
@@ -23,13 +29,15 @@ class VertexMetrics {
   void refresh(del3d::VertexId v);
 
   Mat3 tetMetric(const std::uint32_t* v) const { return 0.25 * (m_[v[0]] + m_[v[1]] + m_[v[2]] + m_[v[3]]); }
-  /// η_M of the tet with vertex ids v (signed).
-  double eta(const std::uint32_t* v) const;
-  double eta(const std::array<del3d::VertexId, 4>& v) const {
+  /// Signed η_M³ of the tet with vertex ids v (monotone in η_M).
+  double score(const std::uint32_t* v) const;
+  double score(const std::array<del3d::VertexId, 4>& v) const {
     const std::uint32_t ids[4] = {v[0].index, v[1].index, v[2].index, v[3].index};
-    return eta(ids);
+    return score(ids);
   }
-  double eta(del3d::TetId t) const { return eta(mesh_.tetVertices(t)); }
+  double score(del3d::TetId t) const { return score(mesh_.tetVertices(t)); }
+  /// η_M of the tet with vertex ids v (signed).
+  double eta(const std::uint32_t* v) const { return std::cbrt(score(v)); }
   /// η_M of the tet with vertex ids v where vertex `moved` is placed at p.
   double etaWith(const std::uint32_t* v, std::uint32_t moved, const Vec3& p) const;
   /// Smallest dihedral angle (degrees) of the tet mapped by its metric.
@@ -38,7 +46,11 @@ class VertexMetrics {
  private:
   const del3d::TetMesh& mesh_;
   const ControlSpace3d& cs_;
+  bool isotropic(const std::uint32_t* v) const { return iso_[v[0]] && iso_[v[1]] && iso_[v[2]] && iso_[v[3]]; }
+  void setMetric(std::size_t v, const Mat3& m);
+
   std::vector<Mat3> m_;
+  std::vector<std::uint8_t> iso_;
 };
 
 }  // namespace aniso::improve3d

@@ -15,13 +15,17 @@ constexpr double kPerturbRadii[2] = {0.15, 0.05};
 void VertexMover::loadStar(del3d::VertexId v) {
   vertexStar(s_.mesh, v, star_);
   nbrs_.clear();
+  if (seen_.size() < s_.mesh.numVertices()) seen_.resize(s_.mesh.numVertices(), 0);
+  if (++stamp_ == 0) {
+    std::fill(seen_.begin(), seen_.end(), 0u);
+    stamp_ = 1;
+  }
+  seen_[v.index] = stamp_;
   for (const del3d::TetId t : star_)
     for (int i = 0; i < 4; ++i) {
       const std::uint32_t w = s_.mesh.tetVertices(t)[i];
-      if (w != v.index) nbrs_.push_back(w);
+      if (seen_[w] != stamp_) seen_[w] = stamp_, nbrs_.push_back(w);
     }
-  std::sort(nbrs_.begin(), nbrs_.end());
-  nbrs_.erase(std::unique(nbrs_.begin(), nbrs_.end()), nbrs_.end());
 }
 
 bool VertexMover::legal(del3d::VertexId v, const Vec3& p) const {

@@ -30,13 +30,15 @@ class RefineHeap {
     while (!heap_.empty()) {
       out = heap_.top();
       heap_.pop();
-      const del3d::TetId t(out.tet);
-      if (mesh.isAlive(t) && stampOf(t) == out.stamp) return true;
+      if (current(mesh, out)) return true;
     }
     return false;
   }
-  /// q of the worst entry, stale or not (for progress); 1 when empty.
-  double topQuality() const { return heap_.empty() ? 1.0 : heap_.top().q; }
+  /// Whether a popped entry still describes its slot's tet.
+  bool current(const del3d::TetMesh& mesh, const Entry& e) const {
+    const del3d::TetId t(e.tet);
+    return mesh.isAlive(t) && stampOf(t) == e.stamp;
+  }
   std::size_t size() const { return heap_.size(); }
   std::size_t memoryBytes() const { return heap_.size() * sizeof(Entry) + stamp_.capacity() * sizeof(std::uint32_t); }
 
