@@ -1,0 +1,141 @@
+#include "mesher/volume/BoundaryRecovery.h"
+
+#include <unordered_set>
+
+#include "mesher/volume/CavityRecovery.h"
+#include "mesher/volume/MeshQueries.h"
+
+namespace aniso {
+
+using del3d::TetId;
+using del3d::TetMesh;
+using del3d::VertexId;
+
+void RecoveryStats::merge(const RecoveryStats& o) {
+  edges += o.edges;
+  faces += o.faces;
+  missingEdges += o.missingEdges;
+  missingFaces += o.missingFaces;
+  for (int p = 0; p < kPhases; ++p) {
+    edgesRecovered[p] += o.edgesRecovered[p];
+    facesRecovered[p] += o.facesRecovered[p];
+  }
+  steinerPoints += o.steinerPoints;
+  flips.flips23 += o.flips.flips23;
+  flips.removals += o.flips.removals;
+  flips.tried += o.flips.tried;
+}
+
+namespace {
+
+std::uint64_t edgeKey(VertexId a, VertexId b) {
+  const std::uint64_t p = std::min(a.index, b.index), q = std::max(a.index, b.index);
+  return (p << 32) | q;
+}
+
+class Recovery {
+ public:
+  Recovery(BoundaryTriangulation& bt, const RecoveryOptions& o) : bt_(bt), mesh_(bt.tets.mesh), opt_(o) {
+    for (const auto& e : bt_.boundary.edges) boundaryEdges_.insert(edgeKey(e[0], e[1]));
+    guard_ = [this](VertexId a, VertexId b) { return boundaryEdges_.count(edgeKey(a, b)) > 0; };
+  }
+
+  RecoveryResult run() {
+    RecoveryResult r;
+    RecoveryStats& s = r.stats;
+    s.edges = static_cast<long long>(bt_.boundary.edges.size());
+    s.faces = static_cast<long long>(bt_.boundary.triangles.size());
+    collectMissing();
+    s.missingEdges = static_cast<long long>(missingEdges_.size());
+    s.missingFaces = static_cast<long long>(missingFaces_.size());
+    for (int phase = 0; phase < RecoveryStats::kPhases; ++phase) {
+      if (phase == 1 && !opt_.interiorPoints) break;
+      const std::size_t e0 = missingEdges_.size(), f0 = missingFaces_.size();
+      for (int round = 0; round < opt_.maxRounds && !(missingEdges_.empty() && missingFaces_.empty()); ++round) {
+        const std::size_t before = missingEdges_.size() + missingFaces_.size();
+        if (phase == 1) cavityRound(s);
+        pipeRound(s);
+        collectMissing();
+        if (missingEdges_.size() + missingFaces_.size() >= before) break;
+      }
+      s.edgesRecovered[phase] = static_cast<long long>(e0) - static_cast<long long>(missingEdges_.size());
+      s.facesRecovered[phase] = static_cast<long long>(f0) - static_cast<long long>(missingFaces_.size());
+    }
+    for (const int e : missingEdges_) {
+      const auto& ed = bt_.boundary.edges[e];
+      r.left.push_back({bt_.boundary.triangleFace[bt_.boundary.edgeTriangle[e]],
+                        "boundary edge between surface nodes " + std::to_string(bt_.tets.node[ed[0].index]) + " and " +
+                            std::to_string(bt_.tets.node[ed[1].index]) + " not recovered"});
+    }
+    for (const int f : missingFaces_) {
+      const auto& t = bt_.boundary.triangles[f];
+      r.left.push_back({bt_.boundary.triangleFace[f], "boundary triangle (surface nodes " +
+                                                          std::to_string(bt_.tets.node[t[0].index]) + ", " +
+                                                          std::to_string(bt_.tets.node[t[1].index]) + ", " +
+                                                          std::to_string(bt_.tets.node[t[2].index]) + ") not recovered"});
+    }
+    return r;
+  }
+
+ private:
+  /// Recomputes the missing lists and constrains every present boundary face.
+  void collectMissing() {
+    missingEdges_.clear();
+    missingFaces_.clear();
+    const SolidBoundary& b = bt_.boundary;
+    for (std::size_t e = 0; e < b.edges.size(); ++e)
+      if (!volume::findEdge(mesh_, b.edges[e][0], b.edges[e][1], star_).valid()) missingEdges_.push_back(static_cast<int>(e));
+    for (std::size_t f = 0; f < b.triangles.size(); ++f) {
+      const auto& t = b.triangles[f];
+      const volume::FaceHandle h = volume::findFace(mesh_, t[0], t[1], t[2], star_);
+      if (!h.valid()) {
+        missingFaces_.push_back(static_cast<int>(f));
+        continue;
+      }
+      if (!mesh_.isConstrained(h.tet, h.face)) mesh_.setConstrained(h.tet, h.face, true);
+    }
+  }
+
+  bool edgesPresent(const std::array<VertexId, 3>& t) {
+    for (int k = 0; k < 3; ++k)
+      if (!volume::findEdge(mesh_, t[k], t[(k + 1) % 3], star_).valid()) return false;
+    return true;
+  }
+
+  void pipeRound(RecoveryStats& s) {
+    for (const int e : missingEdges_) {
+      const auto& ed = bt_.boundary.edges[e];
+      volume::reduceEdgePipe(mesh_, ed[0], ed[1], guard_, opt_.maxChangesPerEntity, s.flips);
+    }
+    for (const int f : missingFaces_) {
+      const auto& t = bt_.boundary.triangles[f];
+      if (!edgesPresent(t)) continue;
+      if (volume::reduceFacePipe(mesh_, t[0], t[1], t[2], guard_, opt_.maxChangesPerEntity, s.flips)) {
+        const volume::FaceHandle h = volume::findFace(mesh_, t[0], t[1], t[2], star_);
+        if (h.valid()) mesh_.setConstrained(h.tet, h.face, true);
+      }
+    }
+  }
+
+  void cavityRound(RecoveryStats& s) {
+    volume::CavityRecovery cavity(bt_);
+    for (const int f : missingFaces_) s.steinerPoints += cavity.recoverTriangle(f);
+    for (const int e : missingEdges_) s.steinerPoints += cavity.recoverEdge(e);
+  }
+
+  BoundaryTriangulation& bt_;
+  TetMesh& mesh_;
+  const RecoveryOptions& opt_;
+  std::unordered_set<std::uint64_t> boundaryEdges_;
+  volume::EdgeGuard guard_;
+  std::vector<int> missingEdges_, missingFaces_;
+  std::vector<TetId> star_;
+};
+
+}  // namespace
+
+RecoveryResult recoverBoundary(BoundaryTriangulation& bt, const RecoveryOptions& options) {
+  return Recovery(bt, options).run();
+}
+
+}  // namespace aniso

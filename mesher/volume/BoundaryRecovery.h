@@ -1,0 +1,54 @@
+#pragma once
+// Constraining of the boundary triangulation (thesis sec. 5.4, table 5.3): every edge and
+// face of the solid's boundary mesh made present in the tetrahedralization, each phase
+// recovering edges first, then faces, and repeated while it makes progress:
+//   phase 1  PIPE-REDUCTION (PipeReduction.h): flips only;
+//   phase 2  INTERIOR-CAVITY (CavityRecovery.h): the tets crossing a missing patch are
+//            retriangulated as stars around points strictly INSIDE the solid (or around
+//            existing vertices), then pipe reduction again.
+// No Steiner point is ever put on the boundary (the surface mesh is shared by the solids
+// of an assembly and must stay as it is). Present boundary faces are marked constrained
+// as soon as they are present, and present boundary edges are never flipped away.
+// Entities left missing are returned, naming the CAD face (1-based) they lie on.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "mesher/volume/BoundaryTriangulation.h"
+#include "mesher/volume/PipeReduction.h"
+
+namespace aniso {
+
+struct RecoveryOptions {
+  int maxChangesPerEntity = 64;  ///< kept flips per entity and round (pipe reduction)
+  int maxRounds = 6;             ///< rounds per phase
+  bool interiorPoints = true;    ///< phase 2 (interior Steiner points)
+};
+
+struct RecoveryStats {
+  static constexpr int kPhases = 2;
+  long long edges = 0, faces = 0;                ///< boundary entities of the solid
+  long long missingEdges = 0, missingFaces = 0;  ///< missing after the triangulation
+  std::array<long long, kPhases> edgesRecovered{}, facesRecovered{};
+  long long steinerPoints = 0;  ///< points inserted inside the solid
+  volume::FlipCounters flips;
+  void merge(const RecoveryStats& o);
+};
+
+struct RecoveryFailure {
+  int face = -1;  ///< 0-based model face of the entity
+  std::string what;
+};
+
+struct RecoveryResult {
+  RecoveryStats stats;
+  std::vector<RecoveryFailure> left;  ///< empty when every edge and face is present
+};
+
+/// Recovers the boundary in `bt.tets` (kernel from triangulateBoundary). On return every
+/// present boundary face carries the constrained bit. `inside` is the solid's boundary
+/// mesh used to keep Steiner points inside the material.
+RecoveryResult recoverBoundary(BoundaryTriangulation& bt, const RecoveryOptions& options = {});
+
+}  // namespace aniso

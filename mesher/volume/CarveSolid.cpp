@@ -1,0 +1,101 @@
+#include "mesher/volume/CarveSolid.h"
+
+#include <algorithm>
+#include <map>
+
+#include "mesher/delaunay3d/RemoveTets.h"
+#include "mesher/predicates/Predicates.h"
+#include "mesher/volume/MeshQueries.h"
+
+namespace aniso {
+
+using del3d::TetId;
+using del3d::TetMesh;
+using del3d::VertexId;
+
+std::vector<std::string> carveSolid(SolidTetMesh& s, const SolidBoundary& boundary, const del3d::EnclosingBox& box) {
+  TetMesh& m = s.mesh;
+  const std::string solid = "solid " + std::to_string(s.solid + 1);
+  std::vector<std::string> problems;
+  std::vector<TetId> star;
+  using Key = std::array<std::uint32_t, 3>;
+  std::map<Key, int> triangleOf;  // sorted kernel triple -> boundary triangle
+  for (std::size_t t = 0; t < boundary.triangles.size(); ++t) {
+    const auto& tri = boundary.triangles[t];
+    const volume::FaceHandle h = volume::findFace(m, tri[0], tri[1], tri[2], star);
+    if (!h.valid()) {
+      problems.push_back(solid + ": boundary triangle on face " + std::to_string(boundary.triangleFace[t] + 1) +
+                         " is not a face of the tetrahedra");
+      continue;
+    }
+    if (!m.isConstrained(h.tet, h.face)) m.setConstrained(h.tet, h.face, true);
+    Key k = {tri[0].index, tri[1].index, tri[2].index};
+    std::sort(k.begin(), k.end());
+    triangleOf[k] = static_cast<int>(t);
+  }
+  if (!problems.empty()) return problems;
+  // Components across non-constrained faces.
+  std::vector<int> comp(m.tetSlots(), -1);
+  std::vector<int> verdict;  // per component: 1 inside, 0 outside, -1 unknown
+  std::vector<TetId> queue;
+  long long conflicts = 0, strayConstraints = 0;
+  for (std::uint32_t k = 0; k < m.tetSlots(); ++k) {
+    if (!m.isAlive(TetId(k)) || comp[k] >= 0) continue;
+    const int c = static_cast<int>(verdict.size());
+    verdict.push_back(-1);
+    bool outside = false;
+    queue.assign(1, TetId(k));
+    comp[k] = c;
+    for (std::size_t q = 0; q < queue.size(); ++q) {
+      const TetId t = queue[q];
+      for (int m4 = 0; m4 < 4; ++m4)
+        if (m.vertex(t, m4).index < 8 && std::find(box.corners.begin(), box.corners.end(), m.vertex(t, m4)) != box.corners.end())
+          outside = true;
+      for (int i = 0; i < 4; ++i) {
+        const TetId n = m.neighbour(t, i);
+        if (!n.valid()) {
+          outside = true;
+          continue;
+        }
+        if (!m.isConstrained(t, i)) {
+          if (comp[n.index] < 0) {
+            comp[n.index] = c;
+            queue.push_back(n);
+          }
+          continue;
+        }
+        const auto& fv = del3d::kFaceVertex[i];
+        Key key = {m.vertex(t, fv[0]).index, m.vertex(t, fv[1]).index, m.vertex(t, fv[2]).index};
+        std::sort(key.begin(), key.end());
+        const auto it = triangleOf.find(key);
+        if (it == triangleOf.end()) {
+          ++strayConstraints;
+          continue;
+        }
+        const auto& tri = boundary.triangles[it->second];
+        const double o = predicates::orient3d(m.coords(tri[0]), m.coords(tri[1]), m.coords(tri[2]), m.coords(m.vertex(t, i)));
+        const int v = o < 0 ? 1 : 0;
+        if (verdict[c] < 0) verdict[c] = v;
+        else if (verdict[c] != v) ++conflicts;
+      }
+    }
+    if (outside) {
+      if (verdict[c] == 1) ++conflicts;
+      verdict[c] = 0;
+    }
+  }
+  if (strayConstraints)
+    problems.push_back(solid + ": " + std::to_string(strayConstraints) + " constrained faces are not boundary triangles");
+  if (conflicts)
+    problems.push_back(solid + ": inside/outside classification disagrees at " + std::to_string(conflicts) +
+                       " boundary faces (missing or misoriented boundary)");
+  if (!problems.empty()) return problems;
+  std::vector<TetId> remove;
+  for (std::uint32_t k = 0; k < m.tetSlots(); ++k)
+    if (m.isAlive(TetId(k)) && verdict[comp[k]] != 1) remove.push_back(TetId(k));
+  del3d::removeTets(m, remove);
+  // Constrained faces now on the hull keep their bit on the inside tet (removeTets keeps it).
+  return problems;
+}
+
+}  // namespace aniso

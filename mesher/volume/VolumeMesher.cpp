@@ -1,0 +1,203 @@
+#include "mesher/volume/VolumeMesher.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <map>
+#include <mutex>
+#include <thread>
+
+#include <Eigen/Geometry>
+
+#include "mesher/core/Error.h"
+#include "mesher/core/Log.h"
+#include "mesher/volume/BoundaryMesh.h"
+#include "mesher/volume/BoundaryTriangulation.h"
+#include "mesher/volume/CarveSolid.h"
+#include "mesher/volume/SolidTetMesh.h"
+
+namespace aniso {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+/// The tetrahedra of one solid before assembly: fixed vertices as surface node ids (>= 0),
+/// free ones as -(k + 1) for inner[k].
+struct SolidPiece {
+  SolidOutcome outcome;
+  std::vector<std::array<int, 4>> tets;
+  std::vector<Vec3> inner;
+};
+
+void fail(SolidPiece& p, const std::string& entity, const std::string& what) {
+  p.outcome.status = SolidOutcome::Status::Failed;
+  p.outcome.problems.push_back({entity, what});
+}
+
+std::string solidName(int s) { return "solid " + std::to_string(s + 1); }
+
+/// Missing entities grouped by face: one problem per face with the count and an example.
+void reportLeft(SolidPiece& p, int solid, const std::vector<RecoveryFailure>& left) {
+  std::map<int, std::pair<int, std::string>> byFace;
+  for (const RecoveryFailure& f : left) {
+    auto& e = byFace[f.face];
+    if (e.first++ == 0) e.second = f.what;
+  }
+  for (const auto& [face, e] : byFace)
+    fail(p, "face " + std::to_string(face + 1),
+         std::to_string(e.first) + " boundary edges/triangles not recovered in the tetrahedra of " + solidName(solid) +
+             " (e.g. " + e.second + ")");
+}
+
+void extract(const SolidTetMesh& s, SolidPiece& p) {
+  const del3d::TetMesh& m = s.mesh;
+  std::vector<int> freeIndex(m.numVertices(), 0);
+  for (std::uint32_t k = 0; k < m.tetSlots(); ++k) {
+    const del3d::TetId t(k);
+    if (!m.isAlive(t)) continue;
+    std::array<int, 4> q;
+    for (int i = 0; i < 4; ++i) {
+      const del3d::VertexId v = m.vertex(t, i);
+      if (s.node[v.index] >= 0) {
+        q[i] = s.node[v.index];
+        continue;
+      }
+      if (freeIndex[v.index] == 0) {
+        p.inner.push_back(m.point(v));
+        freeIndex[v.index] = static_cast<int>(p.inner.size());
+      }
+      q[i] = -freeIndex[v.index];
+    }
+    p.tets.push_back(q);
+  }
+  double vol = 0;
+  for (std::uint32_t k = 0; k < m.tetSlots(); ++k) {
+    const del3d::TetId t(k);
+    if (!m.isAlive(t)) continue;
+    const Vec3 a = m.point(m.vertex(t, 0));
+    vol += (m.point(m.vertex(t, 1)) - a).dot((m.point(m.vertex(t, 2)) - a).cross(m.point(m.vertex(t, 3)) - a)) / 6.0;
+  }
+  p.outcome.tets = p.tets.size();
+  p.outcome.innerNodes = p.inner.size();
+  p.outcome.volume = vol;
+}
+
+bool validated(SolidPiece& p, const VolumeMesherInput& in, const SolidTetMesh& s, const BoundaryMesh& b,
+               const char* phase) {
+  if (!in.validate) return true;
+  for (const std::string& problem : validateSolidTetMesh(s, b.triangles))
+    fail(p, solidName(s.solid), std::string("after ") + phase + ": " + problem);
+  return p.outcome.status == SolidOutcome::Status::Ok;
+}
+
+SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<int>>& faceTriangles, int solid) {
+  SolidPiece p;
+  auto t0 = Clock::now();
+  const BoundaryMesh b = buildBoundaryMesh(*in.model, *in.surface, faceTriangles, solid);
+  for (const int f : b.internalFaces)
+    logWarning(solidName(solid) + ": face " + std::to_string(f + 1) + " lies inside the solid; it is not kept as a boundary");
+  const std::vector<std::string> broken = checkBoundaryMesh(b, *in.surface);
+  p.outcome.times.emplace_back("volume boundary", since(t0));
+  for (const std::string& s : broken) fail(p, solidName(solid), "surface mesh bug: " + s);
+  if (!broken.empty()) return p;
+
+  t0 = Clock::now();
+  BoundaryTriangulation bt = triangulateBoundary(*in.surface, b);
+  p.outcome.times.emplace_back("volume triangulation", since(t0));
+  for (const std::string& s : bt.problems) fail(p, solidName(solid), s);
+  if (!bt.problems.empty()) return p;
+
+  t0 = Clock::now();
+  const RecoveryResult rr = recoverBoundary(bt, in.recovery);
+  p.outcome.recovery = rr.stats;
+  if (!rr.left.empty()) {
+    p.outcome.times.emplace_back("volume recovery", since(t0));
+    reportLeft(p, solid, rr.left);
+    return p;
+  }
+  const std::vector<std::string> carved = carveSolid(bt.tets, bt.boundary, bt.box);
+  p.outcome.times.emplace_back("volume recovery", since(t0));
+  for (const std::string& s : carved) fail(p, solidName(solid), s);
+  if (!carved.empty() || !validated(p, in, bt.tets, b, "boundary recovery")) return p;
+
+  extract(bt.tets, p);
+  return p;
+}
+
+/// Runs work(i) for i in [0, n) on up to `threads` threads (0 = all cores); the first
+/// exception is rethrown once every thread has stopped.
+template <class Work>
+void forEachSolid(int n, int threads, Work work) {
+  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  threads = std::clamp(threads, 1, std::max(1, n));
+  std::atomic<int> next{0};
+  std::exception_ptr error;
+  std::mutex lock;
+  Progress progress("Volume", n);
+  std::atomic<int> done{0};
+  auto worker = [&](bool reports) {
+    for (int i = next.fetch_add(1); i < n; i = next.fetch_add(1)) {
+      try {
+        work(i);
+      } catch (...) {
+        const std::lock_guard<std::mutex> g(lock);
+        if (!error) error = std::current_exception();
+      }
+      const int d = ++done;
+      if (reports) progress.update(d);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int k = 1; k < threads; ++k) pool.emplace_back(worker, false);
+  worker(true);
+  for (std::thread& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+}
+
+}  // namespace
+
+bool VolumeMeshResult::ok() const {
+  return std::all_of(solids.begin(), solids.end(), [](const SolidOutcome& s) { return s.status == SolidOutcome::Status::Ok; });
+}
+
+VolumeMeshResult meshVolumes(const VolumeMesherInput& in) {
+  if (!in.model || !in.surface) throw InputError("meshVolumes: no model or no surface mesh");
+  const Model& model = *in.model;
+  const int ns = static_cast<int>(model.solids.size());
+  const std::vector<std::vector<int>> faceTriangles = trianglesByFace(*in.surface, static_cast<int>(model.faces.size()));
+  std::vector<SolidPiece> pieces(static_cast<std::size_t>(ns));
+  forEachSolid(ns, in.options.threads, [&](int s) { pieces[s] = meshSolid(in, faceTriangles, s); });
+
+  VolumeMeshResult r;
+  r.mesh.surface = *in.surface;
+  std::map<std::string, double> timeSum;
+  std::vector<std::string> timeOrder;
+  for (int s = 0; s < ns; ++s) {
+    SolidPiece& p = pieces[s];
+    const int base = static_cast<int>(r.mesh.surface.nodes.size());
+    for (const Vec3& x : p.inner) {
+      NodeOn on;
+      on.kind = NodeOn::Kind::Solid;
+      on.entity = s;
+      r.mesh.surface.addNode(x, on);
+    }
+    for (const auto& q : p.tets) {
+      std::array<int, 4> t;
+      for (int i = 0; i < 4; ++i) t[i] = q[i] >= 0 ? q[i] : base - q[i] - 1;
+      r.mesh.tets.push_back(t);
+      r.mesh.tetSolid.push_back(s);
+    }
+    r.recovery.merge(p.outcome.recovery);
+    for (const auto& [phase, sec] : p.outcome.times) {
+      if (!timeSum.count(phase)) timeOrder.push_back(phase);
+      timeSum[phase] += sec;
+    }
+    r.solids.push_back(std::move(p.outcome));
+  }
+  for (const std::string& phase : timeOrder) r.times.emplace_back(phase, timeSum[phase]);
+  return r;
+}
+
+}  // namespace aniso

@@ -1,0 +1,71 @@
+#pragma once
+// VolumeMesher — the whole volume meshing process of a model (thesis 3.5.2, ch. 5), after
+// the surface mesh: for every solid, independently,
+//   1 its outward boundary mesh, validated closed and oriented (BoundaryMesh.h);
+//   2 the Delaunay triangulation of its boundary nodes (BoundaryTriangulation.h, 5.3);
+//   3 boundary recovery (BoundaryRecovery.h, 5.4) and removal of the outside
+//     (CarveSolid.h) — the SolidTetMesh invariants hold from here on;
+//   4 refinement (VolumeRefinement.h, 5.5) and improvement (VolumeImprovement.h, 5.6)
+//     in the solid's 3D control space (VolumeControlSpace.h);
+// then the assembly into one VolumeMesh: the surface mesh's nodes first with the same
+// indices (surface nodes are never moved, so solids sharing a face share its nodes and
+// triangles: conformal assemblies), then the nodes made inside each solid, solid by
+// solid, in kernel order (NodeOn::Kind::Solid). Solids run in parallel on `threads`
+// threads; each result is stored by solid index and assembled in order, so the output is
+// identical for any number of threads.
+//
+// A solid that cannot be meshed (broken boundary mesh, unrecoverable boundary) gets no
+// tetrahedra and its problems are reported by CAD id; the others are meshed. Throws only
+// for errors that stop everything (bad input).
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "mesher/core/MeshOptions.h"
+#include "mesher/model/Model.h"
+#include "mesher/sizing/UserSizing.h"
+#include "mesher/surface/SurfaceMesh.h"
+#include "mesher/volume/BoundaryRecovery.h"
+#include "mesher/volume/VolumeMesh.h"
+
+namespace aniso {
+
+struct VolumeMesherInput {
+  const Model* model = nullptr;
+  const SurfaceMesh* surface = nullptr;
+  MeshOptions options;
+  const UserSizing* user = nullptr;
+  RecoveryOptions recovery;
+  bool refine = true;    ///< phase 4 refinement (off: boundary-only tetrahedra)
+  bool improve = true;   ///< phase 4 improvement
+  bool validate = false; ///< run the validators after every phase (tests); problems fail the solid
+};
+
+struct VolumeProblem {
+  std::string entity;  ///< "solid 3", "face 12"
+  std::string what;
+};
+
+struct SolidOutcome {
+  enum class Status { Ok, Failed } status = Status::Ok;
+  std::vector<VolumeProblem> problems;
+  RecoveryStats recovery;
+  std::size_t tets = 0;
+  std::size_t innerNodes = 0;  ///< nodes created inside the solid
+  double volume = 0;           ///< sum of the tetrahedra's volumes
+  std::vector<std::pair<std::string, double>> times;  ///< phase -> seconds
+  std::vector<std::pair<std::string, double>> counters;  ///< phase statistics (refinement, improvement)
+};
+
+struct VolumeMeshResult {
+  VolumeMesh mesh;
+  std::vector<SolidOutcome> solids;
+  RecoveryStats recovery;                             ///< summed over the solids
+  std::vector<std::pair<std::string, double>> times;  ///< phase -> seconds summed over the solids
+  bool ok() const;
+};
+
+VolumeMeshResult meshVolumes(const VolumeMesherInput& in);
+
+}  // namespace aniso
