@@ -32,6 +32,9 @@ struct FaceMesh {
   std::vector<Vec2> uv;
   std::vector<int> node;
   std::vector<std::array<int, 3>> triangles;  ///< counter-clockwise in (u, v)
+  /// Quadrilaterals after the quad conversion (--quad, mesher/quad/), counter-clockwise in
+  /// (u, v); empty otherwise.
+  std::vector<std::array<int, 4>> quads;
 };
 
 }  // namespace aniso

@@ -27,6 +27,15 @@ std::vector<EdgeKey> triangleEdges(const SurfaceMesh& m) {
       keys.push_back({std::min(p, q), std::max(p, q), static_cast<int>(t), p < q, face});
     }
   }
+  // Quads count as elements numbered after the triangles.
+  for (std::size_t i = 0; i < m.quads.size(); ++i) {
+    const std::array<int, 4>& qu = m.quads[i];
+    const int face = i < m.quadFace.size() ? m.quadFace[i] : -1;
+    for (int k = 0; k < 4; ++k) {
+      const int p = qu[k], q = qu[(k + 1) % 4];
+      keys.push_back({std::min(p, q), std::max(p, q), static_cast<int>(m.triangles.size() + i), p < q, face});
+    }
+  }
   return keys;
 }
 

@@ -210,9 +210,10 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
     o.stats = meshes[f].stats;
     o.problems = meshes[f].problems;
     if (meshes[f].ok()) {
-      const FaceMesh& fm = meshes[f].mesh;
+      FaceMesh& fm = meshes[f].mesh;
+      if (in.options.quad) o.quad = quad::convertToQuads(fm, *cs[f]);
       const FaceQuality q = faceQuality(fm.uv, fm.triangles, *cs[f]);
-      o.quality = {q.eta, q.mu, q.ek};
+      o.quality = {q.eta, in.options.quad ? o.quad.mu : q.mu, q.ek};
     }
   }, faceProgress);
   r.times.emplace_back("faces", since(t));
@@ -221,8 +222,9 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
   t = Clock::now();
   for (int f = 0; f < nf; ++f) {
     if (!cs[f] || !meshes[f].ok()) continue;
-    const size_t before = r.mesh.triangles.size();
+    const size_t before = r.mesh.triangles.size(), quadsBefore = r.mesh.quads.size();
     addFaceMesh(model, f, meshes[f].mesh, r.mesh);
+    r.faces[f].quads = static_cast<int>(r.mesh.quads.size() - quadsBefore);
     if (const int folded = cancelFoldedPairs(r.mesh, before))
       logDebug("face " + std::to_string(f + 1) + ": " + std::to_string(folded) + " folded triangles removed");
     r.faces[f].triangles = static_cast<int>(r.mesh.triangles.size() - before);

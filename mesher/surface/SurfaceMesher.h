@@ -14,6 +14,7 @@
 #include "mesher/core/MeshOptions.h"
 #include "mesher/metric/QualityStats.h"
 #include "mesher/model/Model.h"
+#include "mesher/quad/QuadConversion.h"
 #include "mesher/sizing/UserSizing.h"
 #include "mesher/surface/FaceMesher.h"
 #include "mesher/surface/SurfaceMesh.h"
@@ -44,6 +45,8 @@ struct FaceOutcome {
   MetricQuality quality;
   std::vector<std::string> problems;  ///< empty when the face meshed
   int triangles = 0;
+  int quads = 0;
+  quad::QuadStats quad;  ///< the quad conversion (--quad); quality.mu is then over its edges
 };
 
 struct SurfaceMeshResult {

@@ -11,6 +11,7 @@
 #include "mesher/core/FileExtension.h"
 #include "mesher/highorder/Order2.h"
 #include "tools/cli/Commands.h"
+#include "mesher/quad/QuadQuality.h"
 #include "mesher/surface/SurfaceMesher.h"
 #include "tools/cli/ModelInput.h"
 
@@ -77,6 +78,13 @@ static void fillSurfaceReport(const SurfaceMeshResult& sr, io::Report& report) {
     for (const std::string& p : o.problems) report.failures.push_back({"face " + std::to_string(f + 1), p});
   }
   report.quality["faces"] = faces;
+  report.quads = static_cast<long long>(sr.mesh.quads.size());
+  if (!sr.mesh.quads.empty()) {  // --quad: fraction, 3D scaled Jacobian, μ_M over all edges
+    const quad::SurfaceQuadQuality q = quad::surfaceQuadQuality(sr.mesh);
+    report.quality["quad"] = {{"fraction", q.fraction},
+                              {"scaled_jacobian", {{"min", q.jacobian.min()}, {"mean", q.jacobian.mean()}}},
+                              {"mu_M", {{"mean", sr.quality.mu.mean()}, {"sd", sr.quality.mu.stddev()}}}};
+  }
   const SurfaceMesh::EdgeCounts ec = sr.mesh.edgeCounts();
   report.extra["surface"] = {{"open_edges", ec.open}, {"non_manifold_edges", ec.nonManifold},
                              {"misoriented_edges", ec.misoriented}};

@@ -1,5 +1,5 @@
 // addFaceMesh — a face's (u, v) triangulation added to the SurfaceMesh: new nodes for the
-// interior vertices, triangles on global nodes oriented with the face's normal.
+// interior vertices, triangles (and quads, --quad) on global nodes oriented with the face's normal.
 //
 // The face mesher works with the boundary normalised to "region on the left" in (u, v),
 // i.e. counter-clockwise seen from pu × pv; a reversed face (normal −(pu × pv)) therefore
@@ -56,6 +56,28 @@ void addFaceMesh(const Model& model, int face, const FaceMesh& fm, SurfaceMesh& 
     if (f.reversed) std::swap(g[1], g[2]);
     mesh.triangles.push_back(g);
     mesh.triangleFace.push_back(face);
+  }
+  // Quads (--quad): one with two corners on one global node (at a pole) is the triangle
+  // of its other three; anything more degenerate has no area and is dropped.
+  for (const std::array<int, 4>& q : fm.quads) {
+    std::array<int, 4> g{};
+    for (int k = 0; k < 4; ++k) {
+      if (q[k] < 0 || q[k] >= nv)
+        throw MeshingError(name + ": face mesh quad refers to vertex " + std::to_string(q[k]) + " of " +
+                           std::to_string(nv));
+      g[k] = global[q[k]];
+    }
+    if (f.reversed) std::swap(g[1], g[3]);
+    int repeats = 0, at = -1;
+    for (int k = 0; k < 4; ++k)
+      if (g[k] == g[(k + 1) % 4]) ++repeats, at = k;
+    if (repeats == 0 && g[0] != g[2] && g[1] != g[3]) {
+      mesh.quads.push_back(g);
+      mesh.quadFace.push_back(face);
+    } else if (repeats == 1 && g[(at + 2) % 4] != g[(at + 3) % 4]) {
+      mesh.triangles.push_back({g[(at + 1) % 4], g[(at + 2) % 4], g[(at + 3) % 4]});
+      mesh.triangleFace.push_back(face);
+    }
   }
 }
 

@@ -1,0 +1,171 @@
+#include "mesher/quad/MergeConversion.h"
+
+#include <algorithm>
+#include <array>
+#include <queue>
+#include <tuple>
+
+#include "mesher/quad/OddSplit.h"
+#include "mesher/quad/RegionParity.h"
+
+namespace aniso::quad {
+namespace {
+
+struct Entry {
+  double rank;
+  int e, k, stamp, deferrals;
+  bool operator>(const Entry& o) const { return std::tie(rank, e, k) > std::tie(o.rank, o.e, o.k); }
+};
+
+struct Candidate {
+  double quality;
+  int j;       ///< edge of the base triangle shared with the neighbour
+  int other;   ///< the neighbour
+  Corners quad;
+};
+
+class Merger {
+ public:
+  Merger(QuadMesh2d& mesh, VertexMetrics& metrics, const MergeOptions& o) : mesh_(mesh), metrics_(metrics), o_(o) {}
+
+  MergeStats run() {
+    onFront_.assign(mesh_.boundary.begin(), mesh_.boundary.end());
+    for (int e = 0; e < mesh_.numElements(); ++e)
+      if (mesh_.isTriangle(e)) push(e);
+    while (!heap_.empty()) {
+      const Entry x = heap_.top();
+      heap_.pop();
+      if (!mesh_.isTriangle(x.e) || stamp_[x.e] != x.stamp || !isFrontEdge(mesh_, x.e, x.k)) continue;
+      step(x);
+    }
+    for (int e = 0; e < mesh_.numElements(); ++e) stats_.triangles += mesh_.isTriangle(e);
+    return stats_;
+  }
+
+ private:
+  void grow() {
+    stamp_.resize(mesh_.numElements(), 0);
+    level_.resize(mesh_.numElements(), 0);
+    onFront_.resize(mesh_.numVertices(), 0);
+  }
+
+  int frontLevel(int e, int k) const {
+    const int f = mesh_.adj[e][k];
+    return f == kNone ? 0 : level_[f] + 1;
+  }
+
+  /// (Re)classifies every front edge of triangle e.
+  void push(int e, int deferrals = 0, double penalty = 0) {
+    grow();
+    for (int k = 0; k < 3; ++k) {
+      if (!isFrontEdge(mesh_, e, k)) continue;
+      const FrontEdgeClass c = classifyFrontEdge(mesh_, metrics_, e, k, frontLevel(e, k), o_.weights);
+      heap_.push({c.rank + penalty, e, k, stamp_[e], deferrals});
+    }
+  }
+
+  std::vector<Candidate> candidates(int e, int k) {
+    std::vector<Candidate> out;
+    const Corners& c = mesh_.corners[e];
+    for (int j : {(k + 1) % 3, (k + 2) % 3}) {
+      const int t2 = mesh_.adj[e][j];
+      if (t2 == kNone || !mesh_.isTriangle(t2)) continue;
+      const int u = c[j], v = c[(j + 1) % 3], x = c[(j + 2) % 3];
+      const int i = mesh_.edgeIndex(t2, v, u);
+      if (i == kNone) continue;
+      const Corners quad{u, mesh_.corners[t2][(i + 2) % 3], v, x};
+      const double q = elementQuality(mesh_, metrics_, quad);
+      if (q >= o_.minQuality) out.push_back({q, j, t2, quad});
+    }
+    std::sort(out.begin(), out.end(), [](const Candidate& a, const Candidate& b) {
+      return a.quality != b.quality ? a.quality > b.quality : a.j < b.j;
+    });
+    return out;
+  }
+
+  void step(const Entry& x) {
+    const int e = x.e, k = x.k;
+    const int level = frontLevel(e, k);
+    const int apex = mesh_.corners[e][(k + 2) % 3];
+    const std::vector<Candidate> cands = candidates(e, k);
+    if (cands.empty()) return;
+    for (const Candidate& c : cands) {
+      const int d = c.quad[1];  // the neighbour's apex
+      if ((!onFront_[apex] && !onFront_[d]) || parity_.mergeKeepsParity(mesh_, e, c.other)) {
+        merge(e, c, level);
+        return;
+      }
+    }
+    if (!onFront_[apex]) {
+      for (const Candidate& c : cands) {
+        const OddSplitResult r = splitAndMerge(mesh_, metrics_, e, c.j, o_.minQuality);
+        if (!r.done) continue;
+        ++stats_.oddSplits;
+        created(r.quad, level);
+        return;
+      }
+    }
+    if (onFront_[apex]) {
+      for (const Candidate& c : cands) {
+        if (onFront_[c.quad[1]]) continue;  // the neighbour's apex d must be free too
+        const OddSplitResult r = splitEdgeAndMerge(mesh_, metrics_, e, k, c.j, o_.minQuality);
+        if (!r.done) continue;
+        ++stats_.edgeSplits;
+        created(r.quad, level);
+        return;
+      }
+    }
+    if (x.deferrals < o_.maxDeferrals) {
+      ++stats_.deferred;
+      ++stamp_[e];
+      push(e, x.deferrals + 1, 100.0 * (x.deferrals + 1));
+      return;
+    }
+    ++stats_.forcedOdd;
+    merge(e, cands.front(), level);
+  }
+
+  void merge(int e, const Candidate& c, int level) {
+    const std::array<int, 2> removed{e, c.other};
+    const std::array<Corners, 1> added{c.quad};
+    created(mesh_.replacePatch(removed, added)[0], level);
+  }
+
+  /// Bookkeeping after quad q was formed: its level, its corners on the front, and the
+  /// front edges around its corners reclassified.
+  void created(int q, int level) {
+    grow();
+    ++stats_.quads;
+    level_[q] = level;
+    std::vector<int> around;
+    for (int i = 0; i < 4; ++i) {
+      const int v = mesh_.corners[q][i];
+      onFront_[v] = 1;
+      around.clear();
+      bool closed = false;
+      mesh_.star(v, q, around, closed);
+      for (int t : around) {
+        if (!mesh_.isTriangle(t)) continue;
+        ++stamp_[t];
+        push(t);
+      }
+    }
+  }
+
+  QuadMesh2d& mesh_;
+  VertexMetrics& metrics_;
+  const MergeOptions& o_;
+  MergeStats stats_;
+  RegionParity parity_;
+  std::vector<int> stamp_, level_;
+  std::vector<std::uint8_t> onFront_;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap_;
+};
+
+}  // namespace
+
+MergeStats mergeFront(QuadMesh2d& mesh, VertexMetrics& metrics, const MergeOptions& options) {
+  return Merger(mesh, metrics, options).run();
+}
+
+}  // namespace aniso::quad

@@ -1,0 +1,39 @@
+#pragma once
+// Conversion to quadrilaterals by merging triangles (thesis 4.7.2, alg. 4.4, fig. 4.12),
+// driven by the conversion front (4.7.1, FrontRank.h):
+//   - every front edge is ranked by eq. 4.4 and kept in a heap; the lowest rank is taken
+//     first (ties by element id and edge, so the result is deterministic);
+//   - its triangle is merged with the neighbour across one of its two other edges that
+//     gives the better quad (metric scaled Jacobian, QuadShape.h); a quad below
+//     minQuality, or not strictly convex, is never formed;
+//   - a merge that would leave an odd component of the unconverted region (RegionParity.h)
+//     is replaced by the odd-cycle split (OddSplit.h): the neighbour split at its centroid
+//     when the trouble comes from the neighbour's apex, the shared edge split at its
+//     midpoint when it comes from the base triangle's apex; when it cannot be avoided the edge is put back with a higher rank
+//     (at most maxDeferrals times) and then merged anyway — the odd component then keeps
+//     one triangle, which TriangleTransport.h pairs up later;
+//   - the new quad's edges join the front one level up, and the front edges around its
+//     corners are reclassified.
+// Triangles that no front edge could merge stay triangles.
+#include "mesher/quad/FrontRank.h"
+
+namespace aniso::quad {
+
+struct MergeOptions {
+  double minQuality = 0.2;  ///< least metric scaled Jacobian of a merged quad
+  int maxDeferrals = 2;
+  FrontWeights weights;
+};
+
+struct MergeStats {
+  int quads = 0;
+  int oddSplits = 0;
+  int edgeSplits = 0;  ///< odd-cycle repairs by splitting the shared edge (apex on the front)
+  int forcedOdd = 0;  ///< merges that left an odd region component
+  int deferred = 0;
+  int triangles = 0;  ///< live triangles left
+};
+
+MergeStats mergeFront(QuadMesh2d& mesh, VertexMetrics& metrics, const MergeOptions& options = {});
+
+}  // namespace aniso::quad

@@ -1,0 +1,52 @@
+#include "mesher/quad/QuadConversion.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace aniso::quad {
+namespace {
+
+void measure(const QuadMesh2d& mesh, VertexMetrics& metrics, QuadStats& st) {
+  for (int e = 0; e < mesh.numElements(); ++e) {
+    const int n = mesh.sides(e);
+    if (n == 0) continue;
+    (n == 4 ? st.quads : st.triangles)++;
+    if (n == 4) st.jacobian.add(std::max(-1.0, elementQuality(mesh, metrics, mesh.corners[e])));
+    for (int k = 0; k < n; ++k) {
+      const int f = mesh.adj[e][k];
+      if (f != kNone && f < e) continue;  // each edge once
+      st.mu.add(metrics.length(mesh.corners[e][k], mesh.corners[e][(k + 1) % n]));
+    }
+  }
+}
+
+}  // namespace
+
+QuadStats convertToQuads(FaceMesh& fm, const ControlSpace2d& cs, const QuadOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  QuadStats st;
+  QuadMesh2d mesh = QuadMesh2d::fromFaceMesh(fm);
+  VertexMetrics metrics(mesh, cs);
+  st.merge = mergeFront(mesh, metrics, o.merge);
+  auto pairUp = [&] {
+    const TransportStats t = pairTriangles(mesh, metrics, o.transport);
+    st.paired += t.paired;
+    st.moves += t.moves;
+  };
+  pairUp();
+  for (int pass = 0; pass < o.improvementPasses; ++pass) {
+    const TopologyStats t = improveTopology(mesh, metrics, o.topology);
+    st.doublets += t.doublets;
+    st.swaps += t.swaps;
+    st.smoothed += smoothQuadMesh(mesh, metrics, o.smooth).moved;
+    pairUp();
+  }
+  if (st.paired > 0) st.smoothed += smoothQuadMesh(mesh, metrics, o.smooth).moved;
+  mesh.compact();
+  measure(mesh, metrics, st);
+  mesh.toFaceMesh(fm);
+  st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return st;
+}
+
+}  // namespace aniso::quad

@@ -1,0 +1,41 @@
+#pragma once
+// Metric Laplace smoothing of a mixed quad/triangle face mesh (thesis 4.8.2: the mixed
+// approach of the triangle improvement, sec. 4.6.1, eq. 4.2–4.3, see
+// improve/LaplaceSmoothing.h). Each sweep visits the inner vertices in index order
+// (Gauss–Seidel). The target of Q with edge neighbours P_i is Q + S_Q⁻¹ (1/n) Σ S_i (P_i − Q),
+// S_i the mean of S_Q and S_{P_i} scaled to det S_Q (only the shape of the metric varies,
+// as in the triangle smoothing) — the plain average (eq. 4.2) when the metric is constant.
+// Check, then change: the move is accepted when every element around Q stays strictly
+// convex and counter-clockwise (exact) and the elements get better in metric
+// (elementQuality): a poor star (worst below qualityFloor) must raise its worst, another
+// must keep its worst ≥ qualityFloor and not lower its mean; else the half move is tried.
+// Boundary vertices never move, nor do the vertices of elements touching a pole (two
+// corners on one global node), whose metric the face's parameterization cannot represent.
+#include "mesher/quad/QuadShape.h"
+
+namespace aniso::quad {
+
+struct SmoothOptions {
+  int sweeps = 2;
+  double qualityFloor = 0.4;
+};
+
+struct SmoothStats {
+  long long moved = 0, rejected = 0;
+};
+
+SmoothStats smoothQuadMesh(QuadMesh2d& mesh, VertexMetrics& metrics, const SmoothOptions& options = {});
+
+/// Vertex → live elements, compressed rows (rebuilt by the operators that need it).
+struct VertexElements {
+  std::vector<int> start, elements;
+  void build(const QuadMesh2d& mesh);
+  std::span<const int> of(int v) const {
+    return {elements.data() + start[v], static_cast<std::size_t>(start[v + 1] - start[v])};
+  }
+};
+
+/// Vertices that must not move: on the boundary, or corners of an element touching a pole.
+std::vector<std::uint8_t> frozenVertices(const QuadMesh2d& mesh);
+
+}  // namespace aniso::quad

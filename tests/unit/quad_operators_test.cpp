@@ -1,0 +1,140 @@
+// The operators of the quad conversion one by one, each followed by the validators
+// (structure, strictly convex counter-clockwise elements, boundary and area unchanged):
+// odd-cycle splits, triangle transport, topological transformations, smoothing.
+#include <gtest/gtest.h>
+
+#include "mesher/quad/MergeConversion.h"
+#include "mesher/quad/OddSplit.h"
+#include "mesher/quad/QuadSmoothing.h"
+#include "mesher/quad/QuadTopology.h"
+#include "mesher/quad/RegionParity.h"
+#include "mesher/quad/TriangleTransport.h"
+#include "quad_fixtures.h"
+
+namespace {
+
+using namespace aniso;
+using namespace aniso::quad;
+using quadtest::count;
+
+struct Fixture {
+  std::vector<facetest::Polygon> loops{facetest::rectangle(0, 0, 2, 1), facetest::circle(Vec2(0.7, 0.5), 0.25, 40, true)};
+  double h = 0.05;
+  FaceMesh fm = quadtest::triangleMesh(loops, h);
+  std::shared_ptr<CSAnalytic2d> cs = facetest::isotropicSpace(quadtest::Box2Of(loops), h);
+};
+
+/// Applies `split` to the first 20 triangle pairs that accept it, then validates.
+template <class Split>
+void checkSplits(Split split) {
+  Fixture f;
+  QuadMesh2d m = QuadMesh2d::fromFaceMesh(f.fm);
+  const auto snap = quadtest::snapshot(m);
+  VertexMetrics metrics(m, *f.cs);
+  int done = 0;
+  for (int t = 0; t < m.numElements() && done < 20; ++t)
+    for (int j = 0; j < 3 && m.isTriangle(t); ++j)
+      if (split(m, metrics, t, j)) ++done;
+  EXPECT_EQ(done, 20);
+  quadtest::expectValid(m, snap);
+  EXPECT_EQ(count(m, 4), 20);
+  EXPECT_EQ(m.numVertices(), static_cast<int>(f.fm.uv.size()) + 20);
+}
+
+TEST(QuadOddSplit, CentroidSplitKeepsMeshValid) {
+  checkSplits([](QuadMesh2d& m, VertexMetrics& mt, int t, int j) { return splitAndMerge(m, mt, t, j, 0.2).done; });
+}
+
+TEST(QuadOddSplit, EdgeSplitKeepsMeshValid) {
+  checkSplits([](QuadMesh2d& m, VertexMetrics& mt, int t, int j) {
+    return splitEdgeAndMerge(m, mt, t, (j + 1) % 3, j, 0.2).done;
+  });
+}
+
+TEST(QuadOddSplit, ParityDetectsOddPieces) {
+  // A strip of 6 triangles (3 squares cut by diagonals), adjacent in the chain
+  // 1-0-3-2-5-4: removing the pair (3, 2) leaves 2 + 2 triangles (even), the pair (0, 3)
+  // leaves 1 + 3 (odd), the end pair (0, 1) one piece.
+  FaceMesh fm;
+  for (int i = 0; i <= 3; ++i) {
+    fm.uv.push_back(Vec2(i, 0));
+    fm.uv.push_back(Vec2(i, 1));
+  }
+  fm.node.assign(fm.uv.size(), 0);
+  for (int i = 0; i < 8; ++i) fm.node[i] = i;
+  for (int i = 0; i < 3; ++i) {
+    const int a = 2 * i, b = 2 * i + 2, c = 2 * i + 3, d = 2 * i + 1;
+    fm.triangles.push_back({a, b, c});
+    fm.triangles.push_back({a, c, d});
+  }
+  const QuadMesh2d m = QuadMesh2d::fromFaceMesh(fm);
+  RegionParity parity;
+  EXPECT_TRUE(parity.mergeKeepsParity(m, 3, 2));
+  EXPECT_FALSE(parity.mergeKeepsParity(m, 0, 3));
+  EXPECT_TRUE(parity.mergeKeepsParity(m, 0, 1));
+}
+
+TEST(QuadTransport, PairsLeftTrianglesAndStaysValid) {
+  Fixture f;
+  QuadMesh2d m = QuadMesh2d::fromFaceMesh(f.fm);
+  const auto snap = quadtest::snapshot(m);
+  VertexMetrics metrics(m, *f.cs);
+  mergeFront(m, metrics);
+  const int before = count(m, 3);
+  const TransportStats st = pairTriangles(m, metrics);
+  quadtest::expectValid(m, snap);
+  EXPECT_EQ(count(m, 3), before - 2 * st.paired);
+  EXPECT_GT(st.paired, 0);
+  EXPECT_LT(count(m, 3), before / 2);
+}
+
+TEST(QuadTopology, SwapsAndDoubletsStayValid) {
+  Fixture f;
+  QuadMesh2d m = QuadMesh2d::fromFaceMesh(f.fm);
+  const auto snap = quadtest::snapshot(m);
+  VertexMetrics metrics(m, *f.cs);
+  mergeFront(m, metrics);
+  const int quads = count(m, 4), tris = count(m, 3);
+  const TopologyStats st = improveTopology(m, metrics);
+  quadtest::expectValid(m, snap);
+  EXPECT_EQ(count(m, 4), quads - st.doublets);
+  EXPECT_EQ(count(m, 3), tris);
+}
+
+TEST(QuadTopology, RemovesADoublet) {
+  // Two quads sharing two edges at an inner vertex of degree 2 become one.
+  FaceMesh fm;
+  fm.uv = {Vec2(0, 0), Vec2(2, 0), Vec2(2, 2), Vec2(0, 2), Vec2(1.1, 0.9)};
+  fm.node = {0, 1, 2, 3, -1};
+  fm.quads = {{4, 3, 0, 1}, {4, 1, 2, 3}};
+  QuadMesh2d m = QuadMesh2d::fromFaceMesh(fm);
+  const auto snap = quadtest::snapshot(m);
+  const auto cs = facetest::isotropicSpace(quadtest::Box2Of({facetest::rectangle(0, 0, 2, 2)}), 1.0);
+  VertexMetrics metrics(m, *cs);
+  const TopologyStats st = improveTopology(m, metrics);
+  EXPECT_EQ(st.doublets, 1);
+  quadtest::expectValid(m, snap);
+  EXPECT_EQ(count(m, 4), 1);
+}
+
+TEST(QuadSmoothing, ImprovesWorstAndStaysValid) {
+  Fixture f;
+  QuadMesh2d m = QuadMesh2d::fromFaceMesh(f.fm);
+  const auto snap = quadtest::snapshot(m);
+  VertexMetrics metrics(m, *f.cs);
+  mergeFront(m, metrics);
+  pairTriangles(m, metrics);
+  auto worst = [&] {
+    double w = 1;
+    for (int e = 0; e < m.numElements(); ++e)
+      if (m.isQuad(e)) w = std::min(w, elementQuality(m, metrics, m.corners[e]));
+    return w;
+  };
+  const double before = worst();
+  const SmoothStats st = smoothQuadMesh(m, metrics);
+  quadtest::expectValid(m, snap);
+  EXPECT_GT(st.moved, 0);
+  EXPECT_GE(worst(), before);
+}
+
+}  // namespace

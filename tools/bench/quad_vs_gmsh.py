@@ -1,0 +1,82 @@
+#!/usr/bin/python3
+"""Quad meshes side by side with Gmsh's Blossom recombination (issue 7).
+usage: tools/bench/quad_vs_gmsh.py [CLI] [--dir MODELS] [--only a.step,b.brep] [--no-gmsh] [--timeout S]
+For every model of MODELS/MANIFEST.json: `anisomesh mesh --dim 2 --quad --hmax-rel 0.02
+--curvature-ratio 0.26 --anisotropy 1` and Gmsh 4.8 (`-2 -algo front2d`, Mesh.RecombineAll=1,
+Blossom, the same relative size and curvature sizing as shared/tools/gmsh_anchor.py), each
+measured the same way as shared/tools/check_quad.py: quad fraction, scaled Jacobian min/avg
+(3D, per quad the minimum over its corners), open edges, area against the manifest.
+Prints one table row per model, then the means. Needs Debian's python3-gmsh/meshio/numpy."""
+import json, os, subprocess, sys, tempfile
+import numpy as np, meshio
+
+here = os.path.dirname(os.path.abspath(__file__))
+root = os.path.abspath(os.path.join(here, "..", ".."))
+args = sys.argv[1:]
+cli = args[0] if args and not args[0].startswith("--") else os.path.join(root, "build", "anisomesh")
+opt = lambda k, d: args[args.index(k) + 1] if k in args else d
+d = opt("--dir", os.path.abspath(os.path.join(root, "..", "shared", "models")))
+only = opt("--only", "")
+timeout = int(opt("--timeout", "600"))
+man = [m for m in json.load(open(os.path.join(d, "MANIFEST.json"))) if "error" not in m]
+if only: man = [m for m in man if m["file"] in only.split(",")]
+tmp = tempfile.mkdtemp()
+
+GMSH = r'''
+import sys, gmsh
+f, out = sys.argv[1], sys.argv[2]
+gmsh.initialize(); gmsh.option.setNumber("General.Terminal", 0)
+gmsh.option.setNumber("Mesh.Algorithm", 6)          # front2d
+gmsh.option.setNumber("Mesh.RecombineAll", 1)       # Blossom recombination
+gmsh.option.setNumber("Mesh.MeshSizeFromCurvature", 24)
+gmsh.model.occ.importShapes(f); gmsh.model.occ.synchronize()
+x0, y0, z0, x1, y1, z1 = gmsh.model.getBoundingBox(-1, -1)
+gmsh.option.setNumber("Mesh.MeshSizeMax", 0.02 * ((x1-x0)**2 + (y1-y0)**2 + (z1-z0)**2) ** 0.5)
+gmsh.model.mesh.generate(2); gmsh.write(out); gmsh.finalize()
+'''
+
+def measure(path, m):
+    M = meshio.read(path); P = np.asarray(M.points, float)
+    Q = [np.asarray(c.data) for c in M.cells if c.type == "quad"]; T = [np.asarray(c.data) for c in M.cells if c.type == "triangle"]
+    Q = np.vstack(Q) if Q else np.zeros((0, 4), int); T = np.vstack(T) if T else np.zeros((0, 3), int)
+    nq, nt = len(Q), len(T)
+    tri = np.vstack([T, Q[:, [0, 1, 2]], Q[:, [0, 2, 3]]]) if nq else T
+    area = 0.5 * np.linalg.norm(np.cross(P[tri[:, 1]] - P[tri[:, 0]], P[tri[:, 2]] - P[tri[:, 0]]), axis=1).sum()
+    E = np.vstack([T[:, [0, 1]], T[:, [1, 2]], T[:, [2, 0]], Q[:, [0, 1]], Q[:, [1, 2]], Q[:, [2, 3]], Q[:, [3, 0]]])
+    _, cnt = np.unique(np.sort(E, axis=1), axis=0, return_counts=True)
+    sj = np.ones(nq)
+    for k in range(4):
+        o, u, v = P[Q[:, k]], P[Q[:, (k + 1) % 4]], P[Q[:, (k + 3) % 4]]
+        e1, e2 = u - o, v - o
+        s = np.linalg.norm(np.cross(e1, e2), axis=1) / np.maximum(np.linalg.norm(e1, axis=1) * np.linalg.norm(e2, axis=1), 1e-300)
+        sj = np.minimum(sj, s)
+    return {"quads": nq, "tris": nt, "frac": nq / max(nq + nt, 1), "sj_min": float(sj.min()) if nq else 0.0,
+            "sj_avg": float(sj.mean()) if nq else 0.0, "open": int((cnt == 1).sum()), "area_rel": (area - m["area"]) / m["area"]}
+
+def run(cmd, out, m):
+    if os.path.exists(out): os.remove(out)
+    try:
+        p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return None, "timeout"
+    if p.returncode != 0 or not os.path.exists(out):
+        return None, f"exit {p.returncode}"
+    return measure(out, m), ""
+
+def cell(r, why):
+    if r is None: return f"{why:>38}"
+    return f"{100 * r['frac']:6.1f} {r['sj_min']:6.3f} {r['sj_avg']:6.3f} {r['open']:5d} {100 * r['area_rel']:+7.2f}%"
+
+print(f"{'model':<36} {'anisomesh: quad%  SJmin  SJavg  open   area':>40} | {'gmsh blossom: quad%  SJmin  SJavg  open   area':>44}")
+ours, theirs = [], []
+for m in man:
+    f = os.path.join(d, m["file"])
+    a, wa = run([cli, "mesh", f, "-o", f"{tmp}/a.msh", "--dim", "2", "--quad", "--hmax-rel", "0.02",
+                 "--curvature-ratio", "0.26", "--anisotropy", "1"], f"{tmp}/a.msh", m)
+    g, wg = (None, "skipped") if "--no-gmsh" in args else run(["/usr/bin/python3", "-c", GMSH, f, f"{tmp}/g.msh"], f"{tmp}/g.msh", m)
+    if a: ours.append(a)
+    if g: theirs.append(g)
+    print(f"{m['file']:<36} {cell(a, wa):>40} | {cell(g, wg):>44}", flush=True)
+mean = lambda rows, k: np.mean([r[k] for r in rows]) if rows else float("nan")
+print(f"{'mean (meshed models)':<36} {100 * mean(ours, 'frac'):6.1f} {min([r['sj_min'] for r in ours] or [0]):6.3f} {mean(ours, 'sj_avg'):6.3f}"
+      f"{'':>16} | {100 * mean(theirs, 'frac'):6.1f} {min([r['sj_min'] for r in theirs] or [0]):6.3f} {mean(theirs, 'sj_avg'):6.3f}")
