@@ -1,5 +1,8 @@
 #include "mesher/volume/VolumeImprovement.h"
 
+#include <vector>
+
+#include "mesher/delaunay3d/SpatialSort.h"
 #include "mesher/volume/improve/QualityFlips.h"
 #include "mesher/volume/improve/SliverRemoval.h"
 #include "mesher/volume/improve/VertexMover.h"
@@ -18,9 +21,19 @@ VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, cons
   improve3d::VertexMetrics vm(s.mesh, cs);
   improve3d::VertexMover mover(s, vm);
   for (int pass = 0; pass < o.passes; ++pass) {
+    // The free vertices in Hilbert order: neighbouring stars are visited one after another
+    // (the vertex numbering follows the refinement, scattered over the solid).
+    std::vector<std::uint32_t> free;
+    std::vector<Vec3> at;
+    for (std::uint32_t v = 0; v < s.mesh.numVertices(); ++v)
+      if (!s.isFixed(del3d::VertexId(v)) && s.mesh.vertexTet(del3d::VertexId(v)).valid()) {
+        free.push_back(v);
+        at.push_back(s.mesh.point(del3d::VertexId(v)));
+      }
+    const std::vector<std::uint32_t> order = del3d::hilbertOrder(at);
     for (int sweep = 0; sweep < o.smoothingSweeps; ++sweep)
-      for (std::uint32_t v = 0; v < s.mesh.numVertices(); ++v)
-        if (mover.smooth(del3d::VertexId(v), o.lowGradation, kSmoothingQualityFloor)) ++st.moved;
+      for (const std::uint32_t i : order)
+        if (mover.smooth(del3d::VertexId(free[i]), o.lowGradation, kSmoothingQualityFloor)) ++st.moved;
     improve3d::QualityFlips flips(s, vm, o.flipGain);
     flips.run(o.flipCandidate);
     st.flips23 += flips.counts().f23;

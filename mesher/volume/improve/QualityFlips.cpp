@@ -1,6 +1,7 @@
 #include "mesher/volume/improve/QualityFlips.h"
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <span>
 
@@ -11,6 +12,8 @@
 
 namespace aniso::improve3d {
 namespace {
+
+using del3d::VertexId;
 constexpr int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 
 /// Worst score (η_M³) over tets given as ids or as vertex quadruples.
@@ -27,8 +30,29 @@ bool beats(double after, double before, double gain) {
 }
 }  // namespace
 
+// Floating-point prefilters (quality first, then the exact legality of the kernel's
+// can*(): most candidate flips fail on quality, which costs no exact predicate).
+
+namespace {
+// |η_M³| of (a, b, c, d) whatever its orientation (the legality check rejects inverted ones).
+double absScore(const VertexMetrics& vm, VertexId a, VertexId b, VertexId c, VertexId d) {
+  return std::abs(vm.score(std::array<VertexId, 4>{a, b, c, d}));
+}
+}  // namespace
+
 bool QualityFlips::tryFace(del3d::TetId t, int i, std::vector<del3d::TetId>& created) {
   if (s_.mesh.isConstrained(t, i) || !s_.mesh.neighbour(t, i).valid()) return false;
+  {
+    const del3d::TetId u = s_.mesh.neighbour(t, i);
+    const VertexId d = s_.mesh.vertex(t, i), e = s_.mesh.vertex(u, del3d::codeFace(s_.mesh.adjacentCode(t, i)));
+    VertexId f[3];
+    for (int m = 0; m < 3; ++m) f[m] = s_.mesh.vertex(t, del3d::kFaceVertex[i][m]);
+    // (f0, f1, f2, d) is positive; the new tets replace one f by e.
+    double after = 1e300;
+    for (int m = 0; m < 3; ++m)
+      after = std::min(after, vm_.score(std::array<VertexId, 4>{f[m], f[(m + 1) % 3], e, d}));
+    if (!beats(after, std::min(vm_.score(t), vm_.score(u)), gain_)) return false;
+  }
   del3d::Flip23Plan plan;
   if (!del3d::canFlip23(s_.mesh, t, i, &plan)) return false;
   if (!(beats(worstScore(vm_, plan.newTets), worstScore(vm_, plan.oldTets), gain_))) return false;
@@ -42,7 +66,11 @@ bool QualityFlips::tryEdge(del3d::TetId t, int i, int j, std::vector<del3d::TetI
   std::array<del3d::TetId, 4> ring;
   std::array<del3d::VertexId, 4> apex;
   const int n = del3d::closedEdgeRing(s_.mesh, t, i, j, ring, apex);
+  if (n < 3) return false;
+  const VertexId a = s_.mesh.vertex(t, i), b = s_.mesh.vertex(t, j);
   if (n == 3) {
+    const double after = std::min(absScore(vm_, apex[0], apex[1], apex[2], a), absScore(vm_, apex[0], apex[1], apex[2], b));
+    if (!beats(after, worstScore(vm_, std::span<const del3d::TetId>(ring.data(), 3)), gain_)) return false;
     del3d::Flip32Plan plan;
     if (!del3d::canFlip32(s_.mesh, t, i, j, &plan)) return false;
     if (!(beats(worstScore(vm_, plan.newTets), worstScore(vm_, plan.oldTets), gain_))) return false;
@@ -57,6 +85,10 @@ bool QualityFlips::tryEdge(del3d::TetId t, int i, int j, std::vector<del3d::TetI
   double bestAfter = before;
   bool found = false;
   for (int diag = 0; diag < 2; ++diag) {
+    const VertexId p = apex[diag], q = apex[diag + 1], r = apex[diag + 2], w = apex[(diag + 3) % 4];
+    const double pre = std::min({absScore(vm_, a, p, q, r), absScore(vm_, b, p, q, r), absScore(vm_, a, p, r, w),
+                                 absScore(vm_, b, p, r, w)});
+    if (!beats(pre, before, gain_)) continue;
     del3d::Flip44Plan plan;
     if (!del3d::canFlip44(s_.mesh, t, i, j, diag, &plan)) continue;
     const double after = worstScore(vm_, plan.newTets);
