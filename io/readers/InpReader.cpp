@@ -16,6 +16,8 @@ namespace aniso::io {
 namespace {
 
 constexpr int kMaxIncludeDepth = 8;
+/// A *ELSET/*NSET GENERATE range longer than this is taken for garbage, not expanded.
+constexpr long long kMaxGenerated = 20000000;
 
 std::string upper(std::string_view s) {
   std::string u(s);
@@ -136,7 +138,7 @@ void InpParser::setLine(Set& s, const std::vector<std::string_view>& items, bool
   }
   if (v.size() < 2 || v.size() > 3) throw InputError(where + ": GENERATE expects first, last[, step]");
   const long long step = v.size() == 3 ? v[2] : 1;
-  if (step <= 0 || v[1] < v[0] || (v[1] - v[0]) / step > 100000000) throw InputError(where + ": bad GENERATE range");
+  if (step <= 0 || v[1] < v[0] || (v[1] - v[0]) / step > kMaxGenerated) throw InputError(where + ": bad GENERATE range");
   for (long long x = v[0]; x <= v[1]; x += step) s.ids.push_back(x);
 }
 

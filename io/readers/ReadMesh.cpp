@@ -1,6 +1,7 @@
 // Cell type facts and the reader chosen by extension (ReadMesh.h).
 #include "io/readers/ReadMesh.h"
 
+#include "io/readers/Scanner.h"
 #include "mesher/core/Error.h"
 #include "mesher/core/FileExtension.h"
 
@@ -26,19 +27,25 @@ const char* cellTypeName(CellType t) { return kTypes[static_cast<int>(t)].name; 
 int cellDimension(CellType t) { return kTypes[static_cast<int>(t)].dim; }
 int cellNodeCount(CellType t) { return kTypes[static_cast<int>(t)].nodes; }
 
-ReadMesh readMesh(const std::string& path) {
+namespace {
+
+ReadMesh readByExtension(const std::string& path) {
   const std::string ext = lowerExtension(path);
+  if (ext == ".msh") return readMsh(path);
+  if (ext == ".inp") return readInp(path);
+  if (ext == ".vtu") return readVtu(path);
+  if (ext == ".stl" || ext == ".obj" || ext == ".off") return readSurfaceWithOpenMesh(path);
+  throw InputError(path + ": unknown mesh format (expected .msh .inp .vtu .stl .obj .off)");
+}
+
+}  // namespace
+
+ReadMesh readMesh(const std::string& path) {
   ReadMesh m;
-  if (ext == ".msh") {
-    m = readMsh(path);
-  } else if (ext == ".inp") {
-    m = readInp(path);
-  } else if (ext == ".vtu") {
-    m = readVtu(path);
-  } else if (ext == ".stl" || ext == ".obj" || ext == ".off") {
-    m = readSurfaceWithOpenMesh(path);
-  } else {
-    throw InputError(path + ": unknown mesh format (expected .msh .inp .vtu .stl .obj .off)");
+  try {
+    m = readByExtension(path);
+  } catch (const InputError& e) {  // messages quote the file: keep them one printable line
+    throw InputError(printable(e.what(), 400));
   }
   if (m.cellCount() == 0) throw InputError(path + ": no elements in the file");
   const int n = static_cast<int>(m.nodes.size());

@@ -22,6 +22,12 @@ std::string readWholeFile(const std::string& path) {
   return data;
 }
 
+std::string printable(std::string_view s, std::size_t max) {
+  std::string out;
+  for (char c : s.substr(0, max)) out += (c >= ' ' && c <= '~') ? c : '?';
+  return out;
+}
+
 bool parseInteger(std::string_view s, long long& out) {
   if (!s.empty() && s.front() == '+') s.remove_prefix(1);
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
@@ -51,20 +57,20 @@ std::string_view Scanner::token() {
 long long Scanner::integer() {
   const std::string_view t = token();
   long long v = 0;
-  if (!parseInteger(t, v)) fail("expected an integer, found '" + std::string(t.substr(0, 40)) + "'");
+  if (!parseInteger(t, v)) fail("expected an integer, found '" + printable(t) + "'");
   return v;
 }
 
 double Scanner::real() {
   const std::string_view t = token();
   double v = 0;
-  if (!parseReal(t, v)) fail("expected a number, found '" + std::string(t.substr(0, 40)) + "'");
+  if (!parseReal(t, v)) fail("expected a number, found '" + printable(t) + "'");
   return v;
 }
 
 void Scanner::expect(std::string_view word) {
   const std::string_view t = token();
-  if (t != word) fail("expected " + std::string(word) + ", found '" + std::string(t.substr(0, 40)) + "'");
+  if (t != word) fail("expected " + std::string(word) + ", found '" + printable(t) + "'");
 }
 
 std::string_view Scanner::line() {

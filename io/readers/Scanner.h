@@ -59,6 +59,10 @@ class Scanner {
   std::size_t pos_ = 0;
 };
 
+/// Text from a file made fit for a one-line message: at most `max` characters, anything
+/// but printable ASCII replaced by '?'.
+std::string printable(std::string_view s, std::size_t max = 40);
+
 /// Parses a whole token as an integer / a real number; false when it is not one.
 bool parseInteger(std::string_view s, long long& out);
 bool parseReal(std::string_view s, double& out);
