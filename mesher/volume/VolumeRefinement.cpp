@@ -8,6 +8,7 @@
 #include "mesher/delaunay3d/Inserter.h"
 #include "mesher/delaunay3d/Locate.h"
 #include "mesher/delaunay3d/SpatialSort.h"
+#include "mesher/volume/improve/VertexMetrics.h"
 #include "mesher/volume/refine/BoundaryEdge.h"
 #include "mesher/volume/refine/RefineHeap.h"
 #include "mesher/volume/refine/TetMetricGeometry.h"
@@ -49,7 +50,7 @@ TetPoints pointsOf(const del3d::TetMesh& mesh, TetId t) {
 class Refiner {
  public:
   Refiner(SolidTetMesh& s, const ControlSpace3d& cs, const VolumeRefineOptions& o)
-      : s_(s), mesh_(s.mesh), cs_(cs), o_(o), inserter_(s.mesh) {}
+      : s_(s), mesh_(s.mesh), cs_(cs), o_(o), inserter_(s.mesh), vm_(s.mesh, cs) {}
 
   VolumeRefineStats run();
 
@@ -58,7 +59,7 @@ class Refiner {
   void enqueue(TetId t);
   bool refine(TetId k, double q);
   void process(const refine3d::RefineHeap::Entry& e);
-  bool longestInnerEdgeMidpoint(TetId k, const Metric3d& m, const TetPoints& tp, Vec3& out) const;
+  bool longestInnerEdgeMidpoint(TetId k, const Mat3& m, const TetPoints& tp, Vec3& out) const;
   enum class Outcome { Inserted, Outside, Close, Metric, Refused };
   Outcome tryInsert(const Vec3& p, TetId k, bool mle);
   bool nearHull(const Vec3& p, const Metric3d& m, TetId c) const;
@@ -68,6 +69,7 @@ class Refiner {
   const ControlSpace3d& cs_;
   const VolumeRefineOptions& o_;
   del3d::Inserter inserter_;
+  improve3d::VertexMetrics vm_;
   refine3d::RefineHeap heap_;
   std::vector<std::uint8_t> postponed_;
   std::uint32_t rng_ = 0x9E3779B9u;
@@ -78,19 +80,19 @@ class Refiner {
 double Refiner::evaluate(TetId t) {
   ++st_.evaluated;
   const TetPoints tp = pointsOf(mesh_, t);
-  const Metric3d m = cs_.getMetric(tp.centroid());
+  const std::uint32_t* tv = mesh_.tetVertices(t);
+  const Mat3 m = vm_.tetMetric(tv);
   double q = refine3d::metricSphereQuality(m, tp.p[0], tp.p[1], tp.p[2], tp.p[3]);
   if (q < o_.qualityThreshold) return q;
   // 5.5.1: a tet of good q with a too long edge is refined all the same.
-  const std::uint32_t* tv = mesh_.tetVertices(t);
   for (const auto& e : kEdges) {
     // An edge between two surface nodes may be a boundary edge, which no inner node can
     // shorten: such edges are left to q (their tets' circumspheres).
     if (s_.isFixed(VertexId(tv[e[0]])) && s_.isFixed(VertexId(tv[e[1]]))) continue;
-    const Vec3& a = tp.p[e[0]];
-    const Vec3& b = tp.p[e[1]];
-    if (m.length(b - a) * kEdgePrefilter <= o_.edgeLengthMax) continue;
-    if (cs_.getMetric(0.5 * (a + b)).length(b - a) > o_.edgeLengthMax) return 0.95 * o_.qualityThreshold;
+    const Vec3 d = tp.p[e[1]] - tp.p[e[0]];
+    if ((m * d).norm() * kEdgePrefilter <= o_.edgeLengthMax) continue;
+    const Mat3 mid = 0.5 * (vm_.at(VertexId(tv[e[0]])) + vm_.at(VertexId(tv[e[1]])));
+    if ((mid * d).norm() > o_.edgeLengthMax) return 0.95 * o_.qualityThreshold;
   }
   return q;
 }
@@ -103,9 +105,9 @@ void Refiner::enqueue(TetId t) {
   if (q < o_.qualityThreshold) heap_.push(t, q);
 }
 
-bool Refiner::longestInnerEdgeMidpoint(TetId k, const Metric3d& m, const TetPoints& tp, Vec3& out) const {
+bool Refiner::longestInnerEdgeMidpoint(TetId k, const Mat3& m, const TetPoints& tp, Vec3& out) const {
   std::array<std::pair<double, int>, 6> len;
-  for (int e = 0; e < 6; ++e) len[e] = {m.length(tp.p[kEdges[e][1]] - tp.p[kEdges[e][0]]), e};
+  for (int e = 0; e < 6; ++e) len[e] = {(m * (tp.p[kEdges[e][1]] - tp.p[kEdges[e][0]])).norm(), e};
   std::sort(len.begin(), len.end(), [](const auto& x, const auto& y) { return x.first > y.first || (x.first == y.first && x.second < y.second); });
   for (const auto& [l, e] : len) {
     if (refine3d::isBoundaryEdge(s_, k, kEdges[e][0], kEdges[e][1])) continue;
@@ -152,6 +154,7 @@ Refiner::Outcome Refiner::tryInsert(const Vec3& p, TetId k, bool mle) {
     case del3d::InsertStatus::Refused: return Outcome::Refused;
   }
   s_.node.resize(mesh_.numVertices(), -1);
+  vm_.sync();
   ++st_.inserted;
   for (const TetId t : inserter_.newTets()) enqueue(t);
   return Outcome::Inserted;
@@ -159,7 +162,7 @@ Refiner::Outcome Refiner::tryInsert(const Vec3& p, TetId k, bool mle) {
 
 bool Refiner::refine(TetId k, double q) {
   const TetPoints tp = pointsOf(mesh_, k);
-  const Metric3d m = cs_.getMetric(tp.centroid());
+  const Mat3 m = vm_.tetMetric(mesh_.tetVertices(k));
   const bool mleFirst = q < o_.methodSwitch;
   for (int attempt = 0; attempt < 2; ++attempt) {
     const bool mle = (attempt == 0) == mleFirst;
@@ -236,7 +239,7 @@ VolumeRefineStats Refiner::run() {
 }  // namespace
 
 double refinementQuality(const Metric3d& m, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  return refine3d::metricSphereQuality(m, a, b, c, d);
+  return refine3d::metricSphereQuality(m.matrix(), a, b, c, d);
 }
 
 double predictTetCount(const SolidTetMesh& s, const ControlSpace3d& cs) {

@@ -15,6 +15,8 @@
 #include "mesher/delaunay3d/Delaunay3d.h"
 #include "mesher/delaunay3d/RemoveTets.h"
 #include "mesher/delaunay3d/Validate.h"
+#include "mesher/model/Model.h"
+#include "mesher/surface/SurfaceMesh.h"
 #include "mesher/volume/SolidTetMesh.h"
 
 namespace aniso::testing {
@@ -111,6 +113,43 @@ inline std::vector<std::string> checkSolid(const SolidTetMesh& s, const std::set
   }
   if (hull != boundary) out.push_back("hull differs from the boundary triangles");
   return out;
+}
+
+/// The model (one solid, one shell, the 6 faces of the cube) and the surface mesh (the
+/// solid's hull: node i = point i of cubeSurfacePoints, each triangle on the face of the
+/// axis its normal follows) of a cubeSolid, for buildVolumeControlSpace.
+struct CubeSurface {
+  Model model;
+  SurfaceMesh surface;
+};
+
+inline CubeSurface cubeSurface(const SolidTetMesh& s, const std::set<Triple>& boundary) {
+  CubeSurface c;
+  c.model.faces.resize(6);
+  c.model.shells.resize(1);
+  for (int f = 0; f < 6; ++f) c.model.shells[0].faces.push_back(FaceUse{f, false});
+  c.model.solids.push_back(ModelSolid{"cube", 0, {}});
+  std::vector<Vec3> at(s.node.size());
+  int nodes = 0;
+  for (std::uint32_t v = 0; v < s.node.size(); ++v)
+    if (s.node[v] >= 0) {
+      nodes = std::max(nodes, s.node[v] + 1);
+      at[static_cast<std::size_t>(s.node[v])] = s.mesh.point(del3d::VertexId(v));
+    }
+  at.resize(static_cast<std::size_t>(nodes));
+  for (const Vec3& p : at) {
+    c.surface.addNode(p, NodeOn{});
+    c.model.bbox.add(p);
+  }
+  for (const Triple& t : boundary) {
+    const Vec3 n = (at[t[1]] - at[t[0]]).cross(at[t[2]] - at[t[0]]);
+    int axis = 0;
+    n.cwiseAbs().maxCoeff(&axis);
+    const Vec3 centre = (at[t[0]] + at[t[1]] + at[t[2]]) / 3;
+    c.surface.triangles.push_back(t);
+    c.surface.triangleFace.push_back(2 * axis + (centre[axis] > c.model.bbox.lo[axis] + 0.5 * c.model.bbox.size()[axis]));
+  }
+  return c;
 }
 
 inline double meshVolume(const del3d::TetMesh& m) {

@@ -4,8 +4,10 @@
 // smallest dihedral angle of 14° there). The boundary is the Delaunay triangulation of
 // points on the cube's surface at spacing h (tests/unit/volume_refine_fixture.h), built
 // outside the timed region. Counters: tets, tets/s (refine + improve), kernel bytes/tet
-// (TetMesh capacities), peak RSS of the process per final tet, and the referee's measures
-// (mean ratio average, smallest dihedral angle).
+// (TetMesh capacities), peak RSS of the process during the benchmark per final tet, and the referee's measures
+// (mean ratio average, smallest dihedral angle, meshq's order-dependent dihedral minimum).
+// Two size fields: the analytic uniform one, and the octree control space that
+// buildVolumeControlSpace makes from the surface (its construction is timed).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -14,6 +16,7 @@
 
 #include "mesher/control/CSAnalytic3d.h"
 #include "mesher/volume/TetQuality.h"
+#include "mesher/volume/VolumeControlSpace.h"
 #include "mesher/volume/VolumeImprovement.h"
 #include "mesher/volume/VolumeRefinement.h"
 #include "tests/unit/volume_refine_fixture.h"
@@ -37,22 +40,36 @@ double peakRss() {
   return 0;
 }
 
-void BM_VolumeRefineImproveCube(benchmark::State& state) {
-  const double h = 1.0 / static_cast<double>(state.range(0));
+/// Resets the peak RSS to the current RSS (Linux: "5" to /proc/self/clear_refs), so each
+/// benchmark reports its own peak.
+void resetPeakRss() { std::ofstream("/proc/self/clear_refs") << "5"; }
+
+void run(benchmark::State& state, bool octree) {
+  resetPeakRss();
+  const int n = static_cast<int>(state.range(0));
+  const double h = 1.0 / n;
   Box3 box;
   box.add(Vec3(0, 0, 0));
   box.add(Vec3(1, 1, 1));
-  const CSAnalytic3d cs(box, [h](const Vec3&) { return Metric3d::isotropic(h); });
+  const CSAnalytic3d uniform(box, [h](const Vec3&) { return Metric3d::isotropic(h); });
   SolidTetMesh s;
   VolumeRefineStats rs;
   VolumeImproveStats is;
+  std::shared_ptr<ControlSpace3d> cs;
   for (auto _ : state) {
     state.PauseTiming();
     std::set<testing::Triple> boundary;
-    s = testing::cubeSolid(static_cast<int>(state.range(0)), boundary);
+    s = testing::cubeSolid(n, boundary);
+    const testing::CubeSurface surface = testing::cubeSurface(s, boundary);
     state.ResumeTiming();
-    rs = refineVolume(s, cs);
-    is = improveVolume(s, cs);
+    if (octree) {
+      SizingParameters sizing;
+      sizing.hmax = h;
+      cs = buildVolumeControlSpace(surface.model, surface.surface, 0, sizing, nullptr);
+    }
+    const ControlSpace3d& field = octree ? *cs : static_cast<const ControlSpace3d&>(uniform);
+    rs = refineVolume(s, field);
+    is = improveVolume(s, field);
     benchmark::DoNotOptimize(s.mesh.numTets());
   }
   TetQualitySummary q;
@@ -65,10 +82,17 @@ void BM_VolumeRefineImproveCube(benchmark::State& state) {
   state.counters["eta_avg"] = q.meanRatio.mean();
   state.counters["eta_min"] = q.meanRatio.min();
   state.counters["dihedral_min"] = q.minDihedral;
+  state.counters["referee_dihedral_min"] = q.refereeMinDihedral;
   state.counters["slivers<5deg"] = static_cast<double>(q.belowDihedral);
   state.counters["inserted"] = static_cast<double>(rs.inserted);
   state.counters["flips"] = static_cast<double>(is.flips23 + is.flips32 + is.flips44);
 }
-BENCHMARK(BM_VolumeRefineImproveCube)->Arg(20)->Arg(50)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+/// Uniform analytic size h = 1/n (no control-space cost).
+void BM_VolumeCubeUniform(benchmark::State& state) { run(state, false); }
+/// The control space built from the surface (buildVolumeControlSpace, octree), h_max = 1/n.
+void BM_VolumeCubeOctree(benchmark::State& state) { run(state, true); }
+BENCHMARK(BM_VolumeCubeUniform)->Arg(20)->Arg(50)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_VolumeCubeOctree)->Arg(20)->Arg(50)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace

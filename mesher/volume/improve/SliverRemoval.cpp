@@ -56,9 +56,8 @@ bool SliverRemover::flipAway(TetId t) {
 
 bool SliverRemover::insertCentre(TetId t) {
   const std::uint32_t* tv = s_.mesh.tetVertices(t);
-  const Mat3 mk = vm_.tetMetric(tv);
+  const Mat3 m = vm_.tetMetric(tv);
   Vec3 c;
-  const Metric3d m = Metric3d::fromTransformation(mk);
   if (!refine3d::metricCircumcentre(m, s_.mesh.point(VertexId(tv[0])), s_.mesh.point(VertexId(tv[1])),
                                     s_.mesh.point(VertexId(tv[2])), s_.mesh.point(VertexId(tv[3])), c))
     return false;

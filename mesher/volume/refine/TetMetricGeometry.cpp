@@ -1,6 +1,7 @@
 #include "mesher/volume/refine/TetMetricGeometry.h"
 
 #include <Eigen/Geometry>
+#include <Eigen/LU>
 #include <cmath>
 
 namespace aniso::refine3d {
@@ -19,17 +20,17 @@ bool circumcentreOffset(const Vec3& u, const Vec3& v, const Vec3& w, Vec3& centr
   return std::isfinite(centre.x()) && std::isfinite(centre.y()) && std::isfinite(centre.z());
 }
 
-double metricSphereQuality(const Metric3d& m, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+double metricSphereQuality(const Mat3& m, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   Vec3 centre;
-  if (!circumcentreOffset(m.apply(b - a), m.apply(c - a), m.apply(d - a), centre)) return 0.0;
+  if (!circumcentreOffset(m * (b - a), m * (c - a), m * (d - a), centre)) return 0.0;
   const double r = kIdealCircumradius / centre.norm();
   return r * r * r;
 }
 
-bool metricCircumcentre(const Metric3d& m, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, Vec3& out) {
+bool metricCircumcentre(const Mat3& m, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, Vec3& out) {
   Vec3 centre;
-  if (!circumcentreOffset(m.apply(b - a), m.apply(c - a), m.apply(d - a), centre)) return false;
-  out = a + m.inverseMatrix() * centre;
+  if (!circumcentreOffset(m * (b - a), m * (c - a), m * (d - a), centre)) return false;
+  out = a + m.inverse() * centre;
   return true;
 }
 

@@ -1,9 +1,9 @@
 #pragma once
 // Metric-space geometry of one tetrahedron for the refinement of sec. 5.5: the
-// circumsphere of the tet mapped by a constant metric M (the transformation tensor at the
-// tet's centroid), q(K) of eq. 5.2, and the circumcentre mapped back (CCS placement).
+// circumsphere of the tet mapped by a constant transformation tensor M (symmetric positive
+// definite: the metric of the tet), q(K) of eq. 5.2, and the circumcentre mapped back
+// (CCS placement).
 #include "mesher/core/Types.h"
-#include "mesher/metric/Metric.h"
 
 namespace aniso::refine3d {
 
@@ -15,9 +15,9 @@ inline constexpr double kIdealCircumradius = 0.6123724356957945;
 bool circumcentreOffset(const Vec3& u, const Vec3& v, const Vec3& w, Vec3& centre);
 
 /// q(K) = (R_I / R_K)³ with R_K the circumradius of M·K (eq. 5.2); 0 for a flat tet.
-double metricSphereQuality(const Metric3d& m, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+double metricSphereQuality(const Mat3& m, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
 /// The circumcentre of M·K mapped back to physical space (CCS). False for a flat tet.
-bool metricCircumcentre(const Metric3d& m, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, Vec3& out);
+bool metricCircumcentre(const Mat3& m, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, Vec3& out);
 
 }  // namespace aniso::refine3d
