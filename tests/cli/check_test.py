@@ -184,6 +184,56 @@ with tempfile.TemporaryDirectory() as t:
             check("ours volume not inverted", j["inverted"] == 0 and j["elements"].get("tet10", 0) > 0 and
                   j["surface"]["closed"] and j["surface"]["oriented"], f"{j['problems']} {j['surface']}")
 
+    # Hand-written INP: *INCLUDE, lower-case keywords, a C3D10 continued on a second line,
+    # GENERATE, a set made of sets; the two tetrahedra share a face.
+    open(os.path.join(t, "nodes.inc"), "w").write(
+        "*node, nset=NALL\n1, 0, 0, 0\n2, 1, 0, 0\n3, 0, 1, 0\n4, 0, 0, 1\n5, 1, 1, 1\n")
+    mids = {(1, 2): 11, (2, 3): 12, (3, 1): 13, (1, 4): 14, (2, 4): 15, (3, 4): 16}
+    pts = {1: (0, 0, 0), 2: (1, 0, 0), 3: (0, 1, 0), 4: (0, 0, 1)}
+    mid_lines = "".join(f"{n}, {(pts[a][0] + pts[b][0]) / 2}, {(pts[a][1] + pts[b][1]) / 2}, {(pts[a][2] + pts[b][2]) / 2}\n"
+                        for (a, b), n in mids.items())
+    open(os.path.join(t, "deck.inp"), "w").write(
+        "** a deck\n*HEADING\ntest\n*INCLUDE, INPUT=nodes.inc\n*NODE\n" + mid_lines +
+        "*ELEMENT, TYPE=C3D10, ELSET=quad\n1, 1, 2, 3, 4, 11, 12, 13,\n14, 15, 16\n"
+        "*element, type=C3D4, elset=lin\n2, 2, 3, 4, 5\n"
+        "*ELSET, ELSET=ALLT\nquad, lin\n*ELSET, ELSET=GEN, GENERATE\n1, 2, 1\n"
+        "*NSET, NSET=CORNERS, GENERATE\n1, 5\n*STEP\n*STATIC\n*END STEP\n")
+    rc, j, err = check_json(os.path.join(t, "deck.inp"))
+    groups = {g["name"]: g["elements"] for g in j["groups"]} if j else {}
+    check("inp deck", rc == 0 and j["elements"] == {"tet": 1, "tet10": 1} and j["nodes"] == 11 and
+          groups == {"quad": {"tet10": 1}, "lin": {"tet": 1}, "ALLT": {"tet": 1, "tet10": 1}, "GEN": {"tet": 1, "tet10": 1}}
+          and j["node_sets"] == {"NALL": 5, "CORNERS": 5} and j["surface"]["faces"] == 6,
+          f"exit {rc} {err} {j}")
+
+    # Hand-written VTU with appended data, raw and base64 (UInt32 headers), one tetrahedron.
+    import base64
+    import struct
+    arrays = [("Float64", "", struct.pack("<12d", 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1)),
+              ("Int32", 'Name="connectivity"', struct.pack("<4i", 0, 1, 2, 3)),
+              ("Int32", 'Name="offsets"', struct.pack("<i", 4)), ("UInt8", 'Name="types"', struct.pack("<B", 10)),
+              ("Int32", 'Name="part"', struct.pack("<i", 7))]
+    for encoding in ("raw", "base64"):
+        blobs, offset, tags = [], 0, []
+        for kind, name, data in arrays:
+            blob = struct.pack("<I", len(data)) + data
+            if encoding == "base64":
+                blob = base64.b64encode(blob)
+            extra = ' NumberOfComponents="3"' if name == "" else ""
+            tags.append(f'<DataArray type="{kind}" {name}{extra} format="appended" offset="{offset}"/>')
+            blobs.append(blob)
+            offset += len(blob)
+        xml = ('<?xml version="1.0"?>\n<VTKFile type="UnstructuredGrid" version="1.0" byte_order="LittleEndian" '
+               'header_type="UInt32">\n<UnstructuredGrid><Piece NumberOfPoints="4" NumberOfCells="1">\n'
+               f"<Points>{tags[0]}</Points>\n<Cells>{tags[1]}{tags[2]}{tags[3]}</Cells>\n"
+               f"<CellData>{tags[4]}</CellData>\n</Piece></UnstructuredGrid>\n"
+               f'<AppendedData encoding="{encoding}">\n_').encode() + b"".join(blobs) + b"\n</AppendedData></VTKFile>\n"
+        path = os.path.join(t, f"appended_{encoding}.vtu")
+        open(path, "wb").write(xml)
+        rc, j, err = check_json(path)
+        check(f"vtu appended {encoding}", rc == 0 and j["elements"] == {"tet": 1} and j["groups"] ==
+              [{"name": "part=7", "elements": {"tet": 1}}] and abs(j["quality"]["tet_mean_ratio"]["min"] - 0.8399) < 1e-3,
+              f"exit {rc} {err} {j}")
+
     # Deliberately broken: one tetrahedron with two corners swapped; one triangle flipped.
     lines = open(os.path.join(t, "g22.msh")).read().splitlines()
     start = lines.index("$Elements") + 2
