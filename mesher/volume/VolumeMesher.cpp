@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <exception>
+#include <memory>
 #include <map>
 #include <mutex>
 #include <thread>
@@ -16,6 +17,9 @@
 #include "mesher/volume/BoundaryTriangulation.h"
 #include "mesher/volume/CarveSolid.h"
 #include "mesher/volume/SolidTetMesh.h"
+#include "mesher/volume/VolumeControlSpace.h"
+#include "mesher/volume/VolumeImprovement.h"
+#include "mesher/volume/VolumeRefinement.h"
 
 namespace aniso {
 namespace {
@@ -122,6 +126,31 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
   for (const std::string& s : carved) fail(p, solidName(solid), s);
   if (!carved.empty() || !validated(p, in, bt.tets, b, "boundary recovery")) return p;
 
+  std::shared_ptr<ControlSpace3d> cs;
+  if (in.refine || in.improve || in.quality) {
+    t0 = Clock::now();
+    cs = buildVolumeControlSpace(*in.model, *in.surface, solid, in.options.sizing, in.user);
+    p.outcome.times.emplace_back("volume control space", since(t0));
+  }
+  if (in.refine && cs) {
+    t0 = Clock::now();
+    const VolumeRefineStats rs = refineVolume(bt.tets, *cs);
+    p.outcome.times.emplace_back("volume refinement", since(t0));
+    p.outcome.counters.emplace_back("refinement_inserted", static_cast<double>(rs.inserted));
+    p.outcome.counters.emplace_back("refinement_abandoned", static_cast<double>(rs.abandoned));
+    if (!validated(p, in, bt.tets, b, "refinement")) return p;
+  }
+  if (in.improve && cs) {
+    t0 = Clock::now();
+    const VolumeImproveStats is = improveVolume(bt.tets, *cs);
+    p.outcome.times.emplace_back("volume improvement", since(t0));
+    p.outcome.counters.emplace_back("improvement_moved", static_cast<double>(is.moved));
+    p.outcome.counters.emplace_back("improvement_flips", static_cast<double>(is.flips23 + is.flips32 + is.flips44));
+    p.outcome.counters.emplace_back("slivers_before", static_cast<double>(is.sliversBefore));
+    p.outcome.counters.emplace_back("slivers_after", static_cast<double>(is.sliversAfter));
+    if (!validated(p, in, bt.tets, b, "improvement")) return p;
+  }
+  if (in.quality) accumulateTetQuality(bt.tets, cs.get(), p.outcome.quality);
   extract(bt.tets, p);
   return p;
 }
@@ -190,6 +219,7 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& in) {
       r.mesh.tetSolid.push_back(s);
     }
     r.recovery.merge(p.outcome.recovery);
+    r.quality.merge(p.outcome.quality);
     for (const auto& [phase, sec] : p.outcome.times) {
       if (!timeSum.count(phase)) timeOrder.push_back(phase);
       timeSum[phase] += sec;

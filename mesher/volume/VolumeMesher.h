@@ -6,7 +6,8 @@
 //   3 boundary recovery (BoundaryRecovery.h, 5.4) and removal of the outside
 //     (CarveSolid.h) — the SolidTetMesh invariants hold from here on;
 //   4 refinement (VolumeRefinement.h, 5.5) and improvement (VolumeImprovement.h, 5.6)
-//     in the solid's 3D control space (VolumeControlSpace.h);
+//     in the solid's 3D control space (VolumeControlSpace.h), then the quality measures
+//     (TetQuality.h);
 // then the assembly into one VolumeMesh: the surface mesh's nodes first with the same
 // indices (surface nodes are never moved, so solids sharing a face share its nodes and
 // triangles: conformal assemblies), then the nodes made inside each solid, solid by
@@ -27,6 +28,7 @@
 #include "mesher/sizing/UserSizing.h"
 #include "mesher/surface/SurfaceMesh.h"
 #include "mesher/volume/BoundaryRecovery.h"
+#include "mesher/volume/TetQuality.h"
 #include "mesher/volume/VolumeMesh.h"
 
 namespace aniso {
@@ -40,6 +42,7 @@ struct VolumeMesherInput {
   bool refine = true;    ///< phase 4 refinement (off: boundary-only tetrahedra)
   bool improve = true;   ///< phase 4 improvement
   bool validate = false; ///< run the validators after every phase (tests); problems fail the solid
+  bool quality = true;   ///< measure the tetrahedra (TetQuality.h) for the report
 };
 
 struct VolumeProblem {
@@ -56,12 +59,14 @@ struct SolidOutcome {
   double volume = 0;           ///< sum of the tetrahedra's volumes
   std::vector<std::pair<std::string, double>> times;  ///< phase -> seconds
   std::vector<std::pair<std::string, double>> counters;  ///< phase statistics (refinement, improvement)
+  TetQualitySummary quality;   ///< Euclidean and metric quality of the solid's tetrahedra
 };
 
 struct VolumeMeshResult {
   VolumeMesh mesh;
   std::vector<SolidOutcome> solids;
   RecoveryStats recovery;                             ///< summed over the solids
+  TetQualitySummary quality;                          ///< over all solids
   std::vector<std::pair<std::string, double>> times;  ///< phase -> seconds summed over the solids
   bool ok() const;
 };

@@ -13,6 +13,8 @@
 #include "tools/cli/Commands.h"
 #include "mesher/quad/QuadQuality.h"
 #include "mesher/surface/SurfaceMesher.h"
+#include "mesher/volume/VolumeMesher.h"
+#include "tools/cli/VolumeReport.h"
 #include "tools/cli/ModelInput.h"
 
 namespace aniso::cli {
@@ -101,6 +103,36 @@ static void elevateForOutput(const Model& topo, Mesh& mesh, io::Report& report) 
   report.extra["order2"] = {{"mid_nodes", s.midNodes}, {"straightened", s.straightened}};
 }
 
+/// Dim 3: the volume mesh of every solid (VolumeMesher.h), reported and written; no file
+/// when a solid fails (exit 3).
+static int runVolume(const MeshArgs& args, const Model& topo, const SurfaceMesh& surface, const UserSizing& user,
+                     io::Report& report, const io::WriteOptions& wopt, std::chrono::steady_clock::time_point t0) {
+  using Clock = std::chrono::steady_clock;
+  auto seconds = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
+  VolumeMesherInput vin;
+  vin.model = &topo;
+  vin.surface = &surface;
+  vin.options = args.options;
+  vin.user = &user;
+  VolumeMeshResult vr = meshVolumes(vin);
+  for (const auto& p : vr.times) report.times.push_back(p);
+  fillVolumeReport(topo, vr, report);
+  if (!vr.ok()) {
+    report.status = io::RunStatus::Failed;
+    report.totalSeconds = seconds(t0, Clock::now());
+    writeReport(args, report);
+    throw MeshingError(args.file + ": " + report.failures.front().entity + ": " + report.failures.front().what);
+  }
+  if (args.options.order == 2) elevateForOutput(topo, vr.mesh, report);
+  const auto tw = Clock::now();
+  io::writeVolumeMesh(topo, vr.mesh, args.output, wopt);
+  report.times.emplace_back("write", seconds(tw, Clock::now()));
+  report.status = io::RunStatus::Ok;
+  report.totalSeconds = seconds(t0, Clock::now());
+  writeReport(args, report);
+  return 0;
+}
+
 bool isKnownOutputExtension(const std::string& path) {
   static const char* known[] = {".msh", ".inp", ".vtu", ".stl", ".obj", ".off", ".unv"};
   const std::string ext = lowerExtension(path);
@@ -137,14 +169,6 @@ int runMesh(const MeshArgs& args) {
                                colon == std::string::npos ? problem : problem.substr(colon + 2)});
   }
 
-  if (dim == 3) {
-    // The volume mesher is not in this build yet: say so, write no mesh.
-    report.status = io::RunStatus::Failed;
-    report.failures.push_back({"model", "volume meshing is not available yet in this build (use --dim 2)"});
-    report.totalSeconds = seconds(t0, Clock::now());
-    writeReport(args, report);
-    throw MeshingError(args.file + ": volume meshing is not available yet in this build (use --dim 2)");
-  }
   if (!report.failures.empty()) {  // the model's topology is broken: nothing sensible to mesh
     report.totalSeconds = seconds(t0, Clock::now());
     writeReport(args, report);
@@ -167,11 +191,12 @@ int runMesh(const MeshArgs& args) {
     writeReport(args, report);
     throw MeshingError(args.file + ": " + report.failures.front().entity + ": " + report.failures.front().what);
   }
-  if (args.options.order == 2) elevateForOutput(topo, sr.mesh, report);
-  const auto tw = Clock::now();
   io::WriteOptions wopt;
   wopt.binary = args.binary;
   wopt.mshVersion = args.mshVersion;
+  if (dim == 3) return runVolume(args, topo, sr.mesh, user, report, wopt, t0);
+  if (args.options.order == 2) elevateForOutput(topo, sr.mesh, report);
+  const auto tw = Clock::now();
   io::writeSurfaceMesh(topo, sr.mesh, args.output, wopt);
   report.times.emplace_back("write", seconds(tw, Clock::now()));
   report.status = io::RunStatus::Ok;

@@ -1,0 +1,71 @@
+#include "tools/cli/VolumeReport.h"
+
+namespace aniso::cli {
+
+namespace {
+
+nlohmann::ordered_json recoveryJson(const RecoveryStats& s) {
+  nlohmann::ordered_json j;
+  j["phases"] = {"pipe-reduction", "interior-cavity"};
+  j["edges"] = s.edges;
+  j["faces"] = s.faces;
+  j["missing_edges"] = s.missingEdges;
+  j["missing_faces"] = s.missingFaces;
+  j["edges_recovered"] = s.edgesRecovered;
+  j["faces_recovered"] = s.facesRecovered;
+  j["steiner_points_inside"] = s.steinerPoints;
+  j["steiner_points_boundary"] = 0;
+  j["flips23"] = s.flips.flips23;
+  j["edge_removals"] = s.flips.removals;
+  return j;
+}
+
+nlohmann::ordered_json statsJson(const QualityStats& s) {
+  return {{"mean", s.count() ? s.mean() : 0.0}, {"sd", s.stddev()}, {"min", s.count() ? s.min() : 0.0},
+          {"max", s.count() ? s.max() : 0.0}};
+}
+
+nlohmann::ordered_json qualityJson(const TetQualitySummary& q) {
+  nlohmann::ordered_json j;
+  j["mean_ratio"] = statsJson(q.meanRatio);
+  j["dihedral_min"] = q.minDihedral;
+  j["dihedral_max"] = q.maxDihedral;
+  j["referee_dihedral_min"] = q.refereeMinDihedral;
+  j["tets_below_5deg"] = q.belowDihedral;
+  j["inverted"] = q.inverted;
+  j["eta_M"] = statsJson(q.etaM);
+  j["mu_M"] = statsJson(q.muM);
+  return j;
+}
+
+}  // namespace
+
+void fillVolumeReport(const Model& model, const VolumeMeshResult& vr, io::Report& report) {
+  report.nodes = static_cast<long long>(vr.mesh.nodes().size());
+  report.tetrahedra = static_cast<long long>(vr.mesh.tets.size());
+  report.extra["recovery"] = recoveryJson(vr.recovery);
+  report.quality["volume"] = qualityJson(vr.quality);
+  report.extra["volume"] = vr.quality.volume;
+  nlohmann::ordered_json solids = nlohmann::ordered_json::array();
+  for (std::size_t s = 0; s < vr.solids.size(); ++s) {
+    const SolidOutcome& o = vr.solids[s];
+    nlohmann::ordered_json j;
+    j["solid"] = s + 1;
+    j["name"] = s < model.solids.size() ? model.solids[s].name : std::string();
+    j["status"] = o.status == SolidOutcome::Status::Ok ? "ok" : "failed";
+    j["tetrahedra"] = o.tets;
+    j["inner_nodes"] = o.innerNodes;
+    j["volume"] = o.volume;
+    j["recovery"] = recoveryJson(o.recovery);
+    j["quality"] = qualityJson(o.quality);
+    nlohmann::ordered_json times = nlohmann::ordered_json::object();
+    for (const auto& [phase, sec] : o.times) times[phase] = sec;
+    j["times"] = times;
+    for (const auto& [name, value] : o.counters) j["stats"][name] = value;
+    solids.push_back(j);
+    for (const VolumeProblem& p : o.problems) report.failures.push_back({p.entity, p.what});
+  }
+  report.extra["solids"] = solids;
+}
+
+}  // namespace aniso::cli
