@@ -41,14 +41,14 @@ VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, cons
     st.flips44 += flips.counts().f44;
   }
   if (o.sliverRounds > 0) {
-    const improve3d::SliverStats ss = improve3d::removeSlivers(s, cs, vm, o.sliverAngleDeg, o.sliverRounds, o.sliverInsertion);
+    const improve3d::SliverStats ss = improve3d::removeSlivers(s, cs, vm, o.sliverAngleDeg, o.euclideanSliverAngleDeg, o.sliverRounds, o.sliverInsertion);
     st.sliversBefore = ss.before;
     st.sliversAfter = ss.after;
     st.sliverFlips = ss.flips;
     st.sliverMoves = ss.moves;
     st.sliverInsertions = ss.insertions;
   } else {
-    st.sliversBefore = st.sliversAfter = improve3d::countSlivers(s, vm, o.sliverAngleDeg);
+    st.sliversBefore = st.sliversAfter = improve3d::countSlivers(s, vm, o.sliverAngleDeg, o.euclideanSliverAngleDeg);
   }
   return st;
 }

@@ -9,17 +9,21 @@
 //       worst η_M does not decrease (else the half move is tried);
 //     geometric flipping (sec. 5.6.2): T23 for faces, T32 / T44 for edges (legality by
 //       the kernel's exact checks; constrained faces are never removed) whenever the
-//       worst η_M of the new tets beats that of the old ones by flipGain; all tets are
-//       visited, a changed region is revisited.
-//   sliver removal: every tet whose smallest dihedral angle is below sliverAngleDeg is
-//     attacked by (1) flips of its faces and edges raising the local minimum of η_M,
-//     (2) relocation of its free vertices (smoothing, then deterministic perturbations)
-//     raising the minimum dihedral angle of their stars, (3) inserting a point at its
-//     metric circumcentre (del3d::Inserter, mustRemove = the sliver) followed by (2) on
-//     the new vertex; rounds repeat while they make progress (at most sliverRounds).
+//       worst η_M of the new tets beats that of the old ones by flipGain; the tets with
+//       η_M below flipCandidate are visited (the thesis visits all), a changed region is
+//       revisited.
+//   sliver removal: every tet whose smallest dihedral angle is below sliverAngleDeg (in
+//     its metric), or with a Euclidean dihedral angle outside [euclideanSliverAngleDeg,
+//     180° − euclideanSliverAngleDeg], is attacked (improve/SliverRemoval.h) by (1) flips
+//     of its faces and edges, (2) relocation of its free vertices (smoothing target, then
+//     deterministic perturbations), (3) a point inserted at its metric circumcentre
+//     (del3d::Inserter, mustRemove = the sliver) followed by (2) on the new vertex — each
+//     accepted when it raises the local minimum of min(η_M, η) (the metric and the
+//     Euclidean mean ratio); rounds repeat while they make progress (at most sliverRounds).
 // η_M of a tet uses the mean of the four vertices' transformation tensors (cached per
-// vertex, one control-space call per vertex: improve/VertexMetrics.h). Fixed vertices (node ≥ 0) never move; the hull (the
-// constrained boundary triangles) is unchanged, so validateSolidTetMesh holds afterwards.
+// vertex, one control-space call per vertex: improve/VertexMetrics.h). Fixed vertices
+// (node ≥ 0) never move; the hull (the constrained boundary triangles) is unchanged, so
+// validateSolidTetMesh holds afterwards.
 // Deterministic.
 #include <cstddef>
 
@@ -37,7 +41,10 @@ struct VolumeImproveOptions {
   /// Measured (cube, h = 0.05): all tets 0.859 mean ratio in 0.72 s; 0.7: 0.864 in 0.32 s;
   /// 0.5: 0.855 in 0.26 s.
   double flipCandidate = 0.7;
-  double sliverAngleDeg = 10.0;  ///< sliver removal target (smallest dihedral angle)
+  double sliverAngleDeg = 10.0;  ///< sliver removal target (smallest dihedral angle in the metric)
+  /// Also a sliver: a Euclidean dihedral angle below this or above 180° minus this (the
+  /// referee's measure; matters for anisotropic meshes).
+  double euclideanSliverAngleDeg = 5.0;
   int sliverRounds = 4;
   bool sliverInsertion = true;   ///< allow step (3)
 };

@@ -1,5 +1,8 @@
 #include "mesher/volume/improve/SliverRemoval.h"
 
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+#include <cmath>
 #include <vector>
 
 #include "mesher/delaunay3d/Inserter.h"
@@ -17,24 +20,27 @@ using del3d::VertexId;
 
 class SliverRemover {
  public:
-  SliverRemover(SolidTetMesh& s, const ControlSpace3d& cs, VertexMetrics& vm, double angle, bool insertion)
-      : s_(s), cs_(cs), vm_(vm), angle_(angle), insertion_(insertion), flips_(s, vm, 0.0), mover_(s, vm),
-        inserter_(s.mesh, 0x51F3A7u) {}
+  SliverRemover(SolidTetMesh& s, const ControlSpace3d& cs, VertexMetrics& vm, double angle, double euclidean,
+                bool insertion)
+      : s_(s), cs_(cs), vm_(vm), angle_(angle), euclidean_(euclidean), insertion_(insertion), flips_(s, vm, 0.0),
+        mover_(s, vm), inserter_(s.mesh, 0x51F3A7u) {}
 
   /// One round; returns the number of slivers it visited that are gone.
   std::size_t round();
   SliverStats stats;
 
  private:
-  bool isSliver(TetId t) const { return s_.mesh.isAlive(t) && vm_.metricMinDihedral(t) < angle_; }
+  bool isSliver(TetId t) const { return s_.mesh.isAlive(t) && vm_.isSliver(t, angle_, euclidean_); }
   bool attack(TetId t);
   bool flipAway(TetId t);
-  bool insertCentre(TetId t);
+  void candidates(TetId t, std::vector<Vec3>& out) const;
+  bool insertAt(TetId t, const Vec3& c);
+  bool insertPoint(TetId t);
 
   SolidTetMesh& s_;
   const ControlSpace3d& cs_;
   VertexMetrics& vm_;
-  double angle_;
+  double angle_, euclidean_;
   bool insertion_;
   QualityFlips flips_;
   VertexMover mover_;
@@ -54,13 +60,30 @@ bool SliverRemover::flipAway(TetId t) {
   return true;
 }
 
-bool SliverRemover::insertCentre(TetId t) {
+// The candidate points of step 3: the metric circumcentre, then for each boundary face of
+// the sliver the apex of the regular tet on it, inside (in the tet's metric): a sliver
+// lying on a curved boundary (two boundary faces) has its circumcentre far away.
+void SliverRemover::candidates(TetId t, std::vector<Vec3>& out) const {
+  out.clear();
   const std::uint32_t* tv = s_.mesh.tetVertices(t);
   const Mat3 m = vm_.tetMetric(tv);
+  Vec3 p[4];
+  for (int i = 0; i < 4; ++i) p[i] = s_.mesh.point(VertexId(tv[i]));
   Vec3 c;
-  if (!refine3d::metricCircumcentre(m, s_.mesh.point(VertexId(tv[0])), s_.mesh.point(VertexId(tv[1])),
-                                    s_.mesh.point(VertexId(tv[2])), s_.mesh.point(VertexId(tv[3])), c))
-    return false;
+  if (refine3d::metricCircumcentre(m, p[0], p[1], p[2], p[3], c)) out.push_back(c);
+  const Mat3 inv = m.inverse();
+  for (int i = 0; i < 4; ++i) {
+    if (s_.mesh.neighbour(t, i).valid()) continue;
+    const Vec3 a = m * p[del3d::kFaceVertex[i][0]], b = m * p[del3d::kFaceVertex[i][1]],
+               d = m * p[del3d::kFaceVertex[i][2]];
+    Vec3 n = (b - a).cross(d - a);
+    if (n.dot(m * p[i] - a) < 0) n = -n;  // towards the inside (vertex i's side)
+    const double len = ((b - a).norm() + (d - b).norm() + (a - d).norm()) / 3;
+    out.push_back(inv * ((a + b + d) / 3 + std::sqrt(2.0 / 3.0) * len * n.normalized()));
+  }
+}
+
+bool SliverRemover::insertAt(TetId t, const Vec3& c) {
   const double xyz[3] = {c.x(), c.y(), c.z()};
   const del3d::LocateResult loc = del3d::locate(s_.mesh, xyz, t, rng_);
   if (loc.status != del3d::LocateStatus::Inside && loc.status != del3d::LocateStatus::OnFace) return false;
@@ -83,6 +106,14 @@ bool SliverRemover::insertCentre(TetId t) {
   return true;
 }
 
+bool SliverRemover::insertPoint(TetId t) {
+  std::vector<Vec3> points;
+  candidates(t, points);
+  for (const Vec3& c : points)
+    if (insertAt(t, c)) return true;
+  return false;
+}
+
 bool SliverRemover::attack(TetId t) {
   if (flipAway(t)) return true;
   std::uint32_t tv[4];
@@ -92,7 +123,7 @@ bool SliverRemover::attack(TetId t) {
     if (mover_.relocate(VertexId(v))) ++stats.moves;
     if (!isSliver(t)) return true;
   }
-  return insertion_ && insertCentre(t);
+  return insertion_ && insertPoint(t);
 }
 
 std::size_t SliverRemover::round() {
@@ -110,20 +141,22 @@ std::size_t SliverRemover::round() {
 
 }  // namespace
 
-std::size_t countSlivers(const SolidTetMesh& s, const VertexMetrics& vm, double angleDeg) {
+std::size_t countSlivers(const SolidTetMesh& s, const VertexMetrics& vm, double angleDeg, double euclideanDeg) {
   std::size_t n = 0;
   for (std::uint32_t k = 0; k < s.mesh.tetSlots(); ++k)
-    if (s.mesh.isAlive(TetId(k)) && vm.metricMinDihedral(TetId(k)) < angleDeg) ++n;
+    if (s.mesh.isAlive(TetId(k)) && vm.isSliver(TetId(k), angleDeg, euclideanDeg)) ++n;
   return n;
 }
 
-SliverStats removeSlivers(SolidTetMesh& s, const ControlSpace3d& cs, VertexMetrics& vm, double angleDeg, int rounds,
-                          bool insertion) {
-  SliverRemover r(s, cs, vm, angleDeg, insertion);
-  r.stats.before = countSlivers(s, vm, angleDeg);
+SliverStats removeSlivers(SolidTetMesh& s, const ControlSpace3d& cs, VertexMetrics& vm, double angleDeg,
+                          double euclideanDeg, int rounds, bool insertion) {
+  SliverRemover r(s, cs, vm, angleDeg, euclideanDeg, insertion);
+  r.stats.before = countSlivers(s, vm, angleDeg, euclideanDeg);
+  vm.setGuardEuclidean(true);
   for (int i = 0; i < rounds && r.round() > 0; ++i) {
   }
-  r.stats.after = countSlivers(s, vm, angleDeg);
+  vm.setGuardEuclidean(false);
+  r.stats.after = countSlivers(s, vm, angleDeg, euclideanDeg);
   return r.stats;
 }
 

@@ -1,16 +1,22 @@
 #pragma once
 // Sliver removal (issue 5 §1, after alg. 5.4): a tet is a sliver when its smallest
 // dihedral angle, measured in its metric (VertexMetrics::metricMinDihedral; Euclidean for
-// an isotropic field), is below the target angle. Each round visits the slivers in slot
-// order and, for each one still a sliver, tries in turn:
+// an isotropic field), is below the target angle, or when a Euclidean dihedral angle is
+// below the Euclidean target or above 180° minus it (the referee measures in space: an
+// anisotropic metric may find a flat tet acceptable). The operators below maximise the
+// smaller of the metric and the Euclidean mean ratio (VertexMetrics::setGuardEuclidean).
+// Each round visits the slivers in slot order and, for each one still a sliver, tries in
+// turn:
 //   1 flips of its faces and edges (QualityFlips::visit with gain 0, repeated on the
 //     tets created while one of them is still a sliver);
 //   2 relocation of its free vertices (VertexMover::relocate);
-//   3 (optional) a point at its metric circumcentre, inserted with del3d::Inserter
-//     (transform = the metric there, mustRemove = the sliver, never crossing a
-//     constrained face; cancelled when outside the solid or closer than
-//     kSliverInsertDistance, in that metric, to a vertex of its containing tet), then
-//     relocation of the new vertex and flips of its star.
+//   3 (optional) a point at its metric circumcentre or, failing that, at the apex of the
+//     regular tet (in its metric) on one of its boundary faces — a sliver lying on a
+//     curved boundary (two boundary faces, four surface nodes) has its circumcentre far
+//     away — inserted with del3d::Inserter (transform = the metric there, mustRemove =
+//     the sliver, never crossing a constrained face; cancelled when outside the solid or
+//     closer than kSliverInsertDistance, in that metric, to a vertex of its containing
+//     tet), then relocation of the new vertex and flips of its star.
 // Rounds stop when one removes no sliver or after `rounds`.
 #include <cstddef>
 
@@ -28,10 +34,10 @@ struct SliverStats {
   std::size_t flips = 0, moves = 0, insertions = 0;
 };
 
-/// Number of live tets of s below angleDeg (metric dihedral).
-std::size_t countSlivers(const SolidTetMesh& s, const VertexMetrics& vm, double angleDeg);
+/// Number of live slivers of s (VertexMetrics::isSliver).
+std::size_t countSlivers(const SolidTetMesh& s, const VertexMetrics& vm, double angleDeg, double euclideanDeg);
 
-SliverStats removeSlivers(SolidTetMesh& s, const ControlSpace3d& cs, VertexMetrics& vm, double angleDeg, int rounds,
-                          bool insertion);
+SliverStats removeSlivers(SolidTetMesh& s, const ControlSpace3d& cs, VertexMetrics& vm, double angleDeg,
+                          double euclideanDeg, int rounds, bool insertion);
 
 }  // namespace aniso::improve3d

@@ -1,6 +1,7 @@
 #include "mesher/volume/improve/VertexMetrics.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 
 #include "mesher/metric/MeanRatio.h"
 #include "mesher/volume/TetQuality.h"
@@ -42,17 +43,31 @@ void VertexMetrics::refresh(del3d::VertexId v) { setMetric(v.index, cs_.getMetri
 double VertexMetrics::score(const std::uint32_t* v) const {
   const Vec3 p[4] = {mesh_.point(del3d::VertexId(v[0])), mesh_.point(del3d::VertexId(v[1])),
                      mesh_.point(del3d::VertexId(v[2])), mesh_.point(del3d::VertexId(v[3]))};
-  if (isotropic(v)) return meanRatioCubed(p[0], p[1], p[2], p[3]);
+  const double e = meanRatioCubed(p[0], p[1], p[2], p[3]);
+  if (isotropic(v)) return e;
   const Mat3 m = tetMetric(v);
-  return meanRatioCubed(m * p[0], m * p[1], m * p[2], m * p[3]);
+  const double metric = meanRatioCubed(m * p[0], m * p[1], m * p[2], m * p[3]);
+  return guardEuclidean_ ? std::min(metric, e) : metric;
 }
 
 double VertexMetrics::etaWith(const std::uint32_t* v, std::uint32_t moved, const Vec3& p) const {
   Vec3 q[4];
   for (int i = 0; i < 4; ++i) q[i] = v[i] == moved ? p : mesh_.point(del3d::VertexId(v[i]));
-  if (isotropic(v)) return meanRatio(q[0], q[1], q[2], q[3]);
+  const double e = meanRatio(q[0], q[1], q[2], q[3]);
+  if (isotropic(v)) return e;
   const Mat3 m = tetMetric(v);
-  return meanRatio(Vec3(m * q[0]), Vec3(m * q[1]), Vec3(m * q[2]), Vec3(m * q[3]));
+  const double metric = meanRatio(Vec3(m * q[0]), Vec3(m * q[1]), Vec3(m * q[2]), Vec3(m * q[3]));
+  return guardEuclidean_ ? std::min(metric, e) : metric;
+}
+
+bool VertexMetrics::isSliver(del3d::TetId t, double metricAngle, double euclideanAngle) const {
+  const std::uint32_t* v = mesh_.tetVertices(t);
+  const Vec3 p[4] = {mesh_.point(del3d::VertexId(v[0])), mesh_.point(del3d::VertexId(v[1])),
+                     mesh_.point(del3d::VertexId(v[2])), mesh_.point(del3d::VertexId(v[3]))};
+  const DihedralRange r = tetDihedralRange(p[0], p[1], p[2], p[3]);
+  if (r.minDeg < euclideanAngle || r.maxDeg > 180 - euclideanAngle) return true;
+  if (isotropic(v)) return r.minDeg < metricAngle;
+  return metricMinDihedral(t) < metricAngle;
 }
 
 double VertexMetrics::metricMinDihedral(del3d::TetId t) const {

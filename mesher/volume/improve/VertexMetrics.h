@@ -6,6 +6,9 @@
 // vertices (flips, relocations) costs no control-space call. When the four tensors are
 // isotropic (s·I, up to kIsotropicTolerance) the mean is too and η_M = η: no transform.
 // score() is the signed η_M³: the same order as η_M without the cube root (for minima).
+// With setGuardEuclidean(true) (sliver removal) score() and etaWith() return the smaller of
+// the metric and the Euclidean value, so a tet that is fine in the metric but flat in space
+// (what the referee measures) counts as poor.
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -42,6 +45,10 @@ class VertexMetrics {
   double etaWith(const std::uint32_t* v, std::uint32_t moved, const Vec3& p) const;
   /// Smallest dihedral angle (degrees) of the tet mapped by its metric.
   double metricMinDihedral(del3d::TetId t) const;
+  /// A sliver: metric smallest dihedral below metricAngle, or a Euclidean dihedral angle
+  /// below euclideanAngle or above 180° − euclideanAngle (degrees).
+  bool isSliver(del3d::TetId t, double metricAngle, double euclideanAngle) const;
+  void setGuardEuclidean(bool on) { guardEuclidean_ = on; }
 
  private:
   const del3d::TetMesh& mesh_;
@@ -51,6 +58,7 @@ class VertexMetrics {
 
   std::vector<Mat3> m_;
   std::vector<std::uint8_t> iso_;
+  bool guardEuclidean_ = false;
 };
 
 }  // namespace aniso::improve3d
