@@ -20,7 +20,7 @@
 namespace aniso::quad {
 
 struct MergeOptions {
-  double minQuality = 0.2;  ///< least metric scaled Jacobian of a merged quad
+  double minQuality = 0.1;  ///< least scaled Jacobian (QuadShape.h elementQuality) of a merged quad
   int maxDeferrals = 2;
   FrontWeights weights;
 };

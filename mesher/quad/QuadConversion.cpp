@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <string>
+
+#include "mesher/core/Log.h"
 
 namespace aniso::quad {
 namespace {
@@ -22,16 +25,19 @@ void measure(const QuadMesh2d& mesh, VertexMetrics& metrics, QuadStats& st) {
 
 }  // namespace
 
-QuadStats convertToQuads(FaceMesh& fm, const ControlSpace2d& cs, const QuadOptions& o) {
+QuadStats convertToQuads(FaceMesh& fm, const ControlSpace2d& cs, const ParametricSurface* surface,
+                         const QuadOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   QuadStats st;
   QuadMesh2d mesh = QuadMesh2d::fromFaceMesh(fm);
-  VertexMetrics metrics(mesh, cs);
+  VertexMetrics metrics(mesh, cs, surface);
   st.merge = mergeFront(mesh, metrics, o.merge);
   auto pairUp = [&] {
     const TransportStats t = pairTriangles(mesh, metrics, o.transport);
     st.paired += t.paired;
     st.moves += t.moves;
+    st.failedCuts += t.failedCuts;
+    st.failedPairs += t.failedPairs;
   };
   pairUp();
   for (int pass = 0; pass < o.improvementPasses; ++pass) {
@@ -46,6 +52,13 @@ QuadStats convertToQuads(FaceMesh& fm, const ControlSpace2d& cs, const QuadOptio
   measure(mesh, metrics, st);
   mesh.toFaceMesh(fm);
   st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  logDebug("quad conversion: merged " + std::to_string(st.merge.quads) + " (odd splits " +
+           std::to_string(st.merge.oddSplits) + ", edge splits " + std::to_string(st.merge.edgeSplits) +
+           ", forced " + std::to_string(st.merge.forcedOdd) + "), left " + std::to_string(st.merge.triangles) +
+           ", paired " + std::to_string(st.paired) + " in " + std::to_string(st.moves) + " moves (failed: " + std::to_string(st.failedCuts) + " cuts, " +
+           std::to_string(st.failedPairs) + " pairs), swaps " +
+           std::to_string(st.swaps) + ", doublets " + std::to_string(st.doublets) + " -> " +
+           std::to_string(st.quads) + " quads, " + std::to_string(st.triangles) + " triangles");
   return st;
 }
 

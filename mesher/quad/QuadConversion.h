@@ -32,7 +32,7 @@ struct QuadOptions {
 
 struct QuadStats {
   MergeStats merge;
-  int paired = 0, moves = 0, doublets = 0, swaps = 0;
+  int paired = 0, moves = 0, failedCuts = 0, failedPairs = 0, doublets = 0, swaps = 0;
   long long smoothed = 0;
   int quads = 0, triangles = 0;
   QualityStats mu;            ///< μ_M: metric length of every edge of the result (eq. 2.49)
@@ -43,6 +43,8 @@ struct QuadStats {
 /// Converts fm (triangles, as the face mesher left them) in place: fm.quads and the
 /// triangles left, new inner vertices appended. Deterministic. Throws MeshingError only for
 /// a structurally broken input mesh.
-QuadStats convertToQuads(FaceMesh& fm, const ControlSpace2d& cs, const QuadOptions& options = {});
+/// With `surface` (the face's), quads are also judged by their 3D scaled Jacobian.
+QuadStats convertToQuads(FaceMesh& fm, const ControlSpace2d& cs, const ParametricSurface* surface = nullptr,
+                         const QuadOptions& options = {});
 
 }  // namespace aniso::quad

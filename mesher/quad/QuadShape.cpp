@@ -3,13 +3,18 @@
 #include <cmath>
 
 #include "mesher/predicates/Predicates.h"
+#include "mesher/quad/QuadQuality.h"
 #include "mesher/surface/improve/VertexMetricCache.h"
 
 namespace aniso::quad {
 
-VertexMetrics::VertexMetrics(const QuadMesh2d& mesh, const ControlSpace2d& cs) : mesh_(mesh), cs_(cs) {
+VertexMetrics::VertexMetrics(const QuadMesh2d& mesh, const ControlSpace2d& cs, const ParametricSurface* surface)
+    : mesh_(mesh), cs_(cs), surface_(surface) {
   const int n = mesh.numVertices();
   s_.assign(n, Mat2::Identity());
+  xyz_.assign(n, Vec3::Zero());
+  if (surface_)
+    for (int v = 0; v < n; ++v) xyz_[v] = surface_->point(mesh.uv[v]);
   known_.assign(n, 0);
   // The fallback for unusable metrics: identity scaled to the mean √det S of the usable
   // vertices (evaluated here for all vertices, in index order, so it is deterministic).
@@ -34,8 +39,10 @@ VertexMetrics::VertexMetrics(const QuadMesh2d& mesh, const ControlSpace2d& cs) :
 void VertexMetrics::evaluate(int v) {
   if (static_cast<int>(s_.size()) <= v) {
     s_.resize(v + 1, fallback_);
+    xyz_.resize(v + 1, Vec3::Zero());
     known_.resize(v + 1, 0);
   }
+  if (surface_) xyz_[v] = surface_->point(mesh_.uv[v]);
   Mat2 s;
   s_[v] = improve::symmetricTransform(cs_.getMetric(mesh_.uv[v]).transformation(), s) ? s : fallback_;
   known_[v] = 1;
@@ -44,6 +51,12 @@ void VertexMetrics::evaluate(int v) {
 const Mat2& VertexMetrics::at(int v) {
   if (v >= static_cast<int>(known_.size()) || !known_[v]) evaluate(v);
   return s_[v];
+}
+
+const Vec3* VertexMetrics::point(int v) {
+  if (!surface_) return nullptr;
+  at(v);
+  return &xyz_[v];
 }
 
 Mat2 VertexMetrics::element(const Corners& c) {
@@ -101,7 +114,15 @@ double elementQuality(const QuadMesh2d& mesh, VertexMetrics& metrics, const Corn
   if (!convexCCW(mesh, c)) return -1.0;
   const Mat2 s = metrics.element(c);
   if (c[3] == kNone) return triangleShape(s, mesh.uv[c[0]], mesh.uv[c[1]], mesh.uv[c[2]]);
-  return scaledJacobian(s, {mesh.uv[c[0]], mesh.uv[c[1]], mesh.uv[c[2]], mesh.uv[c[3]]});
+  const double metric = scaledJacobian(s, {mesh.uv[c[0]], mesh.uv[c[1]], mesh.uv[c[2]], mesh.uv[c[3]]});
+  if (!metrics.point(c[0])) return metric;
+  // Pole corners (two corners on one global node) make a triangle in 3D: judged in metric only.
+  for (int k = 0; k < 4; ++k)
+    if (mesh.node[c[k]] >= 0 && mesh.node[c[k]] == mesh.node[c[(k + 1) % 4]]) return metric;
+  // The scaled Jacobian measures angles only, blind to edge length ratios, so the 3D value
+  // is the right one for anisotropic quads too; the metric, averaged over the corners,
+  // misjudges elements where the parameterization varies fast (fillets, near poles).
+  return scaledJacobian3d(*metrics.point(c[0]), *metrics.point(c[1]), *metrics.point(c[2]), *metrics.point(c[3]));
 }
 
 std::vector<std::string> validateGeometry(const QuadMesh2d& mesh) {

@@ -14,17 +14,26 @@
 #include <vector>
 
 #include "mesher/control/ControlSpace2d.h"
+#include "mesher/geometry/ParametricSurface.h"
 #include "mesher/quad/QuadMesh2d.h"
 
 namespace aniso::quad {
 
 /// S for every vertex of a QuadMesh2d, evaluated on demand (vertices added by the
 /// operators get theirs when first asked). A vertex whose M is not finite or singular
-/// takes the identity scaled to the mean size of the usable ones.
+/// takes the identity scaled to the mean size of the usable ones. With a surface, also the
+/// vertex's 3D point, so that quads are judged in 3D too (near poles and on strongly
+/// curved parameterizations the metric, linear around each vertex, misjudges them).
 class VertexMetrics {
  public:
-  VertexMetrics(const QuadMesh2d& mesh, const ControlSpace2d& cs);
+  VertexMetrics(const QuadMesh2d& mesh, const ControlSpace2d& cs, const ParametricSurface* surface = nullptr);
   const Mat2& at(int v);
+  /// Re-evaluates v's 3D point after v moved (its metric stays cached for the pass).
+  void refreshPoint(int v) {
+    if (surface_ && v < static_cast<int>(xyz_.size())) xyz_[v] = surface_->point(mesh_.uv[v]);
+  }
+  /// The 3D point of v (nullptr without a surface).
+  const Vec3* point(int v);
   /// Forget v's metric (the vertex moved or its index is reused); re-evaluated when asked.
   void invalidate(int v) {
     if (v < static_cast<int>(known_.size())) known_[v] = 0;
@@ -42,7 +51,9 @@ class VertexMetrics {
   void evaluate(int v);
   const QuadMesh2d& mesh_;
   const ControlSpace2d& cs_;
+  const ParametricSurface* surface_;
   std::vector<Mat2> s_;
+  std::vector<Vec3> xyz_;
   std::vector<std::uint8_t> known_;
   Mat2 fallback_ = Mat2::Identity();
 };
@@ -53,8 +64,9 @@ double triangleShape(const Mat2& s, const Vec2& a, const Vec2& b, const Vec2& c)
 /// Exact: every corner of the element (3 or 4 corners) turns strictly counter-clockwise.
 bool convexCCW(const QuadMesh2d& mesh, const Corners& c);
 
-/// The quality of a would-be element in metric: scaledJacobian for a quad, triangleShape
-/// for a triangle; −1 when convexCCW fails.
+/// The quality of a would-be element: for a quad the scaled Jacobian, in 3D when there is a
+/// surface (QuadQuality.h; pole quads, triangles in 3D, in metric), else in metric;
+/// triangleShape in metric for a triangle; −1 when convexCCW fails.
 double elementQuality(const QuadMesh2d& mesh, VertexMetrics& metrics, const Corners& c);
 
 /// Every live element convexCCW; one message per offending element.

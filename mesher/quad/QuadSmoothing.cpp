@@ -90,6 +90,7 @@ SmoothStats smoothQuadMesh(QuadMesh2d& mesh, VertexMetrics& metrics, const Smoot
       bool accepted = false;
       for (double step : {1.0, 0.5}) {
         mesh.uv[v] = q + step * (t - q);
+        metrics.refreshPoint(v);
         const StarQuality after = measure(mesh, metrics, star);
         const bool better = before.worst < o.qualityFloor ? after.worst > before.worst
                                                           : after.worst >= o.qualityFloor && after.mean >= before.mean;
@@ -103,6 +104,7 @@ SmoothStats smoothQuadMesh(QuadMesh2d& mesh, VertexMetrics& metrics, const Smoot
         moved.push_back(v);
       } else {
         mesh.uv[v] = q;
+        metrics.refreshPoint(v);
         ++st.rejected;
       }
     }

@@ -4,11 +4,14 @@
 #include <array>
 #include <deque>
 
+#include "mesher/quad/PairSplit.h"
+
 namespace aniso::quad {
 namespace {
 
 /// Shortest paths of elements (by adjacency) from triangle t to the nearest other live
-/// triangles (up to maxTargets of them, nearest first), both ends included.
+/// triangles (up to maxTargets of them, nearest first), both ends included: the partners,
+/// nearest first.
 std::vector<std::vector<int>> pathsToTriangles(const QuadMesh2d& mesh, int t, int maxLength, int maxTargets) {
   std::vector<int> from(mesh.numElements(), -2), depth(mesh.numElements(), 0);
   std::deque<int> queue{t};
@@ -48,44 +51,82 @@ class Transport {
   Transport(QuadMesh2d& mesh, VertexMetrics& metrics, const TransportOptions& o)
       : mesh_(mesh), metrics_(metrics), o_(o) {}
 
-  /// Moves triangle `tri` across quad q so that it ends next to `next`. Returns the moved
-  /// triangle's id, or kNone when no legal cut exists (nothing changed).
-  int cross(int tri, int q, int next) {
-    const int k = sharedEdge(mesh_, tri, q);
-    if (k == kNone) return kNone;
-    const Corners& c = mesh_.corners[tri];
-    const int u = c[k], v = c[(k + 1) % 3], t3 = c[(k + 2) % 3];
-    const int j = mesh_.edgeIndex(q, v, u);
-    if (j == kNone) return kNone;
-    const int q2 = mesh_.corners[q][(j + 2) % 4], q3 = mesh_.corners[q][(j + 3) % 4];
-    if (t3 == q2 || t3 == q3) return kNone;
-    const std::array<int, 5> p{u, q2, q3, v, t3};
-    const int m = sharedEdge(mesh_, q, next);
-    if (m == kNone) return kNone;
-    const int s = mesh_.corners[q][m], t = mesh_.corners[q][(m + 1) % 4];
-    int i = kNone;
-    for (int x = 0; x < 5; ++x)
-      if (p[x] == s && p[(x + 1) % 5] == t) i = x;
-    if (i == kNone) return kNone;
-    auto at = [&](int x) { return p[((x % 5) + 5) % 5]; };
-    const std::array<std::pair<Corners, Corners>, 2> cuts{
-        std::pair<Corners, Corners>{{at(i - 1), at(i), at(i + 1), kNone}, {at(i + 1), at(i + 2), at(i + 3), at(i + 4)}},
-        std::pair<Corners, Corners>{{at(i), at(i + 1), at(i + 2), kNone}, {at(i + 2), at(i + 3), at(i + 4), at(i)}}};
-    double best = o_.minQuality;
-    int choice = kNone;
-    for (int x = 0; x < 2; ++x) {
-      const double qq = elementQuality(mesh_, metrics_, cuts[x].second);
-      if (qq >= best && elementQuality(mesh_, metrics_, cuts[x].first) > 0) {
-        best = qq;
-        choice = x;
+  Vec2 centroid(int e) const {
+    const int n = mesh_.sides(e);
+    Vec2 c(0, 0);
+    for (int k = 0; k < n; ++k) c += mesh_.uv[mesh_.corners[e][k]];
+    return c / n;
+  }
+
+  /// Element distances (breadth-first, through edges) from `target`, up to maxPathLength.
+  void distancesFrom(int target) {
+    dist_.assign(mesh_.numElements(), kFar);
+    std::deque<int> queue{target};
+    dist_[target] = 0;
+    while (!queue.empty()) {
+      const int e = queue.front();
+      queue.pop_front();
+      if (dist_[e] >= o_.maxPathLength) continue;
+      for (int k = 0; k < mesh_.sides(e); ++k) {
+        const int f = mesh_.adj[e][k];
+        if (f == kNone || dist_[f] != kFar) continue;
+        dist_[f] = dist_[e] + 1;
+        queue.push_back(f);
       }
     }
-    if (choice == kNone) return kNone;
-    const std::array<int, 2> removed{tri, q};
-    const std::array<Corners, 2> added{cuts[choice].first, cuts[choice].second};
-    const std::array<Corners, 2> old{mesh_.corners[tri], mesh_.corners[q]};
+  }
+  int distance(int e) const { return e == kNone || e >= static_cast<int>(dist_.size()) ? kFar : dist_[e]; }
+
+  /// One step of the walk of triangle `tri` towards `target`: over every quad q next to
+  /// tri and every cut of the pentagon tri ∪ q into an ear triangle and a quad (five ears,
+  /// the one giving back tri excluded), the legal cut whose triangle is nearest to the
+  /// target — by the element distance of its outer neighbours, then by the distance of
+  /// its centroid to the target's — if nearer than tri. Returns the moved triangle's id,
+  /// or kNone (nothing changed).
+  int step(int tri, int target, const Vec2& goal) {
+    int bestHops = kFar;
+    for (int k = 0; k < 3; ++k) bestHops = std::min(bestHops, distance(mesh_.adj[tri][k]));
+    double bestDistance = (centroid(tri) - goal).squaredNorm();
+    int bestQuad = kNone;
+    std::pair<Corners, Corners> best;
+    for (int k = 0; k < 3; ++k) {
+      const int q = mesh_.adj[tri][k];
+      if (q == kNone || !mesh_.isQuad(q)) continue;
+      const Corners& c = mesh_.corners[tri];
+      const int u = c[k], v = c[(k + 1) % 3], t3 = c[(k + 2) % 3];
+      const int j = mesh_.edgeIndex(q, v, u);
+      if (j == kNone) continue;
+      const int q2 = mesh_.corners[q][(j + 2) % 4], q3 = mesh_.corners[q][(j + 3) % 4];
+      if (t3 == q2 || t3 == q3) continue;
+      const std::array<int, 5> p{u, q2, q3, v, t3};
+      // The element outside each pentagon edge (p[x], p[x+1]).
+      const std::array<int, 5> outside{mesh_.adj[q][(j + 1) % 4], mesh_.adj[q][(j + 2) % 4], mesh_.adj[q][(j + 3) % 4],
+                                       mesh_.adj[tri][(k + 1) % 3], mesh_.adj[tri][(k + 2) % 3]};
+      auto at = [&](int x) { return p[((x % 5) + 5) % 5]; };
+      for (int i = 0; i < 4; ++i) {  // ear at p[4] = t3 would be tri itself
+        const int hops = std::min(distance(outside[(i + 4) % 5]), distance(outside[i]));
+        const Corners ear{at(i - 1), at(i), at(i + 1), kNone};
+        const Corners quad{at(i + 1), at(i + 2), at(i + 3), at(i + 4)};
+        const Vec2 mid = (mesh_.uv[ear[0]] + mesh_.uv[ear[1]] + mesh_.uv[ear[2]]) / 3.0;
+        const double d = (mid - goal).squaredNorm();
+        if (hops > bestHops || (hops == bestHops && d >= bestDistance)) continue;
+        if (elementQuality(mesh_, metrics_, ear) <= 0 || elementQuality(mesh_, metrics_, quad) < o_.minQuality) continue;
+        bestHops = hops;
+        bestDistance = d;
+        bestQuad = q;
+        best = {ear, quad};
+      }
+    }
+    if (bestQuad == kNone) return kNone;
+    const std::array<int, 2> removed{tri, bestQuad};
+    const std::array<Corners, 2> added{best.first, best.second};
+    const std::array<Corners, 2> old{mesh_.corners[tri], mesh_.corners[bestQuad]};
     const std::vector<int> ids = mesh_.replacePatch(removed, added);
-    undo_.push_back({ids, {old[0], old[1]}});
+    undo_.push_back({ids, {old[0], old[1]}, {tri, bestQuad}});
+    // The new quad keeps the old quad's distance (it covers most of it).
+    dist_.resize(mesh_.numElements(), kFar);
+    dist_[ids[1]] = distance(bestQuad);
+    (void)target;
     return ids[0];
   }
 
@@ -106,27 +147,41 @@ class Transport {
     return true;
   }
 
-  /// Moves t along path and merges it with the path's last triangle. On failure every move
-  /// is undone (the mesh is as before) and t is set to the restored triangle's new id.
-  bool follow(int& t, const std::vector<int>& path) {
+  /// Walks t towards `target` (step() until they share an edge, at most maxPathLength
+  /// steps) and merges the two. On failure every move is undone (the mesh is as before)
+  /// and t is set to the restored triangle's new id.
+  bool follow(int& t, int target) {
     undo_.clear();
+    const Vec2 goal = centroid(target);
+    distancesFrom(target);
     int cur = t;
-    for (std::size_t i = 1; i + 1 < path.size(); ++i) {
-      cur = cross(cur, path[i], path[i + 1]);
-      if (cur == kNone) break;
-    }
-    if (cur != kNone && pair(cur, path.back())) {
+    for (int steps = 0; cur != kNone && sharedEdge(mesh_, cur, target) == kNone; ++steps)
+      cur = steps < 4 * o_.maxPathLength ? step(cur, target, goal) : kNone;
+    if (cur != kNone && (pair(cur, target) || splitPair(cur, target))) {
       stats_.moves += static_cast<int>(undo_.size());
       return true;
     }
+    ++(cur == kNone ? stats_.failedCuts : stats_.failedPairs);
     for (std::size_t i = undo_.size(); i-- > 0;) {
-      // Move i removed (the triangle = move i−1's first new element, a quad): restoring it
-      // gives that triangle a new id, which move i−1's undo must remove.
+      // Restoring what move i removed gives those elements new ids; earlier moves' undo
+      // entries (and t) that name the removed ids must name the new ones.
       const std::vector<int> ids = mesh_.replacePatch(undo_[i].ids, undo_[i].corners);
-      if (i > 0) undo_[i - 1].ids[0] = ids[0];
-      else t = ids[0];
+      for (std::size_t k = 0; k < ids.size(); ++k) {
+        for (std::size_t j = 0; j < i; ++j)
+          for (int& e : undo_[j].ids)
+            if (e == undo_[i].removed[k]) e = ids[k];
+        if (t == undo_[i].removed[k]) t = ids[k];
+      }
     }
     return false;
+  }
+
+  /// The last resort for two adjacent triangles (PairSplit.h).
+  bool splitPair(int a, int b) {
+    if (!splitPairIntoQuads(mesh_, metrics_, a, b, o_.minQuality)) return false;
+    ++stats_.paired;
+    ++stats_.splitPairs;
+    return true;
   }
 
   TransportStats run() {
@@ -138,7 +193,7 @@ class Transport {
       for (int t : tris) {
         for (int attempt = 0; attempt < o_.partners && mesh_.isTriangle(t); ++attempt) {
           const auto paths = pathsToTriangles(mesh_, t, o_.maxPathLength, attempt + 1);
-          if (static_cast<int>(paths.size()) <= attempt || follow(t, paths[attempt])) break;
+          if (static_cast<int>(paths.size()) <= attempt || follow(t, paths[attempt].back())) break;
         }
       }
       if (stats_.paired == before) break;
@@ -153,10 +208,13 @@ class Transport {
   const TransportOptions& o_;
   TransportStats stats_;
   struct Undo {
-    std::vector<int> ids;
-    std::vector<Corners> corners;
+    std::vector<int> ids;          ///< the elements the move created
+    std::vector<Corners> corners;  ///< the elements it removed
+    std::vector<int> removed;      ///< their ids
   };
   std::vector<Undo> undo_;
+  static constexpr int kFar = 1 << 30;
+  std::vector<int> dist_;
 };
 
 }  // namespace
