@@ -1,5 +1,7 @@
 #include "mesher/volume/improve/VertexMover.h"
 
+#include <Eigen/Geometry>
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 
@@ -108,6 +110,27 @@ bool VertexMover::smooth(del3d::VertexId v, double lowGradation, double qualityF
   return false;
 }
 
+// The position of v that makes the worst tet of its (loaded) star regular in that tet's
+// metric: the apex over the opposite face, on v's side.
+Vec3 VertexMover::worstApex(del3d::VertexId v) const {
+  del3d::TetId worst;
+  double w = 1e300;
+  for (const del3d::TetId t : star_) {
+    const double e = vm_.score(t);
+    if (e < w) w = e, worst = t;
+  }
+  const std::uint32_t* tv = s_.mesh.tetVertices(worst);
+  const int iv = s_.mesh.localIndex(worst, v);
+  const Mat3 m = vm_.tetMetric(tv);
+  const Vec3 a = m * s_.mesh.point(del3d::VertexId(tv[del3d::kFaceVertex[iv][0]]));
+  const Vec3 b = m * s_.mesh.point(del3d::VertexId(tv[del3d::kFaceVertex[iv][1]]));
+  const Vec3 c = m * s_.mesh.point(del3d::VertexId(tv[del3d::kFaceVertex[iv][2]]));
+  Vec3 n = (b - a).cross(c - a).normalized();
+  if (n.dot(m * s_.mesh.point(v) - a) < 0) n = -n;  // v's side
+  const double len = ((b - a).norm() + (c - b).norm() + (a - c).norm()) / 3;
+  return m.inverse() * ((a + b + c) / 3 + std::sqrt(2.0 / 3.0) * len * n);
+}
+
 bool VertexMover::relocate(del3d::VertexId v) {
   if (s_.isFixed(v) || !s_.mesh.vertexTet(v).valid()) return false;
   loadStar(v);
@@ -125,6 +148,9 @@ bool VertexMover::relocate(del3d::VertexId v) {
     if (w > best) best = w, bestP = p;
   };
   consider(laplaceTarget(v, -1.0));
+  const Vec3 apex = worstApex(v);
+  consider(apex);
+  consider(0.5 * (q + apex));
   for (const double r : kPerturbRadii)
     for (int dx = -1; dx <= 1; ++dx)
       for (int dy = -1; dy <= 1; ++dy)

@@ -12,10 +12,11 @@
 //   Accepted when legal and the star gets better in η_M: a poor star (worst below
 //   qualityFloor) raises its worst, another keeps the worst ≥ qualityFloor and does not
 //   lower its mean; else the half move is tried.
-// relocate(): for slivers: the Laplace target and deterministic perturbations (26
-//   directions of the cube around the vertex, two radii relative to the shortest edge of
-//   the star); the legal candidate with the largest worst η_M of the star wins if it beats
-//   the current worst.
+// relocate(): for slivers: the Laplace target, the position making the star's worst tet
+//   regular (the apex over its opposite face, in its metric) and the midpoint towards it,
+//   and deterministic perturbations (26 directions of the cube around the vertex, two radii
+//   relative to the shortest edge of the star); the legal candidate with the largest worst
+//   η_M of the star wins if it beats the current worst.
 #include <vector>
 
 #include "mesher/volume/SolidTetMesh.h"
@@ -37,6 +38,7 @@ class VertexMover {
   bool legal(del3d::VertexId v, const Vec3& p) const;
   void quality(del3d::VertexId v, const Vec3& p, double& worst, double& mean) const;
   Vec3 laplaceTarget(del3d::VertexId v, double lowGradation) const;
+  Vec3 worstApex(del3d::VertexId v) const;
   void move(del3d::VertexId v, const Vec3& p);
 
   SolidTetMesh& s_;
