@@ -90,9 +90,9 @@ inline SolidTetMesh cubeSolid(int n, std::set<Triple>& boundary, std::uint64_t s
   return s;
 }
 
-/// del3d::validate plus the SolidTetMesh invariants: node sized to the vertices, hull
-/// faces = `boundary` (by node), all constrained, no interior face constrained, hull
-/// vertices fixed.
+/// del3d::validate, validateSolidTetMesh, and the invariants again by hand: node sized to
+/// the vertices, hull faces = `boundary` (by node), all constrained, no interior face
+/// constrained, hull vertices fixed.
 inline std::vector<std::string> checkSolid(const SolidTetMesh& s, const std::set<Triple>& boundary) {
   std::vector<std::string> out = del3d::validate(s.mesh);
   if (s.node.size() != s.mesh.numVertices()) out.push_back("node[] not sized to the vertices");
@@ -112,6 +112,9 @@ inline std::vector<std::string> checkSolid(const SolidTetMesh& s, const std::set
     }
   }
   if (hull != boundary) out.push_back("hull differs from the boundary triangles");
+  const std::vector<std::string> contract =
+      validateSolidTetMesh(s, std::vector<std::array<int, 3>>(boundary.begin(), boundary.end()));
+  out.insert(out.end(), contract.begin(), contract.end());
   return out;
 }
 
