@@ -88,7 +88,10 @@ class Merger {
     const int level = frontLevel(e, k);
     const int apex = mesh_.corners[e][(k + 2) % 3];
     const std::vector<Candidate> cands = candidates(e, k);
-    if (cands.empty()) return;
+    if (cands.empty()) {
+      ++stats_.rejected;
+      return;
+    }
     for (const Candidate& c : cands) {
       const int d = c.quad[1];  // the neighbour's apex
       if ((!onFront_[apex] && !onFront_[d]) || parity_.mergeKeepsParity(mesh_, e, c.other)) {

@@ -21,7 +21,7 @@ namespace aniso::quad {
 
 struct MergeOptions {
   double minQuality = 0.1;  ///< least scaled Jacobian (QuadShape.h elementQuality) of a merged quad
-  int maxDeferrals = 2;
+  int maxDeferrals = 6;
   FrontWeights weights;
 };
 
@@ -31,6 +31,7 @@ struct MergeStats {
   int edgeSplits = 0;  ///< odd-cycle repairs by splitting the shared edge (apex on the front)
   int forcedOdd = 0;  ///< merges that left an odd region component
   int deferred = 0;
+  int rejected = 0;   ///< front edges whose triangle had no legal merge then
   int triangles = 0;  ///< live triangles left
 };
 

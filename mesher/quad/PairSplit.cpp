@@ -1,5 +1,6 @@
 #include "mesher/quad/PairSplit.h"
 
+#include <algorithm>
 #include <array>
 
 namespace aniso::quad {
@@ -16,9 +17,19 @@ bool splitPairIntoQuads(QuadMesh2d& mesh, VertexMetrics& metrics, int a, int b, 
   if (i == kNone) return false;
   const std::array<int, 4> p{u, mesh.corners[b][(i + 2) % 3], v, x};
   const Vec2 centre = 0.5 * (mesh.uv[u] + mesh.uv[v]);
-  for (double lambda : {0.5, 0.35, 0.65}) {
+  // Metric lengths of the rays from the centre to the corners (star-shaped: inside).
+  const Mat2 s = 0.5 * (metrics.at(u) + metrics.at(v));
+  std::array<double, 4> len{};
+  double shortest = 1e300;
+  for (int j = 0; j < 4; ++j) {
+    len[j] = (s * (mesh.uv[p[j]] - centre)).norm();
+    shortest = std::min(shortest, len[j]);
+  }
+  if (!(shortest > 0)) return false;
+  for (double lambda : {0.5, 0.35, 0.7}) {
     std::array<int, 4> g{};
-    for (int j = 0; j < 4; ++j) g[j] = mesh.addVertex(mesh.uv[p[j]] + lambda * (centre - mesh.uv[p[j]]));
+    for (int j = 0; j < 4; ++j)
+      g[j] = mesh.addVertex(centre + (lambda * shortest / len[j]) * (mesh.uv[p[j]] - centre));
     std::array<Corners, 5> quads{Corners{g[0], g[1], g[2], g[3]}};
     for (int j = 0; j < 4; ++j) quads[j + 1] = {p[j], p[(j + 1) % 4], g[(j + 1) % 4], g[j]};
     bool legal = true;

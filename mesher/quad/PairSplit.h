@@ -2,9 +2,10 @@
 // The last resort for two adjacent triangles that cannot be merged into a good quad (the
 // union is not convex, or its scaled Jacobian is too low): their union, a quadrilateral
 // region P0..P3 (star-shaped from the midpoint C of the shared edge), is split into five
-// quads — an inner quad G0..G3 with G_i = P_i + λ (C − P_i) and the four quads
+// quads — an inner quad G0..G3, G_i on the ray from C to P_i at the metric distance
+// λ min_j |C P_j| (a kite even when the region has a reflex corner), and the four quads
 // (P_i, P_i+1, G_i+1, G_i) around it. Only new inner vertices are added: the region's
-// outline is unchanged, so nothing outside changes. λ = 0.5, 0.35, 0.65 are tried; the first
+// outline is unchanged, so nothing outside changes. λ = 0.5, 0.35, 0.7 are tried; the first
 // whose five quads are strictly convex, counter-clockwise and of scaled Jacobian ≥
 // minQuality (QuadShape.h elementQuality) is taken, else nothing changes.
 #include "mesher/quad/QuadShape.h"

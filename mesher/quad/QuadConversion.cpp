@@ -54,7 +54,7 @@ QuadStats convertToQuads(FaceMesh& fm, const ControlSpace2d& cs, const Parametri
   st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   logDebug("quad conversion: merged " + std::to_string(st.merge.quads) + " (odd splits " +
            std::to_string(st.merge.oddSplits) + ", edge splits " + std::to_string(st.merge.edgeSplits) +
-           ", forced " + std::to_string(st.merge.forcedOdd) + "), left " + std::to_string(st.merge.triangles) +
+           ", forced " + std::to_string(st.merge.forcedOdd) + ", rejected " + std::to_string(st.merge.rejected) + "), left " + std::to_string(st.merge.triangles) +
            ", paired " + std::to_string(st.paired) + " in " + std::to_string(st.moves) + " moves (failed: " + std::to_string(st.failedCuts) + " cuts, " +
            std::to_string(st.failedPairs) + " pairs), swaps " +
            std::to_string(st.swaps) + ", doublets " + std::to_string(st.doublets) + " -> " +

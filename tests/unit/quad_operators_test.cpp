@@ -5,6 +5,7 @@
 
 #include "mesher/quad/MergeConversion.h"
 #include "mesher/quad/OddSplit.h"
+#include "mesher/quad/PairSplit.h"
 #include "mesher/quad/QuadSmoothing.h"
 #include "mesher/quad/QuadTopology.h"
 #include "mesher/quad/RegionParity.h"
@@ -135,6 +136,26 @@ TEST(QuadSmoothing, ImprovesWorstAndStaysValid) {
   quadtest::expectValid(m, snap);
   EXPECT_GT(st.moved, 0);
   EXPECT_GE(worst(), before);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(QuadPairSplit, TwoTrianglesBecomeFiveQuads) {
+  // A non-convex union (reflex at vertex 1): merging would give an invalid quad.
+  aniso::FaceMesh fm;
+  fm.uv = {aniso::Vec2(0, 0), aniso::Vec2(1, 0.2), aniso::Vec2(2, 0), aniso::Vec2(1, 1)};
+  fm.node = {0, 1, 2, 3};
+  fm.triangles = {{0, 1, 3}, {1, 2, 3}};
+  aniso::quad::QuadMesh2d m = aniso::quad::QuadMesh2d::fromFaceMesh(fm);
+  const auto snap = quadtest::snapshot(m);
+  const auto cs = facetest::isotropicSpace(quadtest::Box2Of({facetest::rectangle(0, 0, 2, 1)}), 1.0);
+  aniso::quad::VertexMetrics metrics(m, *cs);
+  ASSERT_TRUE(aniso::quad::splitPairIntoQuads(m, metrics, 0, 1, 0.1));
+  quadtest::expectValid(m, snap);
+  EXPECT_EQ(quadtest::count(m, 4), 5);
+  EXPECT_EQ(quadtest::count(m, 3), 0);
 }
 
 }  // namespace
