@@ -50,8 +50,9 @@ struct OutputMesh {
 /// The physical-group name of every solid: its part name (or "SOLID<n>" without one),
 /// made unique when parts repeat ("nut", "nut_2", "nut_3"). With `abaqus`, names are
 /// first made valid Abaqus/CalculiX identifiers (letters, digits and '_', starting with a
-/// letter; other characters become '_') and never collide with the sets the INP writer
-/// defines itself (NALL, EALL, FACE<n>, S_FACE<n>), compared case-insensitively.
+/// letter, "P_" put before one that does not; other characters become '_'; at most 64
+/// characters before the suffix) and never collide with the sets the INP writer defines
+/// itself (NALL, EALL, FACE<n>, S_FACE<n>), compared case-insensitively as CalculiX does.
 std::vector<std::string> solidGroupNames(const Model& model, bool abaqus = false);
 
 /// Mean ratio of a triangle in 3D (1 equilateral, 0 degenerate), of a tetrahedron
