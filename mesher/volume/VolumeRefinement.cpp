@@ -24,6 +24,8 @@ constexpr int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 /// edgeLengthMax / kEdgePrefilter there are the midpoint metrics queried (gradation γ_M ≤ 4
 /// changes a length by far less than this factor across one element).
 constexpr double kEdgePrefilter = 1.3;
+/// Floor of the predicted count in the vertex budget (small or coarse solids).
+constexpr double kMinBudgetTets = 1e5;
 /// Volume of the unit regular tet, V_M(K_I) of eq. 6.2.
 constexpr double kIdealVolume = 0.11785113019775793;  // 1 / (6√2)
 
@@ -75,6 +77,7 @@ class Refiner {
   std::uint32_t rng_ = 0x9E3779B9u;
   VolumeRefineStats st_;
   std::size_t sinceProgress_ = 0;
+  std::size_t maxVertices_ = 0;
 };
 
 double Refiner::evaluate(TetId t) {
@@ -205,6 +208,11 @@ void Refiner::process(const refine3d::RefineHeap::Entry& e) {
 VolumeRefineStats Refiner::run() {
   st_.initialTets = mesh_.numTets();
   st_.predictedInitial = predictTetCount(s_, cs_);
+  // Guard against a refinement that would not end (e.g. a metric far finer than asked for):
+  // about budgetFactor times the predicted final number of tets, in vertices.
+  const double guard = o_.budgetFactor * std::max(st_.predictedInitial, kMinBudgetTets) +
+                       static_cast<double>(mesh_.numVertices());
+  maxVertices_ = static_cast<std::size_t>(std::min(static_cast<double>(o_.maxVertices), guard));
   s_.node.resize(mesh_.numVertices(), -1);
   for (std::uint32_t k = 0; k < mesh_.tetSlots(); ++k)
     if (mesh_.isAlive(TetId(k))) enqueue(TetId(k));
@@ -224,7 +232,7 @@ VolumeRefineStats Refiner::run() {
     const std::vector<std::uint32_t> order =
         batch.size() > 1 ? del3d::hilbertOrder(centres) : std::vector<std::uint32_t>{0};
     for (const std::uint32_t i : order) {
-      if (mesh_.numVertices() >= o_.maxVertices) {
+      if (mesh_.numVertices() >= maxVertices_) {
         st_.budgetExhausted = true;
         break;
       }

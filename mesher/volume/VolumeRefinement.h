@@ -43,7 +43,9 @@
 // Deterministic: the heap orders by (q, tet slot), no randomness beyond the Inserter's
 // seeded walk.
 // Budget: refinement stops (stats.budgetExhausted) once the solid has maxVertices
-// vertices.
+// vertices, or budgetFactor × max(eq. 6.2 prediction, 10⁵) vertices more than at the start
+// (a unit mesh has about 5.5 tets per vertex, so this is an order of magnitude above the
+// expected count: a guard against a refinement that would not end, not a size control).
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -71,6 +73,7 @@ struct VolumeRefineOptions {
   double postponeFactor = 1.5;      ///< q raised by this factor when K cannot be refined now
   int maxPostpones = 3;
   std::size_t maxVertices = 100'000'000;  ///< vertex budget of the solid
+  double budgetFactor = 2.0;        ///< vertex budget relative to the eq. 6.2 tet count
   std::size_t batchDivisor = 4;     ///< batch = heap size / batchDivisor (see above)
   std::size_t maxBatch = 1 << 16;
   /// Called about every progressInterval insertions (may be empty).

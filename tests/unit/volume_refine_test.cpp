@@ -147,6 +147,17 @@ TEST(VolumeRefine, VertexBudgetStops) {
   EXPECT_TRUE(st.budgetExhausted);
   EXPECT_LE(s.mesh.numVertices(), o.maxVertices);
   EXPECT_TRUE(checkSolid(s, boundary).empty()) << joined(checkSolid(s, boundary));
+  // the guard relative to the prediction of eq. 6.2 (floored at 10^5 tets)
+  SolidTetMesh g = cubeSolid(4, boundary);
+  const std::size_t start = g.mesh.numVertices();
+  VolumeRefineOptions og;
+  og.budgetFactor = 0.004;
+  const CSAnalytic3d fine = uniform(0.02);
+  const double predicted = predictTetCount(g, fine);
+  const VolumeRefineStats sg = refineVolume(g, fine, og);
+  EXPECT_TRUE(sg.budgetExhausted);
+  EXPECT_LE(static_cast<double>(g.mesh.numVertices()), start + 0.004 * std::max(predicted, 1e5) + 1);
+  EXPECT_TRUE(checkSolid(g, boundary).empty()) << joined(checkSolid(g, boundary));
 }
 
 TEST(VolumeRefine, ProgressReportsPredictions) {
