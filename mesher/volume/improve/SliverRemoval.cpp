@@ -25,8 +25,8 @@ class SliverRemover {
       : s_(s), cs_(cs), vm_(vm), angle_(angle), euclidean_(euclidean), insertion_(insertion), flips_(s, vm, 0.0),
         mover_(s, vm), inserter_(s.mesh, 0x51F3A7u) {}
 
-  /// One round; returns the number of slivers it visited that are gone.
-  std::size_t round();
+  /// One round over `slivers` (those still slivers); returns the ones left.
+  std::vector<TetId> round(const std::vector<TetId>& slivers);
   SliverStats stats;
 
  private:
@@ -126,17 +126,14 @@ bool SliverRemover::attack(TetId t) {
   return insertion_ && insertPoint(t);
 }
 
-std::size_t SliverRemover::round() {
-  std::vector<TetId> slivers;
-  for (std::uint32_t k = 0; k < s_.mesh.tetSlots(); ++k)
-    if (isSliver(TetId(k))) slivers.push_back(TetId(k));
-  std::size_t gone = 0;
+std::vector<TetId> SliverRemover::round(const std::vector<TetId>& slivers) {
+  std::vector<TetId> left;
   for (const TetId t : slivers) {
     if (!isSliver(t)) continue;  // removed by an earlier attack (or its slot reused by a good tet)
     attack(t);
-    if (!isSliver(t)) ++gone;
+    if (isSliver(t)) left.push_back(t);
   }
-  return gone;
+  return left;
 }
 
 }  // namespace
@@ -151,9 +148,15 @@ std::size_t countSlivers(const SolidTetMesh& s, const VertexMetrics& vm, double 
 SliverStats removeSlivers(SolidTetMesh& s, const ControlSpace3d& cs, VertexMetrics& vm, double angleDeg,
                           double euclideanDeg, int rounds, bool insertion) {
   SliverRemover r(s, cs, vm, angleDeg, euclideanDeg, insertion);
-  r.stats.before = countSlivers(s, vm, angleDeg, euclideanDeg);
+  std::vector<TetId> slivers;
+  for (std::uint32_t k = 0; k < s.mesh.tetSlots(); ++k)
+    if (s.mesh.isAlive(TetId(k)) && vm.isSliver(TetId(k), angleDeg, euclideanDeg)) slivers.push_back(TetId(k));
+  r.stats.before = slivers.size();
   vm.setGuardEuclidean(true);
-  for (int i = 0; i < rounds && r.round() > 0; ++i) {
+  for (int i = 0; i < rounds && !slivers.empty(); ++i) {
+    std::vector<TetId> left = r.round(slivers);
+    if (left.size() >= slivers.size()) break;
+    slivers = std::move(left);
   }
   vm.setGuardEuclidean(false);
   r.stats.after = countSlivers(s, vm, angleDeg, euclideanDeg);

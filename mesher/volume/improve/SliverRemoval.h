@@ -17,7 +17,8 @@
 //     the sliver, never crossing a constrained face; cancelled when outside the solid or
 //     closer than kSliverInsertDistance, in that metric, to a vertex of its containing
 //     tet), then relocation of the new vertex and flips of its star.
-// Rounds stop when one removes no sliver or after `rounds`.
+// The first round visits every sliver of the mesh, later ones those left by the previous
+// round; rounds stop when one removes no sliver or after `rounds`.
 #include <cstddef>
 
 #include "mesher/control/ControlSpace3d.h"
