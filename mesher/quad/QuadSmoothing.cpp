@@ -93,7 +93,7 @@ SmoothStats smoothQuadMesh(QuadMesh2d& mesh, VertexMetrics& metrics, const Smoot
         metrics.refreshPoint(v);
         const StarQuality after = measure(mesh, metrics, star);
         const bool better = before.worst < o.qualityFloor ? after.worst > before.worst
-                                                          : after.worst >= o.qualityFloor && after.mean >= before.mean;
+                                                          : after.worst >= o.qualityFloor;
         if (after.valid && better) {
           accepted = true;
           break;

@@ -8,7 +8,9 @@
 // Check, then change: the move is accepted when every element around Q stays strictly
 // convex and counter-clockwise (exact) and the elements get better in metric
 // (elementQuality): a poor star (worst below qualityFloor) must raise its worst, another
-// must keep its worst ≥ qualityFloor and not lower its mean; else the half move is tried.
+// must keep its worst ≥ qualityFloor (its mean may drop: measured on the box, mean scaled
+// Jacobian 0.908 with the mean condition of the triangle smoothing, 0.916 without); else
+// the half move is tried.
 // Boundary vertices never move, nor do the vertices of elements touching a pole (two
 // corners on one global node), whose metric the face's parameterization cannot represent.
 #include "mesher/quad/QuadShape.h"
@@ -16,7 +18,7 @@
 namespace aniso::quad {
 
 struct SmoothOptions {
-  int sweeps = 2;
+  int sweeps = 4;
   double qualityFloor = 0.4;
 };
 

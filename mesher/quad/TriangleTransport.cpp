@@ -193,7 +193,10 @@ class Transport {
       for (int t : tris) {
         for (int attempt = 0; attempt < o_.partners && mesh_.isTriangle(t); ++attempt) {
           const auto paths = pathsToTriangles(mesh_, t, o_.maxPathLength, attempt + 1);
-          if (static_cast<int>(paths.size()) <= attempt || follow(t, paths[attempt].back())) break;
+          if (static_cast<int>(paths.size()) <= attempt) break;
+          // t walks to the partner, else the partner walks to t.
+          int partner = paths[attempt].back();
+          if (follow(t, partner) || follow(partner, t)) break;
         }
       }
       if (stats_.paired == before) break;

@@ -1,12 +1,15 @@
 #!/usr/bin/python3
 """Quad meshes side by side with Gmsh's Blossom recombination (issue 7).
-usage: tools/bench/quad_vs_gmsh.py [CLI] [--dir MODELS] [--only a.step,b.brep] [--no-gmsh] [--timeout S]
+usage: tools/bench/quad_vs_gmsh.py [CLI] [--dir MODELS] [--only a.step,b.brep] [--no-gmsh | --gmsh-only]
+                                  [--gmsh-cache FILE.json] [--timeout S]
 For every model of MODELS/MANIFEST.json: `anisomesh mesh --dim 2 --quad --hmax-rel 0.02
 --curvature-ratio 0.26 --anisotropy 1` and Gmsh 4.8 (`-2 -algo front2d`, Mesh.RecombineAll=1,
 Blossom, the same relative size and curvature sizing as shared/tools/gmsh_anchor.py), each
 measured the same way as shared/tools/check_quad.py: quad fraction, scaled Jacobian min/avg
 (3D, per quad the minimum over its corners), open edges, area against the manifest.
-Prints one table row per model, then the means. Needs Debian's python3-gmsh/meshio/numpy."""
+Prints one table row per model, then the means. --gmsh-cache keeps Gmsh's figures per model in
+FILE.json (read when present, written after each Gmsh run): Gmsh's side does not change between
+runs of ours. Needs Debian's python3-gmsh/meshio/numpy."""
 import json, os, subprocess, sys, tempfile
 import numpy as np, meshio
 
@@ -21,6 +24,8 @@ timeout = int(opt("--timeout", "600"))
 man = [m for m in json.load(open(os.path.join(d, "MANIFEST.json"))) if "error" not in m]
 if only: man = [m for m in man if m["file"] in only.split(",")]
 tmp = tempfile.mkdtemp()
+cache_file = opt("--gmsh-cache", "")
+cache = json.load(open(cache_file)) if cache_file and os.path.exists(cache_file) else {}
 
 GMSH = r'''
 import sys, gmsh
@@ -71,9 +76,16 @@ print(f"{'model':<36} {'anisomesh: quad%  SJmin  SJavg  open   area':>40} | {'gm
 ours, theirs = [], []
 for m in man:
     f = os.path.join(d, m["file"])
-    a, wa = run([cli, "mesh", f, "-o", f"{tmp}/a.msh", "--dim", "2", "--quad", "--hmax-rel", "0.02",
-                 "--curvature-ratio", "0.26", "--anisotropy", "1"], f"{tmp}/a.msh", m)
-    g, wg = (None, "skipped") if "--no-gmsh" in args else run(["/usr/bin/python3", "-c", GMSH, f, f"{tmp}/g.msh"], f"{tmp}/g.msh", m)
+    a, wa = (None, "skipped") if "--gmsh-only" in args else run(
+        [cli, "mesh", f, "-o", f"{tmp}/a.msh", "--dim", "2", "--quad", "--hmax-rel", "0.02",
+         "--curvature-ratio", "0.26", "--anisotropy", "1"], f"{tmp}/a.msh", m)
+    if "--no-gmsh" in args: g, wg = None, "skipped"
+    elif m["file"] in cache: g, wg = cache[m["file"]]
+    else:
+        g, wg = run(["/usr/bin/python3", "-c", GMSH, f, f"{tmp}/g.msh"], f"{tmp}/g.msh", m)
+        if cache_file:
+            cache[m["file"]] = [g, wg]
+            json.dump(cache, open(cache_file, "w"))
     if a: ours.append(a)
     if g: theirs.append(g)
     print(f"{m['file']:<36} {cell(a, wa):>40} | {cell(g, wg):>44}", flush=True)
