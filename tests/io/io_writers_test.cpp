@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "io/ElementOrder.h"
@@ -51,6 +52,21 @@ TEST(IoWriters, SolidNamesAreMadeUnique) {
   const auto n = solidGroupNames(namedSolids({"nut", "bolt", "nut", "", "nut_2", "nut"}));
   const std::vector<std::string> want = {"nut", "bolt", "nut_2", "SOLID4", "nut_2_2", "nut_3"};
   EXPECT_EQ(n, want);
+}
+
+TEST(IoWriters, As1AssemblyGetsEighteenDistinctNames) {
+  // the part names of ../shared/models/as1-tu-203.stp in solid order (anisomesh info)
+  const std::vector<std::string> parts = {"nut", "nut", "rod", "bolt", "nut", "bolt", "nut", "bolt", "nut",
+                                          "l-bracket", "plate", "bolt", "nut", "bolt", "nut", "bolt", "nut", "l-bracket"};
+  const auto names = solidGroupNames(namedSolids(parts));
+  EXPECT_EQ(std::set<std::string>(names.begin(), names.end()).size(), 18u);
+  EXPECT_EQ(names[0], "nut");
+  EXPECT_EQ(names[1], "nut_2");
+  EXPECT_EQ(names[16], "nut_7");
+  EXPECT_EQ(names[17], "l-bracket_2");
+  const auto abaqus = solidGroupNames(namedSolids(parts), true);
+  EXPECT_EQ(abaqus[9], "l_bracket");
+  EXPECT_EQ(std::set<std::string>(abaqus.begin(), abaqus.end()).size(), 18u);
 }
 
 TEST(IoWriters, AbaqusNamesAreIdentifiersAvoidingOurSets) {
