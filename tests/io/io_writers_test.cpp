@@ -62,7 +62,7 @@ TEST(IoWriters, As1AssemblyGetsEighteenDistinctNames) {
   EXPECT_EQ(std::set<std::string>(names.begin(), names.end()).size(), 18u);
   EXPECT_EQ(names[0], "nut");
   EXPECT_EQ(names[1], "nut_2");
-  EXPECT_EQ(names[16], "nut_7");
+  EXPECT_EQ(names[16], "nut_8");  // the eighth nut
   EXPECT_EQ(names[17], "l-bracket_2");
   const auto abaqus = solidGroupNames(namedSolids(parts), true);
   EXPECT_EQ(abaqus[9], "l_bracket");
