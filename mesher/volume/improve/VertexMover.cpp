@@ -98,11 +98,11 @@ bool VertexMover::smooth(del3d::VertexId v, double lowGradation, double qualityF
   quality(v, q, w0, m0);
   for (const double step : {1.0, 0.5}) {
     const Vec3 p = q + step * (target - q);
-    if (p == q || !legal(v, p)) continue;
+    if (p == q) continue;
     double w1, m1;
-    quality(v, p, w1, m1);
+    quality(v, p, w1, m1);  // floating point first: most rejected moves need no exact test
     const bool better = w0 < qualityFloor ? w1 > w0 : (w1 >= qualityFloor && m1 >= m0);
-    if (better) {
+    if (better && legal(v, p)) {
       move(v, p);
       return true;
     }
@@ -142,10 +142,9 @@ bool VertexMover::relocate(del3d::VertexId v) {
   for (const std::uint32_t w : nbrs_) shortest = std::min(shortest, (s_.mesh.point(del3d::VertexId(w)) - q).norm());
   Vec3 bestP = q;
   auto consider = [&](const Vec3& p) {
-    if (!legal(v, p)) return;
     double w, m;
     quality(v, p, w, m);
-    if (w > best) best = w, bestP = p;
+    if (w > best && legal(v, p)) best = w, bestP = p;
   };
   consider(laplaceTarget(v, -1.0));
   const Vec3 apex = worstApex(v);
