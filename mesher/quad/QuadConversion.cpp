@@ -26,11 +26,11 @@ void measure(const QuadMesh2d& mesh, VertexMetrics& metrics, QuadStats& st) {
 }  // namespace
 
 QuadStats convertToQuads(FaceMesh& fm, const ControlSpace2d& cs, const ParametricSurface* surface,
-                         const QuadOptions& o) {
+                         std::span<const Vec3> nodes, const QuadOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   QuadStats st;
   QuadMesh2d mesh = QuadMesh2d::fromFaceMesh(fm);
-  VertexMetrics metrics(mesh, cs, surface);
+  VertexMetrics metrics(mesh, cs, surface, nodes);
   st.merge = mergeFront(mesh, metrics, o.merge);
   auto pairUp = [&] {
     const TransportStats t = pairTriangles(mesh, metrics, o.transport);

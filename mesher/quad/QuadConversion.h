@@ -43,8 +43,9 @@ struct QuadStats {
 /// Converts fm (triangles, as the face mesher left them) in place: fm.quads and the
 /// triangles left, new inner vertices appended. Deterministic. Throws MeshingError only for
 /// a structurally broken input mesh.
-/// With `surface` (the face's), quads are also judged by their 3D scaled Jacobian.
+/// With `surface` (the face's), quads are judged by their 3D scaled Jacobian, the boundary
+/// vertices at `nodes[node]` (the SurfaceMesh's nodes, see VertexMetrics).
 QuadStats convertToQuads(FaceMesh& fm, const ControlSpace2d& cs, const ParametricSurface* surface = nullptr,
-                         const QuadOptions& options = {});
+                         std::span<const Vec3> nodes = {}, const QuadOptions& options = {});
 
 }  // namespace aniso::quad

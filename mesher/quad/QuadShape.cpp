@@ -8,13 +8,14 @@
 
 namespace aniso::quad {
 
-VertexMetrics::VertexMetrics(const QuadMesh2d& mesh, const ControlSpace2d& cs, const ParametricSurface* surface)
-    : mesh_(mesh), cs_(cs), surface_(surface) {
+VertexMetrics::VertexMetrics(const QuadMesh2d& mesh, const ControlSpace2d& cs, const ParametricSurface* surface,
+                             std::span<const Vec3> nodes)
+    : mesh_(mesh), cs_(cs), surface_(surface), nodes_(nodes) {
   const int n = mesh.numVertices();
   s_.assign(n, Mat2::Identity());
   xyz_.assign(n, Vec3::Zero());
   if (surface_)
-    for (int v = 0; v < n; ++v) xyz_[v] = surface_->point(mesh.uv[v]);
+    for (int v = 0; v < n; ++v) xyz_[v] = pointOf(v);
   known_.assign(n, 0);
   // The fallback for unusable metrics: identity scaled to the mean √det S of the usable
   // vertices (evaluated here for all vertices, in index order, so it is deterministic).
@@ -42,7 +43,7 @@ void VertexMetrics::evaluate(int v) {
     xyz_.resize(v + 1, Vec3::Zero());
     known_.resize(v + 1, 0);
   }
-  if (surface_) xyz_[v] = surface_->point(mesh_.uv[v]);
+  if (surface_) xyz_[v] = pointOf(v);
   Mat2 s;
   s_[v] = improve::symmetricTransform(cs_.getMetric(mesh_.uv[v]).transformation(), s) ? s : fallback_;
   known_[v] = 1;
@@ -51,6 +52,12 @@ void VertexMetrics::evaluate(int v) {
 const Mat2& VertexMetrics::at(int v) {
   if (v >= static_cast<int>(known_.size()) || !known_[v]) evaluate(v);
   return s_[v];
+}
+
+Vec3 VertexMetrics::pointOf(int v) const {
+  const int g = mesh_.node[v];
+  if (g >= 0 && g < static_cast<int>(nodes_.size())) return nodes_[g];
+  return surface_->point(mesh_.uv[v]);
 }
 
 const Vec3* VertexMetrics::point(int v) {

@@ -11,6 +11,7 @@
 //   convexCCW(mesh, c)    every corner strictly counter-clockwise, by exact orient2d: the
 //                         legality test of every operator that creates an element.
 #include <array>
+#include <span>
 #include <vector>
 
 #include "mesher/control/ControlSpace2d.h"
@@ -26,11 +27,15 @@ namespace aniso::quad {
 /// curved parameterizations the metric, linear around each vertex, misjudges them).
 class VertexMetrics {
  public:
-  VertexMetrics(const QuadMesh2d& mesh, const ControlSpace2d& cs, const ParametricSurface* surface = nullptr);
+  /// `nodes`: the SurfaceMesh's node positions, used for the vertices on the face boundary
+  /// (node ≥ 0) — the edge discretization's points, which the surface at the pcurve's
+  /// (u, v) matches only to the CAD tolerance (enough to flip a flat boundary corner).
+  VertexMetrics(const QuadMesh2d& mesh, const ControlSpace2d& cs, const ParametricSurface* surface = nullptr,
+                std::span<const Vec3> nodes = {});
   const Mat2& at(int v);
   /// Re-evaluates v's 3D point after v moved (its metric stays cached for the pass).
   void refreshPoint(int v) {
-    if (surface_ && v < static_cast<int>(xyz_.size())) xyz_[v] = surface_->point(mesh_.uv[v]);
+    if (surface_ && v < static_cast<int>(xyz_.size())) xyz_[v] = pointOf(v);
   }
   /// The 3D point of v (nullptr without a surface).
   const Vec3* point(int v);
@@ -49,9 +54,11 @@ class VertexMetrics {
 
  private:
   void evaluate(int v);
+  Vec3 pointOf(int v) const;
   const QuadMesh2d& mesh_;
   const ControlSpace2d& cs_;
   const ParametricSurface* surface_;
+  std::span<const Vec3> nodes_;
   std::vector<Mat2> s_;
   std::vector<Vec3> xyz_;
   std::vector<std::uint8_t> known_;

@@ -211,7 +211,7 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
     o.problems = meshes[f].problems;
     if (meshes[f].ok()) {
       FaceMesh& fm = meshes[f].mesh;
-      if (in.options.quad) o.quad = quad::convertToQuads(fm, *cs[f], model.faces[f].surface.get());
+      if (in.options.quad) o.quad = quad::convertToQuads(fm, *cs[f], model.faces[f].surface.get(), r.mesh.nodes);
       const FaceQuality q = faceQuality(fm.uv, fm.triangles, *cs[f]);
       o.quality = {q.eta, in.options.quad ? o.quad.mu : q.mu, q.ek};
     }
