@@ -53,10 +53,12 @@ class Recovery {
       const std::size_t e0 = missingEdges_.size(), f0 = missingFaces_.size();
       for (int round = 0; round < opt_.maxRounds && !(missingEdges_.empty() && missingFaces_.empty()); ++round) {
         const std::size_t before = missingEdges_.size() + missingFaces_.size();
+        const long long points = s.steinerPoints;
         if (phase == 1) cavityRound(s);
         pipeRound(s);
         collectMissing();
-        if (missingEdges_.size() + missingFaces_.size() >= before) break;
+        // Progress: fewer missing entities, or new vicinity points to work with.
+        if (missingEdges_.size() + missingFaces_.size() >= before && s.steinerPoints == points) break;
       }
       s.edgesRecovered[phase] = static_cast<long long>(e0) - static_cast<long long>(missingEdges_.size());
       s.facesRecovered[phase] = static_cast<long long>(f0) - static_cast<long long>(missingFaces_.size());

@@ -22,7 +22,7 @@ namespace aniso {
 
 struct RecoveryOptions {
   int maxChangesPerEntity = 64;  ///< kept flips per entity and round (pipe reduction)
-  int maxRounds = 6;             ///< rounds per phase
+  int maxRounds = 10;            ///< rounds per phase (a round ends the phase when it makes no progress)
   bool interiorPoints = true;    ///< phase 2 (interior Steiner points)
 };
 

@@ -10,6 +10,7 @@
 #include <Eigen/Geometry>
 
 #include "mesher/delaunay3d/EdgeRing.h"
+#include "mesher/delaunay3d/Inserter.h"
 #include "mesher/predicates/Predicates.h"
 #include "mesher/volume/MeshQueries.h"
 #include "mesher/volume/Pipe.h"
@@ -28,6 +29,12 @@ namespace {
 constexpr double kGoodVertexStar = 0.01;
 /// Offsets of the candidate new points from the patch, in units of its mean edge length.
 constexpr double kOffsets[] = {0.1, 0.25, 0.5, 1.0, 0.05};
+/// Margins (in units of the patch's mean edge length) of the kernel points sought.
+constexpr double kKernelMargins[] = {0.05, 0.01, 1e-3, 1e-5, 1e-7};
+/// VICINITY point of a patch no star recovers: this far inside (in mean edge lengths).
+constexpr double kVicinityOffset = 0.3;
+/// Layers of tets a cavity side may take in when it has no star.
+constexpr int kMaxLayers = 3;
 /// Growths of the patch when its two sides meet at a pinched rim.
 constexpr int kMaxGrowth = 2;
 /// retriangulate(): the patch's rim does not separate the two sides; other failures.
@@ -62,6 +69,42 @@ double starShape(const TetMesh& m, const std::vector<Tri>& faces, const double* 
     worst = std::min(worst, vol6(a, b, c, pv) / 6.0 / (l * l * l));
   }
   return worst;
+}
+
+/// A point strictly on the inner side of every face (the kernel of the polyhedron) by
+/// cyclic relaxation (Agmon–Motzkin): from `start`, repeatedly push the point across the
+/// most violated half-space to `margin` inside it. Returns false when the iterations do
+/// not settle (the kernel may be empty or thinner than the margin).
+bool relaxIntoKernel(const TetMesh& m, const std::vector<Tri>& faces, Vec3 start, double margin, Vec3& out) {
+  constexpr int kIterations = 2000;
+  std::vector<Vec3> normal(faces.size());
+  std::vector<double> offset(faces.size());
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const Vec3 a = m.point(faces[f][0]), b = m.point(faces[f][1]), c = m.point(faces[f][2]);
+    Vec3 n = (b - a).cross(c - a);  // points into the polyhedron (faces are oriented so)
+    const double len = n.norm();
+    if (!(len > 0)) return false;
+    normal[f] = n / len;
+    offset[f] = normal[f].dot(a);
+  }
+  Vec3 p = start;
+  for (int it = 0; it < kIterations; ++it) {
+    double worst = margin;
+    std::size_t wf = faces.size();
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      const double d = normal[f].dot(p) - offset[f];
+      if (d < worst) {
+        worst = d;
+        wf = f;
+      }
+    }
+    if (wf == faces.size()) {
+      out = p;
+      return true;
+    }
+    p += (margin - worst) * normal[wf];
+  }
+  return false;
 }
 
 struct Apex {
@@ -102,6 +145,80 @@ Apex chooseApex(const TetMesh& m, const std::vector<Tri>& faces, const std::vect
   }
   if (bestNew.found && bestNewShape > bestVertexShape) return bestNew;
   return bestVertex;
+}
+
+/// Step 3: the boundary faces of the cavity (oriented into it) split by the rim of I into
+/// the outer (+1) and inner (-1) side, with the tet across each face.
+struct Sides {
+  int status = 0;  ///< 0, kFailed or kSidesMixed
+  std::vector<Tri> inner, outer;
+  std::vector<TetId> innerNext, outerNext;  ///< tet across each face (for growing C)
+};
+
+Sides splitSides(const TetMesh& m, const std::vector<TetId>& cavity, const std::unordered_set<std::uint32_t>& inCavity,
+                 const std::map<std::uint64_t, int>& patchEdgeUses, const std::map<std::uint64_t, int>& rimTriangle,
+                 const std::vector<Tri>& tris) {
+  Sides out;
+  std::vector<Tri> faces;
+  std::vector<TetId> next;
+  for (const TetId t : cavity)
+    for (int i = 0; i < 4; ++i) {
+      const TetId n = m.neighbour(t, i);
+      if (n.valid() && inCavity.count(n.index)) continue;
+      if (!n.valid()) {  // the cavity reaches the hull: no room to work
+        out.status = kFailed;
+        return out;
+      }
+      const auto& fv = del3d::kFaceVertex[i];
+      faces.push_back({m.vertex(t, fv[0]), m.vertex(t, fv[1]), m.vertex(t, fv[2])});
+      next.push_back(m.isConstrained(t, i) ? TetId() : n);
+    }
+  std::vector<int> parent(faces.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto find = [&](int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  auto isRim = [&](std::uint64_t key) {
+    const auto pe = patchEdgeUses.find(key);
+    return pe != patchEdgeUses.end() && pe->second == 1;
+  };
+  std::map<std::uint64_t, std::vector<int>> faceEdges;
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    for (int j = 0; j < 3; ++j) faceEdges[edgeKey(faces[f][j].index, faces[f][(j + 1) % 3].index)].push_back(static_cast<int>(f));
+  for (const auto& [key, list] : faceEdges) {
+    if (isRim(key)) continue;  // a rim edge separates the sides
+    for (std::size_t k = 1; k < list.size(); ++k) parent[find(list[k])] = find(list[0]);
+  }
+  // Side of each group from a face on a rim edge: +1 outer, -1 inner.
+  std::map<int, int> side;
+  for (const auto& [key, list] : faceEdges) {
+    if (!isRim(key)) continue;
+    const Tri& t = tris[rimTriangle.at(key)];
+    for (const int f : list) {
+      VertexId q;
+      for (const VertexId v : faces[f])
+        if ((key >> 32) != v.index && (key & 0xFFFFFFFFu) != v.index) q = v;
+      const double o = predicates::orient3d(m.coords(t[0]), m.coords(t[1]), m.coords(t[2]), m.coords(q));
+      if (o == 0) continue;
+      const int s = o > 0 ? 1 : -1;
+      auto [it, fresh] = side.emplace(find(f), s);
+      if (!fresh && it->second != s) {  // a group on both sides: not separable here
+        out.status = kSidesMixed;
+        return out;
+      }
+    }
+  }
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const auto it = side.find(find(static_cast<int>(f)));
+    if (it == side.end()) {  // a group touching no rim edge
+      out.status = kFailed;
+      return out;
+    }
+    (it->second > 0 ? out.outer : out.inner).push_back(faces[f]);
+    (it->second > 0 ? out.outerNext : out.innerNext).push_back(next[f]);
+  }
+  return out;
 }
 
 }  // namespace
@@ -160,7 +277,7 @@ int CavityRecovery::recoverPatch(std::vector<int> seeds) {
       ++successes_;
       return r;
     }
-    if (r != kSidesMixed || growth == kMaxGrowth) return 0;
+    if (r != kSidesMixed || growth == kMaxGrowth) return insertVicinityPoint(patch);
     // The two sides meet where the rim pinches (at a vertex): take in every boundary
     // triangle around the patch's vertices, so that those vertices are inside I.
     std::set<std::uint32_t> vs;
@@ -169,8 +286,32 @@ int CavityRecovery::recoverPatch(std::vector<int> seeds) {
     for (const std::uint32_t v : vs)
       for (const int u : vertexTriangles_[v])
         if (inPatch.insert(u).second) patch.push_back(u);
-    if (patch.size() > 2 * kMaxPatch) return 0;
+    if (patch.size() > 2 * kMaxPatch) return insertVicinityPoint(patch);
   }
+}
+
+int CavityRecovery::insertVicinityPoint(const std::vector<int>& patch) {
+  TetMesh& m = bt_.tets.mesh;
+  const auto& tris = bt_.boundary.triangles;
+  Vec3 normal(0, 0, 0), centroid(0, 0, 0);
+  double area = 0, edgeSum = 0;
+  for (const int t : patch) {
+    const Vec3 a = m.point(tris[t][0]), b = m.point(tris[t][1]), c = m.point(tris[t][2]);
+    const Vec3 n = (b - a).cross(c - a);
+    normal += n;
+    area += 0.5 * n.norm();
+    centroid += 0.5 * n.norm() * (a + b + c) / 3.0;
+    edgeSum += (a - b).norm() + (b - c).norm() + (c - a).norm();
+  }
+  if (!(area > 0) || !(normal.norm() > 0)) return 0;
+  const double h = edgeSum / (3.0 * static_cast<double>(patch.size()));
+  const Vec3 p = centroid / area - kVicinityOffset * h * normal.normalized();
+  vertexStar(m, tris[patch.front()][0], star_);
+  if (star_.empty()) return 0;
+  del3d::Inserter inserter(m);
+  const del3d::InsertResult r = inserter.insert(p, star_.front());
+  bt_.tets.node.resize(m.numVertices(), -1);
+  return r.status == del3d::InsertStatus::Inserted ? 1 : 0;
 }
 
 int CavityRecovery::retriangulate(const std::vector<int>& patch) {
@@ -231,60 +372,11 @@ int CavityRecovery::retriangulate(const std::vector<int>& patch) {
     }
   }
   if (cavity.empty()) return kFailed;
-  // 3. Boundary faces of C (oriented into C), grouped across non-rim edges.
-  std::vector<Tri> faces;
-  for (const TetId t : cavity)
-    for (int i = 0; i < 4; ++i) {
-      const TetId n = m.neighbour(t, i);
-      if (n.valid() && inCavity.count(n.index)) continue;
-      if (!n.valid()) return kFailed;  // the cavity reaches the hull: no room to work
-      const auto& fv = del3d::kFaceVertex[i];
-      faces.push_back({m.vertex(t, fv[0]), m.vertex(t, fv[1]), m.vertex(t, fv[2])});
-    }
-  std::vector<int> parent(faces.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
-  std::map<std::uint64_t, std::vector<int>> faceEdges;
-  for (std::size_t f = 0; f < faces.size(); ++f)
-    for (int j = 0; j < 3; ++j) faceEdges[edgeKey(faces[f][j].index, faces[f][(j + 1) % 3].index)].push_back(static_cast<int>(f));
-  for (const auto& [key, list] : faceEdges) {
-    const auto pe = patchEdgeUses.find(key);
-    if (pe != patchEdgeUses.end() && pe->second == 1) continue;  // a rim edge separates the sides
-    for (std::size_t k = 1; k < list.size(); ++k) parent[find(list[k])] = find(list[0]);
-  }
-  // Side of each group from a face on a rim edge: +1 outer, -1 inner.
-  std::map<int, int> side;
-  for (const auto& [key, list] : faceEdges) {
-    const auto pe = patchEdgeUses.find(key);
-    if (pe == patchEdgeUses.end() || pe->second != 1) continue;
-    const Tri& t = tris[rimTriangle[key]];
-    for (const int f : list) {
-      VertexId q;
-      for (const VertexId v : faces[f])
-        if ((key >> 32) != v.index && (key & 0xFFFFFFFFu) != v.index) q = v;
-      const double o = predicates::orient3d(m.coords(t[0]), m.coords(t[1]), m.coords(t[2]), m.coords(q));
-      if (o == 0) continue;
-      const int s = o > 0 ? 1 : -1;
-      auto [it, fresh] = side.emplace(find(f), s);
-      if (!fresh && it->second != s) return kSidesMixed;  // a group on both sides: not separable here
-    }
-  }
-  std::vector<Tri> inner, outer;
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    const auto it = side.find(find(static_cast<int>(f)));
-    if (it == side.end()) return kFailed;  // a group touching no rim edge
-    (it->second > 0 ? outer : inner).push_back(faces[f]);
-  }
   // Outward patch normal, centroid and size: where the new points go.
   Vec3 normal(0, 0, 0), centroid(0, 0, 0);
   double area = 0, edgeSum = 0;
   for (const int t : patch) {
     const Vec3 a = m.point(tris[t][0]), b = m.point(tris[t][1]), c = m.point(tris[t][2]);
-    inner.push_back({tris[t][0], tris[t][2], tris[t][1]});
-    outer.push_back(tris[t]);
     const Vec3 n = (b - a).cross(c - a);
     normal += n;
     area += 0.5 * n.norm();
@@ -311,16 +403,44 @@ int CavityRecovery::retriangulate(const std::vector<int>& patch) {
       for (int k = 0; k < 4; ++k) g += 0.25 * m.point(m.vertex(t, k));
       c.push_back(g);
     }
+    for (const double margin : kKernelMargins) {  // a point of the kernel, when one is found
+      Vec3 k;
+      if (relaxIntoKernel(m, surface, centroid + direction * 0.25 * h * normal, margin * h, k)) c.push_back(k);
+    }
     return c;
   };
-  // 4. The two stars.
+  // 4. The two stars; a side without one takes in the next layer of tets (not across a
+  // constrained face, not touching the rim) and both are tried again.
   // An apex on a triangle of I would flatten it: those vertices are excluded.
   std::set<std::uint32_t> patchVertices;
   for (const int t : patch)
     for (const VertexId v : tris[t]) patchVertices.insert(v.index);
-  const Apex in = chooseApex(m, inner, candidates(inner, -1.0), patchVertices);
-  const Apex out = chooseApex(m, outer, candidates(outer, 1.0), patchVertices);
-  if (!in.found || !out.found) return kFailed;
+  auto touchesRim = [&](TetId t) {
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) {
+        const auto pe = patchEdgeUses.find(edgeKey(m.vertex(t, i).index, m.vertex(t, j).index));
+        if (pe != patchEdgeUses.end() && pe->second == 1) return true;
+      }
+    return false;
+  };
+  std::vector<Tri> inner, outer;
+  Apex in, out;
+  for (int layer = 0;; ++layer) {
+    Sides sides = splitSides(m, cavity, inCavity, patchEdgeUses, rimTriangle, tris);
+    if (sides.status != 0) return sides.status;
+    inner = std::move(sides.inner);
+    outer = std::move(sides.outer);
+    for (const int t : patch) {
+      inner.push_back({tris[t][0], tris[t][2], tris[t][1]});
+      outer.push_back(tris[t]);
+    }
+    in = chooseApex(m, inner, candidates(inner, -1.0), patchVertices);
+    out = chooseApex(m, outer, candidates(outer, 1.0), patchVertices);
+    if (in.found && out.found) break;
+    if (layer == kMaxLayers) return kFailed;
+    for (const TetId n : in.found ? sides.outerNext : sides.innerNext)
+      if (n.valid() && !touchesRim(n)) add(n);
+  }
   // 5. Checks, then the change.
   double oldVolume = 0;
   std::set<std::uint32_t> oldFixed;
@@ -329,6 +449,22 @@ int CavityRecovery::retriangulate(const std::vector<int>& patch) {
     for (int k = 0; k < 4; ++k)
       if (bt_.tets.isFixed(m.vertex(t, k))) oldFixed.insert(m.vertex(t, k).index);
   }
+  // A constrained face inside C would be lost: only the triangles of I may be there.
+  std::set<std::array<std::uint32_t, 3>> patchKeys;
+  for (const int t : patch) {
+    std::array<std::uint32_t, 3> k = {tris[t][0].index, tris[t][1].index, tris[t][2].index};
+    std::sort(k.begin(), k.end());
+    patchKeys.insert(k);
+  }
+  for (const TetId t : cavity)
+    for (int i = 0; i < 4; ++i) {
+      const TetId n = m.neighbour(t, i);
+      if (!n.valid() || !inCavity.count(n.index) || !m.isConstrained(t, i)) continue;
+      std::array<std::uint32_t, 3> k;
+      for (int j = 0; j < 3; ++j) k[j] = m.vertex(t, del3d::kFaceVertex[i][j]).index;
+      std::sort(k.begin(), k.end());
+      if (!patchKeys.count(k)) return kFailed;
+    }
   const VertexId pin = in.isNew ? bt_.tets.addFreeVertex(in.p) : in.vertex;
   const VertexId pout = out.isNew ? bt_.tets.addFreeVertex(out.p) : out.vertex;
   std::vector<std::array<VertexId, 4>> quads;

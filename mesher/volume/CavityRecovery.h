@@ -19,7 +19,8 @@
 //  5 the change is made only if the two stars have exactly C's boundary (RegionReplace.h),
 //    their volume equals C's, and no boundary node would be left out; the triangles of I
 //    are then faces of the mesh and are marked constrained.
-// Anything that does not hold leaves the mesh untouched.
+// Anything that does not hold leaves the mesh untouched; then one point is inserted near
+// the patch on the material side (insertVicinityPoint) for the next round to use.
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -35,7 +36,7 @@ class CavityRecovery {
   explicit CavityRecovery(BoundaryTriangulation& bt);
 
   /// Tries to recover boundary triangle f (and the missing triangles around it). Returns
-  /// the number of new points (0, 1 or 2); the mesh is unchanged when it fails.
+  /// the number of new points (0, 1 or 2; 1 also when only a vicinity point went in).
   int recoverTriangle(int f);
   /// The same for boundary edge e, through the triangles that use it.
   int recoverEdge(int e);
@@ -47,6 +48,10 @@ class CavityRecovery {
   int recoverPatch(std::vector<int> seeds);
   /// Steps 2-5 for the patch: the number of new points, or a negative code (no change).
   int retriangulate(const std::vector<int>& patch);
+  /// VICINITY (thesis 5.4.3) on the material side only: a point inserted (Delaunay, not
+  /// across constrained faces) inside the solid near a patch no star recovers, so that
+  /// the next round meets another configuration. Returns 1 when a point went in.
+  int insertVicinityPoint(const std::vector<int>& patch);
   bool triangleMissing(int t);
 
   BoundaryTriangulation& bt_;
