@@ -1,5 +1,6 @@
 #include "mesher/volume/BoundaryRecovery.h"
 
+#include <memory>
 #include <unordered_set>
 
 #include "mesher/volume/CavityRecovery.h"
@@ -120,9 +121,9 @@ class Recovery {
   }
 
   void cavityRound(RecoveryStats& s) {
-    volume::CavityRecovery cavity(bt_);
-    for (const int f : missingFaces_) s.steinerPoints += cavity.recoverTriangle(f);
-    for (const int e : missingEdges_) s.steinerPoints += cavity.recoverEdge(e);
+    if (!cavity_) cavity_ = std::make_unique<volume::CavityRecovery>(bt_);
+    for (const int f : missingFaces_) s.steinerPoints += cavity_->recoverTriangle(f);
+    for (const int e : missingEdges_) s.steinerPoints += cavity_->recoverEdge(e);
   }
 
   BoundaryTriangulation& bt_;
@@ -132,6 +133,7 @@ class Recovery {
   volume::EdgeGuard guard_;
   std::vector<int> missingEdges_, missingFaces_;
   std::vector<TetId> star_;
+  std::unique_ptr<volume::CavityRecovery> cavity_;  ///< kept across rounds (vicinity attempts)
 };
 
 }  // namespace

@@ -31,8 +31,9 @@ constexpr double kGoodVertexStar = 0.01;
 constexpr double kOffsets[] = {0.1, 0.25, 0.5, 1.0, 0.05};
 /// Margins (in units of the patch's mean edge length) of the kernel points sought.
 constexpr double kKernelMargins[] = {0.05, 0.01, 1e-3, 1e-5, 1e-7};
-/// VICINITY point of a patch no star recovers: this far inside (in mean edge lengths).
-constexpr double kVicinityOffset = 0.3;
+/// VICINITY points of a patch no star recovers: this far inside (in mean edge lengths),
+/// one depth per attempt.
+constexpr double kVicinityOffsets[] = {0.3, 0.15, 0.5, 0.08, 0.22, 0.4};
 /// Layers of tets a cavity side may take in when it has no star.
 constexpr int kMaxLayers = 3;
 /// Growths of the patch when its two sides meet at a pinched rim.
@@ -305,7 +306,13 @@ int CavityRecovery::insertVicinityPoint(const std::vector<int>& patch) {
   }
   if (!(area > 0) || !(normal.norm() > 0)) return 0;
   const double h = edgeSum / (3.0 * static_cast<double>(patch.size()));
-  const Vec3 p = centroid / area - kVicinityOffset * h * normal.normalized();
+  // Each new attempt on the same patch goes elsewhere: towards one of its triangles, at
+  // another depth.
+  const int attempt = vicinityAttempts_[*std::min_element(patch.begin(), patch.end())]++;
+  const auto& tri = tris[patch[static_cast<std::size_t>(attempt) % patch.size()]];
+  const Vec3 towards = (m.point(tri[0]) + m.point(tri[1]) + m.point(tri[2])) / 3.0;
+  const double depth = kVicinityOffsets[attempt % std::size(kVicinityOffsets)];
+  const Vec3 p = 0.5 * (centroid / area + towards) - depth * h * normal.normalized();
   vertexStar(m, tris[patch.front()][0], star_);
   if (star_.empty()) return 0;
   del3d::Inserter inserter(m);

@@ -58,6 +58,7 @@ class CavityRecovery {
   std::unordered_map<std::uint64_t, std::vector<int>> edgeTriangles_;
   std::vector<std::vector<int>> vertexTriangles_;  ///< boundary triangles per kernel vertex
   std::vector<del3d::TetId> star_;
+  std::unordered_map<int, int> vicinityAttempts_;  ///< per patch (its first triangle)
   std::uint64_t attempts_ = 0, successes_ = 0;
 };
 
