@@ -52,7 +52,7 @@ TetPoints pointsOf(const del3d::TetMesh& mesh, TetId t) {
 class Refiner {
  public:
   Refiner(SolidTetMesh& s, const ControlSpace3d& cs, const VolumeRefineOptions& o)
-      : s_(s), mesh_(s.mesh), cs_(cs), o_(o), inserter_(s.mesh), vm_(s.mesh, cs) {}
+      : s_(s), mesh_(s.mesh), cs_(cs), o_(o), inserter_(s.mesh), vm_(s.mesh, cs), heap_(o.qualityThreshold) {}
 
   VolumeRefineStats run();
 

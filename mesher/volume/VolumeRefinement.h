@@ -10,7 +10,8 @@
 // midpoint (the mean of its ends' tensors), q(K) = 0.95 q_t (5.5.1);
 // edges joining two surface nodes are not checked (a boundary edge cannot be shortened by
 // inner nodes: the check would refine around it without end).
-// Tets with q < q_t go into a heap, worst on top. The worst K is refined by a point P:
+// Tets with q < q_t go into a queue, worst first (refine/RefineHeap.h: a bucket queue, worst
+// first to within q_t / 64). The worst K is refined by a point P:
 //   MLE (q(K) < q_It): the midpoint of K's longest (in M_K) edge that is not a boundary
 //        edge (not on a constrained face);
 //   CCS (otherwise, or when every edge of K is a boundary edge): the circumcentre of K in
@@ -34,14 +35,13 @@
 // and it is retried, at most maxPostpones times, after other insertions.
 // New vertices are free (node = −1, SolidTetMesh::addFreeVertex semantics); fixed vertices
 // and constrained faces are untouched, so validateSolidTetMesh holds afterwards.
-// Order: the heap is consumed in batches — the worst heap.size() / batchDivisor entries
+// Order: the queue is consumed in batches — the worst queue.size() / batchDivisor entries
 // (at most maxBatch) are refined in the Hilbert order of their centroids, entries made
 // stale by earlier insertions of the batch skipped. Worst first holds between batches;
-// within one, spatial order keeps the walks short and the memory accesses local (a strict
-// heap order jumps across the mesh at every insertion: measured 2.3 times slower per tet
-// at 1.4 M tets than at 90 k). batchDivisor = heap size gives the thesis' strict order.
-// Deterministic: the heap orders by (q, tet slot), no randomness beyond the Inserter's
-// seeded walk.
+// within one, spatial order keeps the walks short and the memory accesses local (the
+// strict order jumps across the mesh at every insertion: measured 2.3 times slower per
+// tet at 1.4 M tets than at 90 k).
+// Deterministic: no randomness beyond the Inserter's seeded walk.
 // Budget: refinement stops (stats.budgetExhausted) once the solid has maxVertices
 // vertices, or budgetFactor × max(eq. 6.2 prediction, 10⁵) vertices more than at the start
 // (a unit mesh has about 5.5 tets per vertex, so this is an order of magnitude above the
@@ -74,7 +74,7 @@ struct VolumeRefineOptions {
   int maxPostpones = 3;
   std::size_t maxVertices = 100'000'000;  ///< vertex budget of the solid
   double budgetFactor = 2.0;        ///< vertex budget relative to the eq. 6.2 tet count
-  std::size_t batchDivisor = 4;     ///< batch = heap size / batchDivisor (see above)
+  std::size_t batchDivisor = 4;     ///< batch = queue size / batchDivisor (see above)
   std::size_t maxBatch = 1 << 16;
   /// Called about every progressInterval insertions (may be empty).
   std::function<void(const VolumeRefineProgress&)> progress;

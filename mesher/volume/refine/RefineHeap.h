@@ -1,10 +1,17 @@
 #pragma once
-// The refinement heap of alg. 5.3: tets with q(K) < q_t, worst on top, ordered by
-// (q, tet slot) so the order is deterministic. Lazy deletion: each tet slot carries a
-// stamp that changes whenever the slot gets a new tet; an entry whose stamp differs, or
-// whose slot is free, is stale and skipped by pop(). Entries are 12 bytes.
+// The refinement queue of alg. 5.3: tets with q(K) < q_t, worst first. A binary heap over
+// millions of entries spends most of its time in cache misses (measured: 17 % of the
+// refinement at 0.7 M tets in the heap's sift-down alone), so this is a bucket queue:
+// q ∈ [0, q_t) is cut into kBuckets equal buckets (width q_t / kBuckets ≈ 0.009), pop()
+// takes from the lowest non-empty bucket, last in first out within a bucket (the tets
+// made by the latest insertion, which lie together). Worst first holds to the bucket
+// width; push and pop are O(1). Deterministic.
+// Lazy deletion: each tet slot carries a stamp that changes whenever the slot gets a new
+// tet; an entry whose stamp differs, or whose slot is free, is stale and skipped by pop().
+// Entries are 12 bytes.
+#include <algorithm>
+#include <array>
 #include <cstdint>
-#include <queue>
 #include <vector>
 
 #include "mesher/delaunay3d/TetMesh.h"
@@ -18,19 +25,32 @@ class RefineHeap {
     std::uint32_t tet;
     std::uint32_t stamp;
   };
+  static constexpr int kBuckets = 64;
+
+  /// Entries with q ≥ threshold go to the last bucket.
+  explicit RefineHeap(double threshold) : scale_(kBuckets / threshold) {}
 
   /// The slot holds a new tet: entries pushed for the slot before are now stale.
   void renew(del3d::TetId t) {
     if (t.index >= stamp_.size()) stamp_.resize(std::size_t{t.index} + 1 + stamp_.size() / 2, 0);
     ++stamp_[t.index];
   }
-  void push(del3d::TetId t, double q) { heap_.push({static_cast<float>(q), t.index, stampOf(t)}); }
-  /// The worst live, current entry (removed from the heap); false when none is left.
+  void push(del3d::TetId t, double q) {
+    const int b = std::clamp(static_cast<int>(q * scale_), 0, kBuckets - 1);
+    buckets_[b].push_back({static_cast<float>(q), t.index, stampOf(t)});
+    lowest_ = std::min(lowest_, b);
+    ++size_;
+  }
+  /// The worst live, current entry (removed from the queue); false when none is left.
   bool pop(const del3d::TetMesh& mesh, Entry& out) {
-    while (!heap_.empty()) {
-      out = heap_.top();
-      heap_.pop();
-      if (current(mesh, out)) return true;
+    for (; lowest_ < kBuckets; ++lowest_) {
+      std::vector<Entry>& b = buckets_[lowest_];
+      while (!b.empty()) {
+        out = b.back();
+        b.pop_back();
+        --size_;
+        if (current(mesh, out)) return true;
+      }
     }
     return false;
   }
@@ -39,16 +59,16 @@ class RefineHeap {
     const del3d::TetId t(e.tet);
     return mesh.isAlive(t) && stampOf(t) == e.stamp;
   }
-  std::size_t size() const { return heap_.size(); }
-  std::size_t memoryBytes() const { return heap_.size() * sizeof(Entry) + stamp_.capacity() * sizeof(std::uint32_t); }
+  /// Entries held, stale ones included.
+  std::size_t size() const { return size_; }
 
  private:
-  struct Worse {  // priority_queue keeps the "largest" on top: the smallest q
-    bool operator()(const Entry& x, const Entry& y) const { return x.q > y.q || (x.q == y.q && x.tet > y.tet); }
-  };
   std::uint32_t stampOf(del3d::TetId t) const { return t.index < stamp_.size() ? stamp_[t.index] : 0u; }
 
-  std::priority_queue<Entry, std::vector<Entry>, Worse> heap_;
+  double scale_;
+  std::array<std::vector<Entry>, kBuckets> buckets_;
+  int lowest_ = kBuckets;
+  std::size_t size_ = 0;
   std::vector<std::uint32_t> stamp_;
 };
 
