@@ -10,7 +10,7 @@
 #include "mesher/delaunay3d/SpatialSort.h"
 #include "mesher/volume/improve/VertexMetrics.h"
 #include "mesher/volume/refine/BoundaryEdge.h"
-#include "mesher/volume/refine/RefineHeap.h"
+#include "mesher/volume/refine/RefineQueue.h"
 #include "mesher/volume/refine/TetMetricGeometry.h"
 
 namespace aniso {
@@ -60,7 +60,7 @@ class Refiner {
   double evaluate(TetId t);
   void enqueue(TetId t);
   bool refine(TetId k, double q);
-  void process(const refine3d::RefineHeap::Entry& e);
+  void process(const refine3d::RefineQueue::Entry& e);
   bool longestInnerEdgeMidpoint(TetId k, const Mat3& m, const TetPoints& tp, Vec3& out) const;
   enum class Outcome { Inserted, Outside, Close, Metric, Refused };
   Outcome tryInsert(const Vec3& p, TetId k, bool mle);
@@ -72,7 +72,7 @@ class Refiner {
   const VolumeRefineOptions& o_;
   del3d::Inserter inserter_;
   improve3d::VertexMetrics vm_;
-  refine3d::RefineHeap heap_;
+  refine3d::RefineQueue heap_;
   std::vector<std::uint8_t> postponed_;
   std::uint32_t rng_ = 0x9E3779B9u;
   VolumeRefineStats st_;
@@ -184,7 +184,7 @@ bool Refiner::refine(TetId k, double q) {
   return false;
 }
 
-void Refiner::process(const refine3d::RefineHeap::Entry& e) {
+void Refiner::process(const refine3d::RefineQueue::Entry& e) {
   const TetId k(e.tet);
   if (refine(k, e.q)) {
     if (o_.progress && ++sinceProgress_ >= o_.progressInterval) {
@@ -216,9 +216,9 @@ VolumeRefineStats Refiner::run() {
   s_.node.resize(mesh_.numVertices(), -1);
   for (std::uint32_t k = 0; k < mesh_.tetSlots(); ++k)
     if (mesh_.isAlive(TetId(k))) enqueue(TetId(k));
-  std::vector<refine3d::RefineHeap::Entry> batch;
+  std::vector<refine3d::RefineQueue::Entry> batch;
   std::vector<Vec3> centres;
-  refine3d::RefineHeap::Entry e;
+  refine3d::RefineQueue::Entry e;
   for (;;) {
     // The worst tets of the heap, refined in the Hilbert order of their centroids.
     const std::size_t want = std::clamp<std::size_t>(heap_.size() / o_.batchDivisor, 1, o_.maxBatch);

@@ -10,7 +10,7 @@
 // midpoint (the mean of its ends' tensors), q(K) = 0.95 q_t (5.5.1);
 // edges joining two surface nodes are not checked (a boundary edge cannot be shortened by
 // inner nodes: the check would refine around it without end).
-// Tets with q < q_t go into a queue, worst first (refine/RefineHeap.h: a bucket queue, worst
+// Tets with q < q_t go into a queue, worst first (refine/RefineQueue.h: a bucket queue, worst
 // first to within q_t / 64). The worst K is refined by a point P:
 //   MLE (q(K) < q_It): the midpoint of K's longest (in M_K) edge that is not a boundary
 //        edge (not on a constrained face);

@@ -18,7 +18,7 @@
 
 namespace aniso::refine3d {
 
-class RefineHeap {
+class RefineQueue {
  public:
   struct Entry {
     float q;
@@ -28,7 +28,7 @@ class RefineHeap {
   static constexpr int kBuckets = 64;
 
   /// Entries with q ≥ threshold go to the last bucket.
-  explicit RefineHeap(double threshold) : scale_(kBuckets / threshold) {}
+  explicit RefineQueue(double threshold) : scale_(kBuckets / threshold) {}
 
   /// The slot holds a new tet: entries pushed for the slot before are now stale.
   void renew(del3d::TetId t) {
