@@ -26,7 +26,7 @@ double worstScore(const VertexMetrics& vm, const Range& tets) {
 
 /// The flip condition: worst η_M after > worst η_M before + gain, on scores.
 bool beats(double after, double before, double gain) {
-  return std::cbrt(after) > std::cbrt(before) + gain;
+  return after > before && std::cbrt(after) > std::cbrt(before) + gain;  // cube roots only when needed
 }
 }  // namespace
 

@@ -50,13 +50,13 @@ double VertexMetrics::score(const std::uint32_t* v) const {
   return guardEuclidean_ ? std::min(metric, e) : metric;
 }
 
-double VertexMetrics::etaWith(const std::uint32_t* v, std::uint32_t moved, const Vec3& p) const {
+double VertexMetrics::scoreWith(const std::uint32_t* v, std::uint32_t moved, const Vec3& p) const {
   Vec3 q[4];
   for (int i = 0; i < 4; ++i) q[i] = v[i] == moved ? p : mesh_.point(del3d::VertexId(v[i]));
-  const double e = meanRatio(q[0], q[1], q[2], q[3]);
+  const double e = meanRatioCubed(q[0], q[1], q[2], q[3]);
   if (isotropic(v)) return e;
   const Mat3 m = tetMetric(v);
-  const double metric = meanRatio(Vec3(m * q[0]), Vec3(m * q[1]), Vec3(m * q[2]), Vec3(m * q[3]));
+  const double metric = meanRatioCubed(m * q[0], m * q[1], m * q[2], m * q[3]);
   return guardEuclidean_ ? std::min(metric, e) : metric;
 }
 

@@ -6,7 +6,7 @@
 // vertices (flips, relocations) costs no control-space call. When the four tensors are
 // isotropic (s·I, up to kIsotropicTolerance) the mean is too and η_M = η: no transform.
 // score() is the signed η_M³: the same order as η_M without the cube root (for minima).
-// With setGuardEuclidean(true) (sliver removal) score() and etaWith() return the smaller of
+// With setGuardEuclidean(true) (sliver removal) score() and scoreWith() return the smaller of
 // the metric and the Euclidean value, so a tet that is fine in the metric but flat in space
 // (what the referee measures) counts as poor.
 #include <array>
@@ -41,8 +41,8 @@ class VertexMetrics {
   double score(del3d::TetId t) const { return score(mesh_.tetVertices(t)); }
   /// η_M of the tet with vertex ids v (signed).
   double eta(const std::uint32_t* v) const { return std::cbrt(score(v)); }
-  /// η_M of the tet with vertex ids v where vertex `moved` is placed at p.
-  double etaWith(const std::uint32_t* v, std::uint32_t moved, const Vec3& p) const;
+  /// score() of the tet with vertex ids v where vertex `moved` is placed at p.
+  double scoreWith(const std::uint32_t* v, std::uint32_t moved, const Vec3& p) const;
   /// Smallest dihedral angle (degrees) of the tet mapped by its metric.
   double metricMinDihedral(del3d::TetId t) const;
   /// A sliver: metric smallest dihedral below metricAngle, or a Euclidean dihedral angle

@@ -45,7 +45,7 @@ void VertexMover::quality(del3d::VertexId v, const Vec3& p, double& worst, doubl
   worst = 1e300;
   double sum = 0;
   for (const del3d::TetId t : star_) {
-    const double e = vm_.etaWith(s_.mesh.tetVertices(t), v.index, p);
+    const double e = vm_.scoreWith(s_.mesh.tetVertices(t), v.index, p);
     worst = std::min(worst, e);
     sum += e;
   }
@@ -81,13 +81,6 @@ void VertexMover::move(del3d::VertexId v, const Vec3& p) {
   vm_.refresh(v);
 }
 
-double VertexMover::starWorst(del3d::VertexId v) {
-  loadStar(v);
-  double worst, mean;
-  quality(v, s_.mesh.point(v), worst, mean);
-  return worst;
-}
-
 bool VertexMover::smooth(del3d::VertexId v, double lowGradation, double qualityFloor) {
   if (s_.isFixed(v) || !s_.mesh.vertexTet(v).valid()) return false;
   loadStar(v);
@@ -96,12 +89,13 @@ bool VertexMover::smooth(del3d::VertexId v, double lowGradation, double qualityF
   const Vec3 target = laplaceTarget(v, lowGradation);
   double w0, m0;
   quality(v, q, w0, m0);
+  const double floor = qualityFloor * qualityFloor * qualityFloor;  // scores are η³
   for (const double step : {1.0, 0.5}) {
     const Vec3 p = q + step * (target - q);
     if (p == q) continue;
     double w1, m1;
     quality(v, p, w1, m1);  // floating point first: most rejected moves need no exact test
-    const bool better = w0 < qualityFloor ? w1 > w0 : (w1 >= qualityFloor && m1 >= m0);
+    const bool better = w0 < floor ? w1 > w0 : (w1 >= floor && m1 >= m0);
     if (better && legal(v, p)) {
       move(v, p);
       return true;
