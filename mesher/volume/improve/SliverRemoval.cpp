@@ -123,6 +123,23 @@ bool SliverRemover::attack(TetId t) {
     if (mover_.relocate(VertexId(v))) ++stats.moves;
     if (!isSliver(t)) return true;
   }
+  // the free vertices of the neighbours across its faces (their moves reshape its faces'
+  // surroundings so that a flip or its own vertices can then act)
+  for (int i = 0; i < 4; ++i) {
+    const TetId n = s_.mesh.neighbour(t, i);
+    if (!n.valid()) continue;
+    const VertexId w = s_.mesh.vertex(n, del3d::codeFace(s_.mesh.adjacentCode(t, i)));
+    if (s_.isFixed(w)) continue;
+    if (mover_.relocate(w)) ++stats.moves;
+    if (!isSliver(t) || flipAway(t)) return true;
+  }
+  // its own free vertices again, for its dihedral angles rather than the mean ratio
+  for (const std::uint32_t v : tv) {
+    if (!s_.mesh.isAlive(t)) return true;
+    if (s_.isFixed(VertexId(v))) continue;
+    if (mover_.relocate(VertexId(v), true)) ++stats.moves;
+    if (!isSliver(t)) return true;
+  }
   return insertion_ && insertPoint(t);
 }
 

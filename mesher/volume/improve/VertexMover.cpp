@@ -6,12 +6,15 @@
 #include <cmath>
 
 #include "mesher/predicates/Predicates.h"
+#include "mesher/volume/TetQuality.h"
 #include "mesher/volume/improve/TetStar.h"
 
 namespace aniso::improve3d {
 namespace {
 /// Perturbation radii of relocate(), relative to the shortest edge of the star.
 constexpr double kPerturbRadii[2] = {0.15, 0.05};
+/// relocate(v, angles = true) keeps the star's worst η_M³ above this fraction of its value.
+constexpr double kAngleMoveScoreKeep = 0.5;
 }  // namespace
 
 void VertexMover::loadStar(del3d::VertexId v) {
@@ -125,19 +128,38 @@ Vec3 VertexMover::worstApex(del3d::VertexId v) const {
   return m.inverse() * ((a + b + c) / 3 + std::sqrt(2.0 / 3.0) * len * n);
 }
 
-bool VertexMover::relocate(del3d::VertexId v) {
+double VertexMover::angleMeasure(del3d::VertexId v, const Vec3& p) const {
+  double worst = 180;
+  for (const del3d::TetId t : star_) {
+    const std::uint32_t* tv = s_.mesh.tetVertices(t);
+    const Mat3 m = vm_.tetMetric(tv);
+    Vec3 q[4];
+    for (int i = 0; i < 4; ++i) q[i] = m * (tv[i] == v.index ? p : s_.mesh.point(del3d::VertexId(tv[i])));
+    const DihedralRange r = tetDihedralRange(q[0], q[1], q[2], q[3]);
+    worst = std::min({worst, r.minDeg, 180 - r.maxDeg});
+  }
+  return worst;
+}
+
+bool VertexMover::relocate(del3d::VertexId v, bool angles) {
   if (s_.isFixed(v) || !s_.mesh.vertexTet(v).valid()) return false;
   loadStar(v);
   if (nbrs_.empty()) return false;
   const Vec3 q = s_.mesh.point(v);
-  double best, mean;
-  quality(v, q, best, mean);
+  double worst0, mean;
+  quality(v, q, worst0, mean);
+  double best = angles ? angleMeasure(v, q) : worst0;
   double shortest = 1e300;
   for (const std::uint32_t w : nbrs_) shortest = std::min(shortest, (s_.mesh.point(del3d::VertexId(w)) - q).norm());
   Vec3 bestP = q;
   auto consider = [&](const Vec3& p) {
     double w, m;
     quality(v, p, w, m);
+    if (angles) {
+      // the angles may not cost more than half the star's worst η_M³
+      if (!(w > kAngleMoveScoreKeep * worst0)) return;
+      w = angleMeasure(v, p);
+    }
     if (w > best && legal(v, p)) best = w, bestP = p;
   };
   consider(laplaceTarget(v, -1.0));

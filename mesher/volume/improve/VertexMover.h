@@ -31,7 +31,10 @@ class VertexMover {
   VertexMover(SolidTetMesh& s, VertexMetrics& vm) : s_(s), vm_(vm) {}
 
   bool smooth(del3d::VertexId v, double lowGradation, double qualityFloor);
-  bool relocate(del3d::VertexId v);
+  /// angles: maximise the star's smallest min(θ_min, 180° − θ_max) (dihedral angles in
+  /// each tet's metric) instead of its worst η_M, keeping the worst η_M³ above half its
+  /// value.
+  bool relocate(del3d::VertexId v, bool angles = false);
 
  private:
   void loadStar(del3d::VertexId v);
@@ -39,6 +42,7 @@ class VertexMover {
   void quality(del3d::VertexId v, const Vec3& p, double& worst, double& mean) const;
   Vec3 laplaceTarget(del3d::VertexId v, double lowGradation) const;
   Vec3 worstApex(del3d::VertexId v) const;
+  double angleMeasure(del3d::VertexId v, const Vec3& p) const;
   void move(del3d::VertexId v, const Vec3& p);
 
   SolidTetMesh& s_;
