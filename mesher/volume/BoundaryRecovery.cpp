@@ -68,14 +68,16 @@ class Recovery {
       const auto& ed = bt_.boundary.edges[e];
       r.left.push_back({bt_.boundary.triangleFace[bt_.boundary.edgeTriangle[e]],
                         "boundary edge between surface nodes " + std::to_string(bt_.tets.node[ed[0].index]) + " and " +
-                            std::to_string(bt_.tets.node[ed[1].index]) + " not recovered"});
+                            std::to_string(bt_.tets.node[ed[1].index]) + " not recovered",
+                        {bt_.tets.node[ed[0].index], bt_.tets.node[ed[1].index]}});
     }
     for (const int f : missingFaces_) {
       const auto& t = bt_.boundary.triangles[f];
       r.left.push_back({bt_.boundary.triangleFace[f], "boundary triangle (surface nodes " +
                                                           std::to_string(bt_.tets.node[t[0].index]) + ", " +
                                                           std::to_string(bt_.tets.node[t[1].index]) + ", " +
-                                                          std::to_string(bt_.tets.node[t[2].index]) + ") not recovered"});
+                                                          std::to_string(bt_.tets.node[t[2].index]) + ") not recovered",
+                        {bt_.tets.node[t[0].index], bt_.tets.node[t[1].index], bt_.tets.node[t[2].index]}});
     }
     return r;
   }

@@ -39,6 +39,7 @@ struct RecoveryStats {
 struct RecoveryFailure {
   int face = -1;  ///< 0-based model face of the entity
   std::string what;
+  std::vector<int> nodes;  ///< surface-mesh nodes of the missing edge (2) or triangle (3)
 };
 
 struct RecoveryResult {

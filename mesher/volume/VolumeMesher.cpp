@@ -42,15 +42,28 @@ void fail(SolidPiece& p, const std::string& entity, const std::string& what) {
 
 std::string solidName(int s) { return "solid " + std::to_string(s + 1); }
 
-/// Missing entities grouped by face: one problem per face with the count and an example.
-void reportLeft(SolidPiece& p, int solid, const std::vector<RecoveryFailure>& left) {
-  std::map<int, std::pair<int, std::string>> byFace;
+/// The CAD edge (0-based) all the given surface nodes lie on, or -1.
+int commonEdge(const SurfaceMesh& surface, const std::vector<int>& nodes) {
+  int edge = -1;
+  for (const int n : nodes) {
+    const NodeOn& on = surface.nodeOn[n];
+    if (on.kind != NodeOn::Kind::Edge || (edge >= 0 && on.entity != edge)) return -1;
+    edge = on.entity;
+  }
+  return edge;
+}
+
+/// Missing entities grouped by face (or by CAD edge when the entity lies on one): one
+/// problem per group with the count and an example.
+void reportLeft(SolidPiece& p, int solid, const SurfaceMesh& surface, const std::vector<RecoveryFailure>& left) {
+  std::map<std::string, std::pair<int, std::string>> byFace;
   for (const RecoveryFailure& f : left) {
-    auto& e = byFace[f.face];
+    const int edge = commonEdge(surface, f.nodes);
+    auto& e = byFace[edge >= 0 ? "edge " + std::to_string(edge + 1) : "face " + std::to_string(f.face + 1)];
     if (e.first++ == 0) e.second = f.what;
   }
   for (const auto& [face, e] : byFace)
-    fail(p, "face " + std::to_string(face + 1),
+    fail(p, face,
          std::to_string(e.first) + " boundary edges/triangles not recovered in the tetrahedra of " + solidName(solid) +
              " (e.g. " + e.second + ")");
 }
@@ -118,7 +131,7 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
   p.outcome.recovery = rr.stats;
   if (!rr.left.empty()) {
     p.outcome.times.emplace_back("volume recovery", since(t0));
-    reportLeft(p, solid, rr.left);
+    reportLeft(p, solid, *in.surface, rr.left);
     return p;
   }
   const std::vector<std::string> carved = carveSolid(bt.tets, bt.boundary, bt.box);
