@@ -148,6 +148,31 @@ Apex chooseApex(const TetMesh& m, const std::vector<Tri>& faces, const std::vect
   return bestVertex;
 }
 
+/// Where new points near a patch go: its unit outward normal (area-weighted), its
+/// area-weighted centroid and its mean edge length. False for a patch of no area.
+struct PatchFrame {
+  Vec3 normal{0, 0, 0}, centroid{0, 0, 0};
+  double h = 0;
+};
+
+bool patchFrame(const TetMesh& m, const std::vector<Tri>& tris, const std::vector<int>& patch, PatchFrame& out) {
+  Vec3 normal(0, 0, 0), centroid(0, 0, 0);
+  double area = 0, edgeSum = 0;
+  for (const int t : patch) {
+    const Vec3 a = m.point(tris[t][0]), b = m.point(tris[t][1]), c = m.point(tris[t][2]);
+    const Vec3 n = (b - a).cross(c - a);
+    normal += n;
+    area += 0.5 * n.norm();
+    centroid += 0.5 * n.norm() * (a + b + c) / 3.0;
+    edgeSum += (a - b).norm() + (b - c).norm() + (c - a).norm();
+  }
+  if (!(area > 0) || !(normal.norm() > 0)) return false;
+  out.normal = normal.normalized();
+  out.centroid = centroid / area;
+  out.h = edgeSum / (3.0 * static_cast<double>(patch.size()));
+  return true;
+}
+
 /// Step 3: the boundary faces of the cavity (oriented into it) split by the rim of I into
 /// the outer (+1) and inner (-1) side, with the tet across each face.
 struct Sides {
@@ -294,25 +319,17 @@ int CavityRecovery::recoverPatch(std::vector<int> seeds) {
 int CavityRecovery::insertVicinityPoint(const std::vector<int>& patch) {
   TetMesh& m = bt_.tets.mesh;
   const auto& tris = bt_.boundary.triangles;
-  Vec3 normal(0, 0, 0), centroid(0, 0, 0);
-  double area = 0, edgeSum = 0;
-  for (const int t : patch) {
-    const Vec3 a = m.point(tris[t][0]), b = m.point(tris[t][1]), c = m.point(tris[t][2]);
-    const Vec3 n = (b - a).cross(c - a);
-    normal += n;
-    area += 0.5 * n.norm();
-    centroid += 0.5 * n.norm() * (a + b + c) / 3.0;
-    edgeSum += (a - b).norm() + (b - c).norm() + (c - a).norm();
-  }
-  if (!(area > 0) || !(normal.norm() > 0)) return 0;
-  const double h = edgeSum / (3.0 * static_cast<double>(patch.size()));
+  PatchFrame frame;
+  if (!patchFrame(m, tris, patch, frame)) return 0;
+  const Vec3 normal = frame.normal, centroid = frame.centroid;
+  const double h = frame.h;
   // Each new attempt on the same patch goes elsewhere: towards one of its triangles, at
   // another depth.
   const int attempt = vicinityAttempts_[*std::min_element(patch.begin(), patch.end())]++;
   const auto& tri = tris[patch[static_cast<std::size_t>(attempt) % patch.size()]];
   const Vec3 towards = (m.point(tri[0]) + m.point(tri[1]) + m.point(tri[2])) / 3.0;
   const double depth = kVicinityOffsets[attempt % std::size(kVicinityOffsets)];
-  const Vec3 p = 0.5 * (centroid / area + towards) - depth * h * normal.normalized();
+  const Vec3 p = 0.5 * (centroid + towards) - depth * h * normal;
   vertexStar(m, tris[patch.front()][0], star_);
   if (star_.empty()) return 0;
   del3d::Inserter inserter(m);
@@ -380,20 +397,10 @@ int CavityRecovery::retriangulate(const std::vector<int>& patch) {
   }
   if (cavity.empty()) return kFailed;
   // Outward patch normal, centroid and size: where the new points go.
-  Vec3 normal(0, 0, 0), centroid(0, 0, 0);
-  double area = 0, edgeSum = 0;
-  for (const int t : patch) {
-    const Vec3 a = m.point(tris[t][0]), b = m.point(tris[t][1]), c = m.point(tris[t][2]);
-    const Vec3 n = (b - a).cross(c - a);
-    normal += n;
-    area += 0.5 * n.norm();
-    centroid += 0.5 * n.norm() * (a + b + c) / 3.0;
-    edgeSum += (a - b).norm() + (b - c).norm() + (c - a).norm();
-  }
-  if (!(area > 0) || !(normal.norm() > 0)) return kFailed;
-  centroid /= area;
-  normal.normalize();
-  const double h = edgeSum / (3.0 * static_cast<double>(patch.size()));
+  PatchFrame frame;
+  if (!patchFrame(m, tris, patch, frame)) return kFailed;
+  const Vec3 normal = frame.normal, centroid = frame.centroid;
+  const double h = frame.h;
   auto candidates = [&](const std::vector<Tri>& surface, double direction) {
     std::vector<Vec3> c;
     for (const double s : kOffsets) c.push_back(centroid + direction * s * h * normal);
