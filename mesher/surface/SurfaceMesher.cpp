@@ -13,6 +13,7 @@
 #include "mesher/core/PredictionBoard.h"
 #include "mesher/sizing/BoundaryUpdate.h"
 #include "mesher/sizing/FaceControlSpace.h"
+#include "mesher/quad/QuadSizing.h"
 #include "mesher/surface/ContourDiscretization.h"
 #include "mesher/surface/improve/FaceQuality.h"
 
@@ -154,6 +155,12 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
   t = Clock::now();
   std::vector<const ControlSpace2d*> cs(nf, nullptr);
   for (int f = 0; f < nf; ++f) cs[f] = spaces[f].get();
+  // --quad: the triangles are made in a coarser view of each control space, so that merged
+  // pairs are unit quads (mesher/quad/QuadSizing.h); conversion and quality use spaces[f].
+  std::vector<std::unique_ptr<quad::QuadSizedSpace>> quadSized(nf);
+  if (in.options.quad)
+    for (int f = 0; f < nf; ++f)
+      if (cs[f]) cs[f] = (quadSized[f] = std::make_unique<quad::QuadSizedSpace>(*cs[f])).get();
   ContourOptions copt;
   copt.evenSegments = in.options.quad;
   // The boundary sources respect h_min too: below it, tiny CAD edges and sliver faces
@@ -211,8 +218,8 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
     o.problems = meshes[f].problems;
     if (meshes[f].ok()) {
       FaceMesh& fm = meshes[f].mesh;
-      if (in.options.quad) o.quad = quad::convertToQuads(fm, *cs[f], model.faces[f].surface.get(), r.mesh.nodes);
-      const FaceQuality q = faceQuality(fm.uv, fm.triangles, *cs[f]);
+      if (in.options.quad) o.quad = quad::convertToQuads(fm, *spaces[f], model.faces[f].surface.get(), r.mesh.nodes);
+      const FaceQuality q = faceQuality(fm.uv, fm.triangles, *spaces[f]);
       o.quality = {q.eta, in.options.quad ? o.quad.mu : q.mu, q.ek};
     }
   }, faceProgress);

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Quad meshes side by side with Gmsh's Blossom recombination (issue 7).
 usage: tools/bench/quad_vs_gmsh.py [CLI] [--dir MODELS] [--only a.step,b.brep] [--no-gmsh | --gmsh-only]
-                                  [--gmsh-cache FILE.json] [--timeout S]
+                                  [--gmsh-cache FILE.json] [--ours-cache FILE.json] [--timeout S]
 For every model of MODELS/MANIFEST.json: `anisomesh mesh --dim 2 --quad --hmax-rel 0.02
 --curvature-ratio 0.26 --anisotropy 1` and Gmsh 4.8 (`-2 -algo front2d`, Mesh.RecombineAll=1,
 Blossom, the same relative size and curvature sizing as shared/tools/gmsh_anchor.py), each
@@ -9,7 +9,8 @@ measured the same way as shared/tools/check_quad.py: quad fraction, scaled Jacob
 (3D, per quad the minimum over its corners), open edges, area against the manifest.
 Prints one table row per model, then the means. --gmsh-cache keeps Gmsh's figures per model in
 FILE.json (read when present, written after each Gmsh run): Gmsh's side does not change between
-runs of ours. Needs Debian's python3-gmsh/meshio/numpy."""
+runs of ours (--ours-cache does the same for ours, e.g. to print the table of two separate
+runs). Needs Debian's python3-gmsh/meshio/numpy."""
 import json, os, subprocess, sys, tempfile
 import numpy as np, meshio
 
@@ -26,6 +27,8 @@ if only: man = [m for m in man if m["file"] in only.split(",")]
 tmp = tempfile.mkdtemp()
 cache_file = opt("--gmsh-cache", "")
 cache = json.load(open(cache_file)) if cache_file and os.path.exists(cache_file) else {}
+ours_file = opt("--ours-cache", "")
+ours_cache = json.load(open(ours_file)) if ours_file and os.path.exists(ours_file) else {}
 
 GMSH = r'''
 import sys, gmsh
@@ -76,9 +79,14 @@ print(f"{'model':<36} {'anisomesh: quad%  SJmin  SJavg  open   area':>40} | {'gm
 ours, theirs = [], []
 for m in man:
     f = os.path.join(d, m["file"])
-    a, wa = (None, "skipped") if "--gmsh-only" in args else run(
-        [cli, "mesh", f, "-o", f"{tmp}/a.msh", "--dim", "2", "--quad", "--hmax-rel", "0.02",
-         "--curvature-ratio", "0.26", "--anisotropy", "1"], f"{tmp}/a.msh", m)
+    if "--gmsh-only" in args: a, wa = None, "skipped"
+    elif m["file"] in ours_cache: a, wa = ours_cache[m["file"]]
+    else:
+        a, wa = run([cli, "mesh", f, "-o", f"{tmp}/a.msh", "--dim", "2", "--quad", "--hmax-rel", "0.02",
+                     "--curvature-ratio", "0.26", "--anisotropy", "1"], f"{tmp}/a.msh", m)
+        if ours_file:
+            ours_cache[m["file"]] = [a, wa]
+            json.dump(ours_cache, open(ours_file, "w"))
     if "--no-gmsh" in args: g, wg = None, "skipped"
     elif m["file"] in cache: g, wg = cache[m["file"]]
     else:
