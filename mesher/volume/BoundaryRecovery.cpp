@@ -1,7 +1,11 @@
 #include "mesher/volume/BoundaryRecovery.h"
 
+#include <algorithm>
+#include <cstdio>
 #include <memory>
 #include <unordered_set>
+
+#include <Eigen/Geometry>
 
 #include "mesher/volume/CavityRecovery.h"
 #include "mesher/volume/MeshQueries.h"
@@ -28,6 +32,9 @@ void RecoveryStats::merge(const RecoveryStats& o) {
 }
 
 namespace {
+
+/// Surface triangles flatter than this (area / longest edge²) are named in failures.
+constexpr double kFlatShape = 0.01;
 
 std::uint64_t edgeKey(VertexId a, VertexId b) {
   const std::uint64_t p = std::min(a.index, b.index), q = std::max(a.index, b.index);
@@ -68,7 +75,8 @@ class Recovery {
       const auto& ed = bt_.boundary.edges[e];
       r.left.push_back({bt_.boundary.triangleFace[bt_.boundary.edgeTriangle[e]],
                         "boundary edge between surface nodes " + std::to_string(bt_.tets.node[ed[0].index]) + " and " +
-                            std::to_string(bt_.tets.node[ed[1].index]) + " not recovered",
+                            std::to_string(bt_.tets.node[ed[1].index]) + " not recovered" +
+                            shapeNote(bt_.boundary.triangles[bt_.boundary.edgeTriangle[e]]),
                         {bt_.tets.node[ed[0].index], bt_.tets.node[ed[1].index]}});
     }
     for (const int f : missingFaces_) {
@@ -76,13 +84,27 @@ class Recovery {
       r.left.push_back({bt_.boundary.triangleFace[f], "boundary triangle (surface nodes " +
                                                           std::to_string(bt_.tets.node[t[0].index]) + ", " +
                                                           std::to_string(bt_.tets.node[t[1].index]) + ", " +
-                                                          std::to_string(bt_.tets.node[t[2].index]) + ") not recovered",
+                                                          std::to_string(bt_.tets.node[t[2].index]) + ") not recovered" +
+                                                          shapeNote(t),
                         {bt_.tets.node[t[0].index], bt_.tets.node[t[1].index], bt_.tets.node[t[2].index]}});
     }
     return r;
   }
 
  private:
+  /// A note on a nearly flat surface triangle (area / longest edge² below kFlatShape,
+  /// 0.43 for the equilateral one): such slivers of the surface mesh leave almost no room
+  /// for a point inside the solid next to them.
+  std::string shapeNote(const std::array<VertexId, 3>& t) const {
+    const Vec3 a = mesh_.point(t[0]), b = mesh_.point(t[1]), c = mesh_.point(t[2]);
+    const double l = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+    const double shape = 0.5 * (b - a).cross(c - a).norm() / (l * l);
+    if (!(shape < kFlatShape)) return "";
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "; its surface triangle is nearly flat (area/length^2 %.2g)", shape);
+    return buf;
+  }
+
   /// Recomputes the missing lists and constrains every present boundary face.
   void collectMissing() {
     missingEdges_.clear();
