@@ -17,7 +17,8 @@
 //   CCS (otherwise, or when every edge of K is a boundary edge): the circumcentre of K in
 //        metric space (M_K x), mapped back.
 // P is inserted with del3d::Inserter (in-sphere test on M(P)·x, M(P) the metric at P,
-// constant during the insertion; constrained faces are never crossed) with mustRemove = K.
+// constant during the insertion — on the untransformed points when M(P) is isotropic, which
+// gives the same signs exactly; constrained faces are never crossed) with mustRemove = K.
 // The insertion is cancelled (the mesh is unchanged) when:
 //   - P is outside the solid (the walk from K leaves through a boundary face: thesis
 //     "the refined and containing elements may be divided by some boundary face");
