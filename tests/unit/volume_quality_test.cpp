@@ -80,13 +80,14 @@ TEST(TetQuality, SummaryOfACube) {
 }
 
 // A model with one solid bounded by one shell of 6 faces, and the surface mesh of the cube
-// with triangles of size about 1/n, finer (1/(2n)) on the face x = 0.
+// with triangles of size about 1/n; on the face x = 0 the grid has mi × mj cells (default
+// 2n × 2n: finer; mi ≠ mj: stretched triangles).
 struct CubeModel {
   Model model;
   SurfaceMesh surface;
 };
 
-CubeModel cubeModel(int n) {
+CubeModel cubeModel(int n, int mi = 0, int mj = 0) {
   CubeModel c;
   c.model.faces.resize(6);
   c.model.shells.resize(1);
@@ -98,19 +99,20 @@ CubeModel cubeModel(int n) {
   for (int axis = 0; axis < 3; ++axis)
     for (int side = 0; side <= 1; ++side) {
       const int face = 2 * axis + side;
-      const int m = (axis == 0 && side == 0) ? 2 * n : n;
+      const bool special = axis == 0 && side == 0;
+      const int ni = special ? (mi > 0 ? mi : 2 * n) : n, nj = special ? (mj > 0 ? mj : 2 * n) : n;
       const int base = static_cast<int>(c.surface.nodes.size());
-      for (int i = 0; i <= m; ++i)
-        for (int j = 0; j <= m; ++j) {
+      for (int i = 0; i <= ni; ++i)
+        for (int j = 0; j <= nj; ++j) {
           Vec3 p;
           p[axis] = side;
-          p[(axis + 1) % 3] = double(i) / m;
-          p[(axis + 2) % 3] = double(j) / m;
+          p[(axis + 1) % 3] = double(i) / ni;
+          p[(axis + 2) % 3] = double(j) / nj;
           c.surface.addNode(p, NodeOn{});
         }
-      for (int i = 0; i < m; ++i)
-        for (int j = 0; j < m; ++j) {
-          const int a = base + i * (m + 1) + j, b = a + (m + 1);
+      for (int i = 0; i < ni; ++i)
+        for (int j = 0; j < nj; ++j) {
+          const int a = base + i * (nj + 1) + j, b = a + (nj + 1);
           c.surface.triangles.push_back({a, b, b + 1});
           c.surface.triangles.push_back({a, b + 1, a + 1});
           c.surface.triangleFace.push_back(face);
@@ -148,6 +150,28 @@ TEST(VolumeControlSpace, SurfaceSizesGradedIntoTheVolume) {
   const auto cs2 = buildVolumeControlSpace(c.model, c.surface, 0, p, &user);
   EXPECT_NEAR(cs2->getMetric(Vec3(0.5, 0.5, 0.5)).axes().lengths.maxCoeff(), 0.02, 1e-3);
   EXPECT_GT(cs2->getMetric(Vec3(0.98, 0.9, 0.9)).axes().lengths.minCoeff(), 0.08);
+}
+
+TEST(VolumeControlSpace, StretchedSurfaceTrianglesGiveAnAnisotropicVolumeMetric) {
+  // x = 0: cells 1/32 along y, 1/8 along z (eq. 3.3: the surface metric with the normal
+  // direction at the smaller in-plane length)
+  const CubeModel c = cubeModel(4, 32, 8);
+  SizingParameters p;
+  p.anisotropy = 5;
+  const auto cs = buildVolumeControlSpace(c.model, c.surface, 0, p, nullptr);
+  const Metric3d m = cs->getMetric(Vec3(0.005, 0.5, 0.5));
+  const MetricAxes<3> ax = m.axes();
+  const double shortest = ax.lengths.minCoeff(), longest = ax.lengths.maxCoeff();
+  EXPECT_GT(longest / shortest, 2.5);
+  EXPECT_LE(longest / shortest, 5 * (1 + 1e-9));  // γ_a
+  EXPECT_GT(std::abs(ax.directions.col(2).z()), 0.8);  // the long direction follows z
+  // the normal (x) gets the short length, not the long one
+  EXPECT_LT(m.lengthAlong(Vec3::UnitX()), 1.5 * shortest);
+  EXPECT_LT(shortest, 0.06);
+  // the same grid with square cells gives an isotropic metric there
+  const auto iso = buildVolumeControlSpace(cubeModel(4, 16, 16).model, cubeModel(4, 16, 16).surface, 0, p, nullptr);
+  const MetricAxes<3> ai = iso->getMetric(Vec3(0.005, 0.5, 0.5)).axes();
+  EXPECT_LT(ai.lengths.maxCoeff() / ai.lengths.minCoeff(), 1.8);
 }
 
 TEST(VolumeControlSpace, NoTrianglesIsAnError) {
