@@ -40,15 +40,15 @@ double refereeMinDihedral(const Vec3& a, const Vec3& b, const Vec3& c, const Vec
 
 struct TetQualitySummary {
   std::size_t tets = 0;
-  std::size_t inverted = 0;      ///< signed volume ≤ 0 (floating point, as the referee)
-  double volume = 0;             ///< sum of signed volumes
-  QualityStats meanRatio;        ///< Euclidean η per tet
-  double minDihedral = 180;      ///< degrees, over all tets
+  std::size_t inverted = 0;  ///< signed volume ≤ 0 (floating point, as the referee)
+  double volume = 0;         ///< sum of signed volumes
+  QualityStats meanRatio;    ///< Euclidean η per tet
+  double minDihedral = 180;  ///< degrees, over all tets
   double maxDihedral = 0;
-  std::size_t belowDihedral = 0; ///< tets with a dihedral angle below kSliverDihedralDeg
-  double refereeMinDihedral = 180; ///< meshq.py's dihedral_min (see above)
-  QualityStats etaM;             ///< η_M per tet (only with a control space)
-  QualityStats muM;              ///< μ_M per unique edge (only with a control space)
+  std::size_t belowDihedral = 0;    ///< tets with a dihedral angle below kSliverDihedralDeg
+  double refereeMinDihedral = 180;  ///< meshq.py's dihedral_min (see above)
+  QualityStats etaM;                ///< η_M per tet (only with a control space)
+  QualityStats muM;                 ///< μ_M per unique edge (only with a control space)
 
   void merge(const TetQualitySummary& o);
 };

@@ -10,8 +10,8 @@
 #include "mesher/control/ExtendedSource3d.h"
 #include "mesher/core/Error.h"
 #include "mesher/metric/AnisotropyLimit.h"
-#include "mesher/metric/MetricIntersection.h"
 #include "mesher/metric/MetricInterpolation.h"
+#include "mesher/metric/MetricIntersection.h"
 #include "mesher/metric/SimplexMetric.h"
 
 namespace aniso {
@@ -53,9 +53,12 @@ bool triangleMetric(const Vec3& a, const Vec3& b, const Vec3& c, double gammaA, 
 
 std::unique_ptr<ExtendedSource3d> extendedSource(const SizingSource& src) {
   switch (src.kind) {
-    case SizingSource::Kind::Point: return std::make_unique<PointSource3d>(src.a, src.radius);
-    case SizingSource::Kind::Segment: return std::make_unique<SegmentSource3d>(src.a, src.b, src.radius);
-    case SizingSource::Kind::Box: return std::make_unique<PrismSource3d>(PrismSource3d::box(src.a, src.b));
+    case SizingSource::Kind::Point:
+      return std::make_unique<PointSource3d>(src.a, src.radius);
+    case SizingSource::Kind::Segment:
+      return std::make_unique<SegmentSource3d>(src.a, src.b, src.radius);
+    case SizingSource::Kind::Box:
+      return std::make_unique<PrismSource3d>(PrismSource3d::box(src.a, src.b));
   }
   return nullptr;
 }
@@ -87,7 +90,8 @@ std::shared_ptr<ControlSpace3d> buildVolumeControlSpace(const Model& model, cons
     if (!triangleMetric(surface.nodes[tri[0]], surface.nodes[tri[1]], surface.nodes[tri[2]], gammaA, hmin, m)) continue;
     for (const int v : tri) blend[v].add(m, 1.0);
   }
-  if (triangles == 0) throw MeshingError("solid " + std::to_string(solid + 1) + ": no boundary triangle for the volume control space");
+  if (triangles == 0)
+    throw MeshingError("solid " + std::to_string(solid + 1) + ": no boundary triangle for the volume control space");
 
   // 1–2
   const double margin = kVolumeBoxMargin * std::max(box.diagonal(), 1e-300);

@@ -41,7 +41,8 @@ VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, cons
     st.flips44 += flips.counts().f44;
   }
   if (o.sliverRounds > 0) {
-    const improve3d::SliverStats ss = improve3d::removeSlivers(s, cs, vm, o.sliverAngleDeg, o.euclideanSliverAngleDeg, o.sliverRounds, o.sliverInsertion);
+    const improve3d::SliverStats ss = improve3d::removeSlivers(s, cs, vm, o.sliverAngleDeg, o.euclideanSliverAngleDeg,
+                                                               o.sliverRounds, o.sliverInsertion);
     st.sliversBefore = ss.before;
     st.sliversAfter = ss.after;
     st.sliverFlips = ss.flips;

@@ -33,10 +33,10 @@
 namespace aniso {
 
 struct VolumeImproveOptions {
-  int passes = 1;                ///< N_imp of alg. 5.4 (table 5.6)
-  int smoothingSweeps = 1;       ///< Laplace sweeps per pass
-  double lowGradation = 0.05;    ///< δ_M threshold of the mixed (plain / metric) smoothing
-  double flipGain = 1e-3;        ///< required increase of the worst η_M for a flip
+  int passes = 1;              ///< N_imp of alg. 5.4 (table 5.6)
+  int smoothingSweeps = 1;     ///< Laplace sweeps per pass
+  double lowGradation = 0.05;  ///< δ_M threshold of the mixed (plain / metric) smoothing
+  double flipGain = 1e-3;      ///< required increase of the worst η_M for a flip
   /// Tets visited by the flip pass: η_M below this (> 1: all tets, as the thesis).
   /// Measured (cube, h = 0.05): all tets 0.859 mean ratio in 0.72 s; 0.7: 0.864 in 0.32 s;
   /// 0.5: 0.855 in 0.26 s.
@@ -49,11 +49,11 @@ struct VolumeImproveOptions {
   /// referee's measure; matters for anisotropic meshes).
   double euclideanSliverAngleDeg = 5.0;
   int sliverRounds = 4;
-  bool sliverInsertion = true;   ///< allow step (3)
+  bool sliverInsertion = true;  ///< allow step (3)
 };
 
 struct VolumeImproveStats {
-  std::size_t moved = 0;          ///< accepted smoothing moves
+  std::size_t moved = 0;  ///< accepted smoothing moves
   std::size_t flips23 = 0, flips32 = 0, flips44 = 0;
   std::size_t sliversBefore = 0;  ///< tets below sliverAngleDeg before sliver removal
   std::size_t sliversAfter = 0;

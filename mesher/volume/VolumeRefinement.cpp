@@ -111,7 +111,9 @@ void Refiner::enqueue(TetId t) {
 bool Refiner::longestInnerEdgeMidpoint(TetId k, const Mat3& m, const TetPoints& tp, Vec3& out) const {
   std::array<std::pair<double, int>, 6> len;
   for (int e = 0; e < 6; ++e) len[e] = {(m * (tp.p[kEdges[e][1]] - tp.p[kEdges[e][0]])).norm(), e};
-  std::sort(len.begin(), len.end(), [](const auto& x, const auto& y) { return x.first > y.first || (x.first == y.first && x.second < y.second); });
+  std::sort(len.begin(), len.end(), [](const auto& x, const auto& y) {
+    return x.first > y.first || (x.first == y.first && x.second < y.second);
+  });
   for (const auto& [l, e] : len) {
     if (refine3d::isBoundaryEdge(s_, k, kEdges[e][0], kEdges[e][1])) continue;
     out = 0.5 * (tp.p[kEdges[e][0]] + tp.p[kEdges[e][1]]);
@@ -150,11 +152,16 @@ Refiner::Outcome Refiner::tryInsert(const Vec3& p, TetId k, bool mle) {
   io.mustRemove = k;
   const del3d::InsertResult r = inserter_.insert(p, io);
   switch (r.status) {
-    case del3d::InsertStatus::Inserted: break;
-    case del3d::InsertStatus::Outside: return Outcome::Outside;
-    case del3d::InsertStatus::Duplicate: return Outcome::Close;
-    case del3d::InsertStatus::Pointless: return Outcome::Metric;
-    case del3d::InsertStatus::Refused: return Outcome::Refused;
+    case del3d::InsertStatus::Inserted:
+      break;
+    case del3d::InsertStatus::Outside:
+      return Outcome::Outside;
+    case del3d::InsertStatus::Duplicate:
+      return Outcome::Close;
+    case del3d::InsertStatus::Pointless:
+      return Outcome::Metric;
+    case del3d::InsertStatus::Refused:
+      return Outcome::Refused;
   }
   s_.node.resize(mesh_.numVertices(), -1);
   vm_.sync();
@@ -174,11 +181,21 @@ bool Refiner::refine(TetId k, double q) {
                             : refine3d::metricCircumcentre(m, tp.p[0], tp.p[1], tp.p[2], tp.p[3], p);
     if (!placed) continue;
     switch (tryInsert(p, k, mle)) {
-      case Outcome::Inserted: ++(mle ? st_.insertedMLE : st_.insertedCCS); return true;
-      case Outcome::Outside: ++st_.cancelledOutside; return false;  // retried later, no MLE
-      case Outcome::Close: ++st_.cancelledClose; break;
-      case Outcome::Metric: ++st_.cancelledMetric; break;
-      case Outcome::Refused: ++st_.cancelledRefused; break;
+      case Outcome::Inserted:
+        ++(mle ? st_.insertedMLE : st_.insertedCCS);
+        return true;
+      case Outcome::Outside:
+        ++st_.cancelledOutside;
+        return false;  // retried later, no MLE
+      case Outcome::Close:
+        ++st_.cancelledClose;
+        break;
+      case Outcome::Metric:
+        ++st_.cancelledMetric;
+        break;
+      case Outcome::Refused:
+        ++st_.cancelledRefused;
+        break;
     }
   }
   return false;
@@ -210,8 +227,8 @@ VolumeRefineStats Refiner::run() {
   st_.predictedInitial = predictTetCount(s_, cs_);
   // Guard against a refinement that would not end (e.g. a metric far finer than asked for):
   // about budgetFactor times the predicted final number of tets, in vertices.
-  const double guard = o_.budgetFactor * std::max(st_.predictedInitial, kMinBudgetTets) +
-                       static_cast<double>(mesh_.numVertices());
+  const double guard =
+      o_.budgetFactor * std::max(st_.predictedInitial, kMinBudgetTets) + static_cast<double>(mesh_.numVertices());
   maxVertices_ = static_cast<std::size_t>(std::min(static_cast<double>(o_.maxVertices), guard));
   s_.node.resize(mesh_.numVertices(), -1);
   for (std::uint32_t k = 0; k < mesh_.tetSlots(); ++k)

@@ -57,25 +57,25 @@
 namespace aniso {
 
 struct VolumeRefineProgress {
-  std::size_t tets = 0;       ///< current number of tets (NT_c)
-  double worstQuality = 0;    ///< q(K_0): of the tet just refined (the refinement front)
-  double predictedTets = 0;   ///< eq. 6.1 (NT_c q_t / q(K_0))
+  std::size_t tets = 0;      ///< current number of tets (NT_c)
+  double worstQuality = 0;   ///< q(K_0): of the tet just refined (the refinement front)
+  double predictedTets = 0;  ///< eq. 6.1 (NT_c q_t / q(K_0))
 };
 
 struct VolumeRefineOptions {
-  double qualityThreshold = 0.57;   ///< q_t (sec. 5.5.1)
-  double edgeLengthMax = 1.5;       ///< l_M threshold of the edge check (sec. 5.5.1)
+  double qualityThreshold = 0.57;  ///< q_t (sec. 5.5.1)
+  double edgeLengthMax = 1.5;      ///< l_M threshold of the edge check (sec. 5.5.1)
   /// q_It: MLE below, CCS at or above (sec. 5.5.2, table 5.5). Measured on the cube fixture
   /// (h = 1/8, after improvement): q_It = 0 (pure CCS) mean ratio 0.852, min dihedral
   /// 10.5°; 0.02: 0.811, 2.4°; 0.3: 0.784, 1.4° — as the thesis found for isotropic meshes.
   double methodSwitch = 0.0;
-  double minVertexDistance = 0.4;   ///< cancellation: metric distance to the nearest vertex
-  double minBoundaryDistance = 0.3; ///< cancellation of MLE points: metric distance to the boundary
-  double postponeFactor = 1.5;      ///< q raised by this factor when K cannot be refined now
+  double minVertexDistance = 0.4;    ///< cancellation: metric distance to the nearest vertex
+  double minBoundaryDistance = 0.3;  ///< cancellation of MLE points: metric distance to the boundary
+  double postponeFactor = 1.5;       ///< q raised by this factor when K cannot be refined now
   int maxPostpones = 3;
   std::size_t maxVertices = 100'000'000;  ///< vertex budget of the solid
-  double budgetFactor = 2.0;        ///< vertex budget relative to the eq. 6.2 tet count
-  std::size_t batchDivisor = 4;     ///< batch = queue size / batchDivisor (see above)
+  double budgetFactor = 2.0;              ///< vertex budget relative to the eq. 6.2 tet count
+  std::size_t batchDivisor = 4;           ///< batch = queue size / batchDivisor (see above)
   std::size_t maxBatch = 1 << 16;
   /// Called about every progressInterval insertions (may be empty).
   std::function<void(const VolumeRefineProgress&)> progress;
@@ -83,13 +83,13 @@ struct VolumeRefineOptions {
 };
 
 struct VolumeRefineStats {
-  std::size_t inserted = 0;       ///< new vertices
+  std::size_t inserted = 0;  ///< new vertices
   std::size_t insertedMLE = 0, insertedCCS = 0;
   std::size_t cancelledOutside = 0, cancelledClose = 0, cancelledMetric = 0, cancelledRefused = 0;
-  std::size_t abandoned = 0;      ///< tets left below q_t after maxPostpones attempts
-  std::size_t evaluated = 0;      ///< q(K) evaluations
+  std::size_t abandoned = 0;  ///< tets left below q_t after maxPostpones attempts
+  std::size_t evaluated = 0;  ///< q(K) evaluations
   std::size_t initialTets = 0, finalTets = 0;
-  double predictedInitial = 0;    ///< eq. 6.2 at the start
+  double predictedInitial = 0;  ///< eq. 6.2 at the start
   bool budgetExhausted = false;
 };
 

@@ -96,7 +96,8 @@ TEST(VolumeImprove, AnisotropicFromANonMetricDelaunayBoundary) {
   const Mat3 map = stretch.inverseMatrix();
   std::set<Triple> boundary;
   SolidTetMesh s = cubeSolid(12, boundary, 11, map, false);
-  const Metric3d m = Metric3d::fromDirections(Vec3(1, 1, 0), Vec3(-1, 1, 0), Vec3::UnitZ(), 5 / 12.0, 1 / 12.0, 1 / 12.0);
+  const Metric3d m =
+      Metric3d::fromDirections(Vec3(1, 1, 0), Vec3(-1, 1, 0), Vec3::UnitZ(), 5 / 12.0, 1 / 12.0, 1 / 12.0);
   Box3 box;
   for (int c = 0; c < 8; ++c) box.add(map * Vec3(c & 1, (c >> 1) & 1, (c >> 2) & 1));
   const CSAnalytic3d cs(box, [m](const Vec3&) { return m; });

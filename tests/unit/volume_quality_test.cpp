@@ -163,7 +163,7 @@ TEST(VolumeControlSpace, StretchedSurfaceTrianglesGiveAnAnisotropicVolumeMetric)
   const MetricAxes<3> ax = m.axes();
   const double shortest = ax.lengths.minCoeff(), longest = ax.lengths.maxCoeff();
   EXPECT_GT(longest / shortest, 2.5);
-  EXPECT_LE(longest / shortest, 5 * (1 + 1e-9));  // γ_a
+  EXPECT_LE(longest / shortest, 5 * (1 + 1e-9));       // γ_a
   EXPECT_GT(std::abs(ax.directions.col(2).z()), 0.8);  // the long direction follows z
   // the normal (x) gets the short length, not the long one
   EXPECT_LT(m.lengthAlong(Vec3::UnitX()), 1.5 * shortest);

@@ -150,7 +150,8 @@ inline CubeSurface cubeSurface(const SolidTetMesh& s, const std::set<Triple>& bo
     n.cwiseAbs().maxCoeff(&axis);
     const Vec3 centre = (at[t[0]] + at[t[1]] + at[t[2]]) / 3;
     c.surface.triangles.push_back(t);
-    c.surface.triangleFace.push_back(2 * axis + (centre[axis] > c.model.bbox.lo[axis] + 0.5 * c.model.bbox.size()[axis]));
+    c.surface.triangleFace.push_back(2 * axis +
+                                     (centre[axis] > c.model.bbox.lo[axis] + 0.5 * c.model.bbox.size()[axis]));
   }
   return c;
 }

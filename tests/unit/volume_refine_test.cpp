@@ -26,7 +26,8 @@ TEST(VolumeRefine, SphereQualityOfTheIdealTet) {
   // the same tet stretched 4 times along x is ideal in the metric with h_x = 4
   const Vec3 s(4, 1, 1);
   const Metric3d m = Metric3d::fromDirections(Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ(), 4, 1, 1);
-  EXPECT_NEAR(refinementQuality(m, a.cwiseProduct(s), b.cwiseProduct(s), c.cwiseProduct(s), d.cwiseProduct(s)), 1.0, 1e-12);
+  EXPECT_NEAR(refinementQuality(m, a.cwiseProduct(s), b.cwiseProduct(s), c.cwiseProduct(s), d.cwiseProduct(s)), 1.0,
+              1e-12);
   // flat tet
   EXPECT_EQ(refinementQuality(Metric3d::identity(), a, b, c, Vec3(0.3, 0.3, 0)), 0.0);
 }

@@ -1,8 +1,8 @@
 #include "mesher/volume/improve/QualityFlips.h"
 
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <span>
 
 #include "mesher/delaunay3d/EdgeRing.h"
@@ -49,8 +49,7 @@ bool QualityFlips::tryFace(del3d::TetId t, int i, std::vector<del3d::TetId>& cre
     for (int m = 0; m < 3; ++m) f[m] = s_.mesh.vertex(t, del3d::kFaceVertex[i][m]);
     // (f0, f1, f2, d) is positive; the new tets replace one f by e.
     double after = 1e300;
-    for (int m = 0; m < 3; ++m)
-      after = std::min(after, vm_.score(std::array<VertexId, 4>{f[m], f[(m + 1) % 3], e, d}));
+    for (int m = 0; m < 3; ++m) after = std::min(after, vm_.score(std::array<VertexId, 4>{f[m], f[(m + 1) % 3], e, d}));
     if (!beats(after, std::min(vm_.score(t), vm_.score(u)), gain_)) return false;
   }
   del3d::Flip23Plan plan;
@@ -69,7 +68,8 @@ bool QualityFlips::tryEdge(del3d::TetId t, int i, int j, std::vector<del3d::TetI
   if (n < 3) return false;
   const VertexId a = s_.mesh.vertex(t, i), b = s_.mesh.vertex(t, j);
   if (n == 3) {
-    const double after = std::min(absScore(vm_, apex[0], apex[1], apex[2], a), absScore(vm_, apex[0], apex[1], apex[2], b));
+    const double after =
+        std::min(absScore(vm_, apex[0], apex[1], apex[2], a), absScore(vm_, apex[0], apex[1], apex[2], b));
     if (!beats(after, worstScore(vm_, std::span<const del3d::TetId>(ring.data(), 3)), gain_)) return false;
     del3d::Flip32Plan plan;
     if (!del3d::canFlip32(s_.mesh, t, i, j, &plan)) return false;
@@ -86,8 +86,8 @@ bool QualityFlips::tryEdge(del3d::TetId t, int i, int j, std::vector<del3d::TetI
   bool found = false;
   for (int diag = 0; diag < 2; ++diag) {
     const VertexId p = apex[diag], q = apex[diag + 1], r = apex[diag + 2], w = apex[(diag + 3) % 4];
-    const double pre = std::min({absScore(vm_, a, p, q, r), absScore(vm_, b, p, q, r), absScore(vm_, a, p, r, w),
-                                 absScore(vm_, b, p, r, w)});
+    const double pre = std::min(
+        {absScore(vm_, a, p, q, r), absScore(vm_, b, p, q, r), absScore(vm_, a, p, r, w), absScore(vm_, b, p, r, w)});
     if (!beats(pre, before, gain_)) continue;
     del3d::Flip44Plan plan;
     if (!del3d::canFlip44(s_.mesh, t, i, j, diag, &plan)) continue;

@@ -22,8 +22,15 @@ class SliverRemover {
  public:
   SliverRemover(SolidTetMesh& s, const ControlSpace3d& cs, VertexMetrics& vm, double angle, double euclidean,
                 bool insertion)
-      : s_(s), cs_(cs), vm_(vm), angle_(angle), euclidean_(euclidean), insertion_(insertion), flips_(s, vm, 0.0),
-        mover_(s, vm), inserter_(s.mesh, 0x51F3A7u) {}
+      : s_(s),
+        cs_(cs),
+        vm_(vm),
+        angle_(angle),
+        euclidean_(euclidean),
+        insertion_(insertion),
+        flips_(s, vm, 0.0),
+        mover_(s, vm),
+        inserter_(s.mesh, 0x51F3A7u) {}
 
   /// One round over `slivers` (those still slivers); returns the ones left.
   std::vector<TetId> round(const std::vector<TetId>& slivers);

@@ -48,8 +48,8 @@ class VertexMover {
   SolidTetMesh& s_;
   VertexMetrics& vm_;
   std::vector<del3d::TetId> star_;
-  std::vector<std::uint32_t> nbrs_;   ///< the star's other vertices, in discovery order
-  std::vector<std::uint32_t> seen_;   ///< per vertex: stamp_ when already in nbrs_
+  std::vector<std::uint32_t> nbrs_;  ///< the star's other vertices, in discovery order
+  std::vector<std::uint32_t> seen_;  ///< per vertex: stamp_ when already in nbrs_
   std::uint32_t stamp_ = 0;
 };
 
