@@ -36,6 +36,7 @@ namespace {
 
 struct StarQuality {
   double worst = 2, mean = 0;
+  double worstQuad = 2;  ///< the quads only (triangles count by their shape, not their Jacobian)
   bool valid = true;
 };
 
@@ -45,6 +46,7 @@ StarQuality measure(const QuadMesh2d& mesh, VertexMetrics& metrics, std::span<co
     const double q = elementQuality(mesh, metrics, mesh.corners[e]);
     if (q <= 0) s.valid = false;
     s.worst = std::min(s.worst, q);
+    if (mesh.sides(e) == 4) s.worstQuad = std::min(s.worstQuad, q);
     s.mean += q;
   }
   s.mean /= std::max<std::size_t>(1, star.size());
@@ -94,7 +96,9 @@ SmoothStats smoothQuadMesh(QuadMesh2d& mesh, VertexMetrics& metrics, const Smoot
         const StarQuality after = measure(mesh, metrics, star);
         const bool better = before.worst < o.qualityFloor ? after.worst > before.worst
                                                           : after.worst >= o.qualityFloor;
-        if (after.valid && better) {
+        // No quad may fall below the acceptance threshold (or below itself, if already there).
+        const bool quadsKept = after.worstQuad >= std::min(before.worstQuad, o.minQuadQuality);
+        if (after.valid && better && quadsKept) {
           accepted = true;
           break;
         }

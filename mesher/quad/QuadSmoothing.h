@@ -10,7 +10,8 @@
 // (elementQuality): a poor star (worst below qualityFloor) must raise its worst, another
 // must keep its worst ≥ qualityFloor (its mean may drop: measured on the box, mean scaled
 // Jacobian 0.908 with the mean condition of the triangle smoothing, 0.916 without); else
-// the half move is tried.
+// the half move is tried. In any case no quad of the star may end below minQuadQuality
+// (the star's worst may be a triangle, whose shape is another measure).
 // Boundary vertices never move, nor do the vertices of elements touching a pole (two
 // corners on one global node), whose metric the face's parameterization cannot represent.
 #include "mesher/quad/QuadShape.h"
@@ -20,6 +21,7 @@ namespace aniso::quad {
 struct SmoothOptions {
   int sweeps = 4;
   double qualityFloor = 0.4;
+  double minQuadQuality = 0.1;  ///< no move takes a quad of the star below this (or lower)
 };
 
 struct SmoothStats {
