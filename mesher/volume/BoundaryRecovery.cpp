@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <memory>
+#include <unordered_map>
 #include <unordered_set>
 
 #include <Eigen/Geometry>
@@ -105,18 +106,39 @@ class Recovery {
     return buf;
   }
 
-  /// Recomputes the missing lists and constrains every present boundary face.
+  /// Recomputes the missing lists and constrains every present boundary face. The first
+  /// call checks every entity; later calls only the ones that can have changed: a present
+  /// face is constrained, so no operator removes it (flips and cavities refuse to, the
+  /// inserter never crosses it), and neither its edges; so only the missing faces, the
+  /// missing edges and the edges of missing faces are looked at again.
   void collectMissing() {
+    const SolidBoundary& b = bt_.boundary;
+    std::vector<int> edges, faces;
+    if (!checked_) {
+      for (std::size_t e = 0; e < b.edges.size(); ++e) edges.push_back(static_cast<int>(e));
+      for (std::size_t f = 0; f < b.triangles.size(); ++f) faces.push_back(static_cast<int>(f));
+      for (std::size_t e = 0; e < b.edges.size(); ++e) edgeIndex_[edgeKey(b.edges[e][0], b.edges[e][1])] = static_cast<int>(e);
+      checked_ = true;
+    } else {
+      faces = missingFaces_;
+      std::unordered_set<int> seen(missingEdges_.begin(), missingEdges_.end());
+      edges = missingEdges_;
+      for (const int f : missingFaces_)
+        for (int k = 0; k < 3; ++k) {
+          const int e = edgeIndex_.at(edgeKey(b.triangles[f][k], b.triangles[f][(k + 1) % 3]));
+          if (seen.insert(e).second) edges.push_back(e);
+        }
+      std::sort(edges.begin(), edges.end());
+    }
     missingEdges_.clear();
     missingFaces_.clear();
-    const SolidBoundary& b = bt_.boundary;
-    for (std::size_t e = 0; e < b.edges.size(); ++e)
-      if (!volume::findEdge(mesh_, b.edges[e][0], b.edges[e][1], star_).valid()) missingEdges_.push_back(static_cast<int>(e));
-    for (std::size_t f = 0; f < b.triangles.size(); ++f) {
+    for (const int e : edges)
+      if (!volume::findEdge(mesh_, b.edges[e][0], b.edges[e][1], star_).valid()) missingEdges_.push_back(e);
+    for (const int f : faces) {
       const auto& t = b.triangles[f];
       const volume::FaceHandle h = volume::findFace(mesh_, t[0], t[1], t[2], star_);
       if (!h.valid()) {
-        missingFaces_.push_back(static_cast<int>(f));
+        missingFaces_.push_back(f);
         continue;
       }
       if (!mesh_.isConstrained(h.tet, h.face)) mesh_.setConstrained(h.tet, h.face, true);
@@ -158,6 +180,8 @@ class Recovery {
   std::vector<int> missingEdges_, missingFaces_;
   std::vector<TetId> star_;
   std::unique_ptr<volume::CavityRecovery> cavity_;  ///< kept across rounds (vicinity attempts)
+  std::unordered_map<std::uint64_t, int> edgeIndex_;  ///< boundary edge by its vertex pair
+  bool checked_ = false;                              ///< collectMissing ran once over everything
 };
 
 }  // namespace
