@@ -51,15 +51,22 @@ if grep -q '^progress: faces [0-9]*% .*triangles predicted' "$t/pe" && grep -q '
    && "$cli" mesh "$models/plate.step" --dim 2 -o "$t/q.msh" 2>&1 | { ! grep -q progress; }; then ok progress-lines
 else bad "progress-lines: $(head -3 "$t/pe")"; fi
 
-# mesh: until the meshers exist it must fail honestly: exit 3, a report with status failed,
-# a failure entry, and no mesh file.
+# mesh with the defaults: a volume mesh (the model has a solid), isotropic unless
+# --anisotropy is given, and the report's contract.
 "$cli" mesh "$models/bracket.step" -o "$t/out.msh" --report "$t/r.json" > "$t/so" 2> "$t/se"; rc=$?
-if [ $rc -eq 3 ] && [ ! -e "$t/out.msh" ] && py "
+if [ $rc -eq 0 ] && [ -s "$t/out.msh" ] && [ ! -s "$t/so" ] && py "
 import json; r = json.load(open('$t/r.json'))
-assert r['status'] == 'failed' and r['failures'], r
+assert r['status'] == 'ok' and not r['failures'], r
 for k in ('status','input','options','counts','times','quality','failures'): assert k in r, k
 assert r['options']['dim'] == 3 and r['model']['solids'] == 1
+assert r['options']['anisotropy'] == 1.0, r['options']
 assert set(r['counts']) == {'nodes','triangles','quads','tetrahedra'}
+assert r['counts']['tetrahedra'] > 1000, r['counts']
 "; then ok mesh-report; else bad "mesh-report: exit $rc $(cat "$t/se")"; fi
+"$cli" mesh "$models/bracket.step" -o "$t/an.msh" --anisotropy 3 --hmax-rel 0.2 --report "$t/a.json" > /dev/null 2>&1
+if py "
+import json; r = json.load(open('$t/a.json'))
+assert r['options']['dim'] == 3 and r['options']['anisotropy'] == 3.0, r['options']
+"; then ok anisotropy-given; else bad anisotropy-given; fi
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]

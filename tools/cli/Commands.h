@@ -23,6 +23,10 @@ struct MeshArgs {
   int mshVersion = 41;  ///< MSH output: 41 or 22 (--msh-version 4.1 | 2.2)
   bool fragment = true;
   MeshOptions options;
+  /// --anisotropy was given. Without it a volume mesh (dim 3) is isotropic (γ_a = 1): the
+  /// tetrahedra on a stretched boundary triangle are stretched too, and FE solvers want
+  /// tetrahedra well shaped in space; surface meshes keep the thesis' default γ_a = 5.
+  bool anisotropyGiven = false;
 };
 int runMesh(const MeshArgs& args);
 

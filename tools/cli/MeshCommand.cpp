@@ -139,7 +139,8 @@ bool isKnownOutputExtension(const std::string& path) {
   return std::any_of(std::begin(known), std::end(known), [&](const char* k) { return ext == k; });
 }
 
-int runMesh(const MeshArgs& args) {
+int runMesh(const MeshArgs& given) {
+  MeshArgs args = given;
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
   auto seconds = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
@@ -162,6 +163,10 @@ int runMesh(const MeshArgs& args) {
                                               : ": nothing to mesh in 3D: the model has no solids (use --dim 2)"));
   if (in.model.faces.empty()) throw InputError(args.file + ": nothing to mesh: the model has no faces");
   report.options["dim"] = dim;
+  if (dim == 3 && !args.anisotropyGiven) {  // see MeshArgs::anisotropyGiven
+    args.options.sizing.anisotropy = 1;
+    report.options["anisotropy"] = 1.0;
+  }
   const Model& topo = in.model;
   for (const std::string& problem : topo.validate()) {
     const auto colon = problem.find(':');

@@ -100,7 +100,10 @@ int main(int argc, char** argv) {
 
   try {
     if (infoCmd->parsed()) return cli::runInfo(info);
-    if (meshCmd->parsed()) return cli::runMesh(mesh);
+    if (meshCmd->parsed()) {
+      mesh.anisotropyGiven = meshCmd->count("--anisotropy") > 0;
+      return cli::runMesh(mesh);
+    }
     if (sizingCmd->parsed()) return cli::runSizing(sizing);
     if (checkCmd->parsed()) return cli::runCheck(check);
   } catch (const InputError& e) {
