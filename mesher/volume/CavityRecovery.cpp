@@ -34,8 +34,10 @@ constexpr double kKernelMargins[] = {0.05, 0.01, 1e-3, 1e-5, 1e-7};
 /// VICINITY points of a patch no star recovers: this far inside (in mean edge lengths),
 /// one depth per attempt.
 constexpr double kVicinityOffsets[] = {0.3, 0.15, 0.5, 0.08, 0.22, 0.4};
-/// Layers of tets a cavity side may take in when it has no star.
-constexpr int kMaxLayers = 3;
+/// Growth steps of a cavity side that has no star.
+constexpr int kMaxLayers = 8;
+/// Margin (in mean edge lengths) of the point a side grows towards.
+constexpr double kGrowthMargin = 1e-3;
 /// Growths of the patch when its two sides meet at a pinched rim.
 constexpr int kMaxGrowth = 2;
 /// retriangulate(): the patch's rim does not separate the two sides; other failures.
@@ -75,7 +77,8 @@ double starShape(const TetMesh& m, const std::vector<Tri>& faces, const double* 
 /// A point strictly on the inner side of every face (the kernel of the polyhedron) by
 /// cyclic relaxation (Agmon–Motzkin): from `start`, repeatedly push the point across the
 /// most violated half-space to `margin` inside it. Returns false when the iterations do
-/// not settle (the kernel may be empty or thinner than the margin).
+/// not settle (the kernel may be empty or thinner than the margin); `out` is then the last
+/// point reached.
 bool relaxIntoKernel(const TetMesh& m, const std::vector<Tri>& faces, Vec3 start, double margin, Vec3& out) {
   constexpr int kIterations = 2000;
   std::vector<Vec3> normal(faces.size());
@@ -105,6 +108,7 @@ bool relaxIntoKernel(const TetMesh& m, const std::vector<Tri>& faces, Vec3 start
     }
     p += (margin - worst) * normal[wf];
   }
+  out = p;  // the best effort, for growing the polyhedron towards a star (see below)
   return false;
 }
 
@@ -452,8 +456,25 @@ int CavityRecovery::retriangulate(const std::vector<int>& patch) {
     out = chooseApex(m, outer, candidates(outer, 1.0), patchVertices);
     if (in.found && out.found) break;
     if (layer == kMaxLayers) return kFailed;
-    for (const TetId n : in.found ? sides.outerNext : sides.innerNext)
-      if (n.valid() && !touchesRim(n)) add(n);
+    // Grow each side without a star towards one: take in the tets beyond the faces that
+    // a point near its kernel (best effort) does not see.
+    auto grow = [&](const std::vector<Tri>& faces, const std::vector<TetId>& next, double direction) {
+      Vec3 q;
+      relaxIntoKernel(m, faces, centroid + direction * 0.25 * h * normal, kGrowthMargin * h, q);
+      std::size_t added = 0;
+      for (std::size_t f = 0; f < next.size(); ++f) {
+        if (!next[f].valid() || touchesRim(next[f])) continue;
+        if (predicates::orient3d(m.coords(faces[f][0]), m.coords(faces[f][1]), m.coords(faces[f][2]), q.data()) > 0)
+          continue;
+        add(next[f]);
+        ++added;
+      }
+      if (added == 0)  // nothing hides the point: take the whole next layer
+        for (const TetId n : next)
+          if (n.valid() && !touchesRim(n)) add(n);
+    };
+    if (!in.found) grow(inner, sides.innerNext, -1.0);
+    if (!out.found) grow(outer, sides.outerNext, 1.0);
   }
   // 5. Checks, then the change.
   double oldVolume = 0;

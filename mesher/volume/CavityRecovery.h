@@ -13,6 +13,8 @@
 //  3 the boundary faces of C split, across the rim edges, into an inner part (on the
 //    material side of I) and an outer part; with I they close two polyhedra;
 //  4 each polyhedron is retriangulated as the star of one point that sees all its faces
+//    (a side without one grows, a few times, across the faces hiding a point of its
+//    near-kernel: not across constrained faces, not around the rim)
 //    (exact orient3d > 0 for every new tet): an existing vertex when one does (no new
 //    point), else a new point — for the inner polyhedron strictly inside the solid, for
 //    the outer one outside it;
