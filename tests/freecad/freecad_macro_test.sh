@@ -34,30 +34,35 @@ PY
    ANISOMESH_SAVE="$t/out.FCStd" timeout 600 freecadcmd "$macro" > macro.log 2>&1); rc=$?
 if [ $rc -eq 0 ] && [ -f "$t/out.FCStd" ]; then ok macro-runs; else bad "macro-runs: exit $rc: $(grep anisomesh "$t/macro.log" | tail -2)"; fi
 
-cat > "$t/inspect.py" <<PY
-import sys, json, FreeCAD
-doc = FreeCAD.openDocument("$t/out.FCStd")
-meshes = [o for o in doc.Objects if o.TypeId.startswith("Fem::FemMeshObject")]
-r = {"meshes": len(meshes)}
-if meshes:
-    m = meshes[0].FemMesh
-    bb = doc.getObject("Plate").Shape.BoundBox
-    eps = 1e-6 * bb.DiagonalLength
-    inside = all(bb.XMin - eps <= p.x <= bb.XMax + eps and bb.YMin - eps <= p.y <= bb.YMax + eps and
-                 bb.ZMin - eps <= p.z <= bb.ZMax + eps for p in m.Nodes.values())
-    names = sorted(m.getGroupName(g) for g in m.Groups)
-    an = doc.getObject("Analysis")
-    r.update(tets=m.TetraCount, nodes=m.NodeCount, groups=names, inside=inside,
-             in_analysis=meshes[0] in an.Group,
-             face_nodes={n: len(m.getGroupElements(g)) for g in m.Groups for n in [m.getGroupName(g)]})
-json.dump(r, open("$t/inspect.json", "w"))
+# (not "inspect.py": freecadcmd would take the standard module of that name)
+cat > "$t/fc_inspect.py" <<PY
+import sys, json, traceback, FreeCAD
+try:
+  doc = FreeCAD.openDocument("$t/out.FCStd")
+  meshes = [o for o in doc.Objects if o.TypeId.startswith("Fem::FemMeshObject")]
+  r = {"meshes": len(meshes)}
+  if meshes:
+      m = meshes[0].FemMesh
+      bb = doc.getObject("Plate").Shape.BoundBox
+      eps = 1e-6 * bb.DiagonalLength
+      inside = all(bb.XMin - eps <= p.x <= bb.XMax + eps and bb.YMin - eps <= p.y <= bb.YMax + eps and
+                   bb.ZMin - eps <= p.z <= bb.ZMax + eps for p in m.Nodes.values())
+      names = sorted(m.getGroupName(g) for g in m.Groups)
+      an = doc.getObject("Analysis")
+      r.update(tets=m.TetraCount, nodes=m.NodeCount, groups=names, inside=inside,
+               in_analysis=meshes[0] in an.Group,
+               face_nodes={n: len(m.getGroupElements(g)) for g in m.Groups for n in [m.getGroupName(g)]})
+  json.dump(r, open("$t/inspect.json", "w"))
+except Exception:
+  json.dump({"error": traceback.format_exc()}, open("$t/inspect.json", "w"))
 sys.exit(0)
 PY
-(cd "$t" && freecadcmd inspect.py > inspect.log 2>&1)
+(cd "$t" && freecadcmd fc_inspect.py > fc_inspect.log 2>&1)
 if /usr/bin/python3 - "$t/inspect.json" <<'PY'
 import json, sys
 r = json.load(open(sys.argv[1]))
 print(json.dumps({k: v for k, v in r.items() if k != "face_nodes"}))
+assert "error" not in r, r["error"]
 assert r["meshes"] == 1, r
 assert r["tets"] > 100, r
 faces = [f"Face{i}" for i in range(1, 8)]

@@ -23,7 +23,9 @@ import tempfile
 
 import FreeCAD
 
-FACE_GROUP = re.compile(r"^FACE(\d+)$")
+# FreeCAD's UNV import splits a group holding nodes and elements into NAME_Nodes and
+# NAME_Faces (NAME_Volumes, ...): the face groups come back as FACE<n>_Nodes, FACE<n>_Faces.
+FACE_GROUP = re.compile(r"^FACE(\d+)(?:_(Nodes|Edges|Faces|Volumes))?$")
 
 
 class MeshingFailed(Exception):
@@ -121,7 +123,8 @@ def read_mesh(unv):
 
 
 def rename_groups(mesh):
-    """FACE<n> -> Face<n>; the volume groups, in file order, -> Solid1, Solid2, ...
+    """FACE<n>'s node group -> Face<n>, its element group -> Face<n>_Faces; the volume
+    groups, in file order, -> Solid1, Solid2, ...
 
     FemMesh has no rename: each group is copied under its new name and the old one removed.
     """
@@ -131,7 +134,7 @@ def rename_groups(mesh):
         kind = mesh.getGroupElementType(gid)
         m = FACE_GROUP.match(name)
         if m:
-            new = f"Face{m.group(1)}"
+            new = f"Face{m.group(1)}" if kind == "Node" else f"Face{m.group(1)}_{kind}s"
         elif kind == "Volume":
             solid += 1
             new = f"Solid{solid}"
