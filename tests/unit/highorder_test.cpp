@@ -14,22 +14,12 @@
 #include "mesher/highorder/Order2.h"
 #include "mesher/highorder/QuadraticJacobian.h"
 #include "mesher/surface/SurfaceMesher.h"
+#include "tests/unit/mesh_model_fixture.h"
 
 using namespace aniso;
 using namespace aniso::test;
 
 namespace {
-
-SurfaceMesh meshModel(const Model& m, double hmax) {
-  SurfaceMesherInput in;
-  in.model = &m;
-  in.options.sizing.hmax = hmax;
-  in.options.threads = 1;
-  SurfaceMeshResult r = meshSurfaces(in);
-  EXPECT_TRUE(r.ok());
-  EXPECT_FALSE(r.mesh.triangles.empty());
-  return std::move(r.mesh);
-}
 
 Vec3 chordMid(const SurfaceMesh& m, int a, int b) { return 0.5 * (m.nodes[a] + m.nodes[b]); }
 

@@ -7,23 +7,13 @@
 #include <set>
 
 #include "contour_test_models.h"
-#include "mesher/surface/SurfaceMesher.h"
+#include "tests/unit/mesh_model_fixture.h"
 #include "mesher/volume/SplitSurfaceEdges.h"
 
 using namespace aniso;
 using namespace aniso::test;
 
 namespace {
-
-SurfaceMesh meshOf(const Model& m, double hmax) {
-  SurfaceMesherInput in;
-  in.model = &m;
-  in.options.sizing.hmax = hmax;
-  in.options.threads = 1;
-  SurfaceMeshResult r = meshSurfaces(in);
-  EXPECT_TRUE(r.ok());
-  return std::move(r.mesh);
-}
 
 double area(const SurfaceMesh& m) {
   double a = 0;
@@ -37,7 +27,7 @@ double area(const SurfaceMesh& m) {
 TEST(SplitSurfaceEdges, KeepsTheShellClosedAndPutsNodesOnTheGeometry) {
   const double r = 1, h = 2;
   const Model model = cappedCylinder(r, h);
-  SurfaceMesh mesh = meshOf(model, 0.5);
+  SurfaceMesh mesh = meshModel(model, 0.5);
   ASSERT_EQ(mesh.edgeCounts().open, 0);
   const std::size_t nodes = mesh.nodes.size(), tris = mesh.triangles.size();
   // One edge inside a face (both ends on that face's interior or anywhere), one along a
@@ -85,7 +75,7 @@ TEST(SplitSurfaceEdges, KeepsTheShellClosedAndPutsNodesOnTheGeometry) {
 
 TEST(SplitSurfaceEdges, SplitsEveryEdgeOfATriangle) {
   const Model model = unitSquare();
-  SurfaceMesh mesh = meshOf(model, 0.25);
+  SurfaceMesh mesh = meshModel(model, 0.25);
   const double before = area(mesh);
   const auto t = mesh.triangles[mesh.triangles.size() / 2];
   const std::array<int, 2> request[] = {{t[0], t[1]}, {t[1], t[2]}, {t[2], t[0]}};
