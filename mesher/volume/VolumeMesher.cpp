@@ -134,8 +134,10 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
     reportLeft(p, solid, *in.surface, rr.left);
     return p;
   }
-  const std::vector<std::string> carved = carveSolid(bt.tets, bt.boundary, bt.box);
   p.outcome.times.emplace_back("volume recovery", since(t0));
+  t0 = Clock::now();
+  const std::vector<std::string> carved = carveSolid(bt.tets, bt.boundary, bt.box);
+  p.outcome.times.emplace_back("volume carving", since(t0));
   for (const std::string& s : carved) fail(p, solidName(solid), s);
   if (!carved.empty() || !validated(p, in, bt.tets, b, "boundary recovery")) return p;
 
