@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdint>
 #include <exception>
 #include <memory>
 #include <map>
+#include <set>
 #include <mutex>
 #include <thread>
 
@@ -17,6 +19,7 @@
 #include "mesher/volume/BoundaryTriangulation.h"
 #include "mesher/volume/CarveSolid.h"
 #include "mesher/volume/SolidTetMesh.h"
+#include "mesher/volume/SplitSurfaceEdges.h"
 #include "mesher/volume/VolumeControlSpace.h"
 #include "mesher/volume/VolumeImprovement.h"
 #include "mesher/volume/VolumeRefinement.h"
@@ -33,6 +36,7 @@ struct SolidPiece {
   SolidOutcome outcome;
   std::vector<std::array<int, 4>> tets;
   std::vector<Vec3> inner;
+  std::vector<std::vector<int>> missing;  ///< surface nodes of the boundary edges/triangles not recovered
 };
 
 void fail(SolidPiece& p, const std::string& entity, const std::string& what) {
@@ -132,6 +136,7 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
   if (!rr.left.empty()) {
     p.outcome.times.emplace_back("volume recovery", since(t0));
     reportLeft(p, solid, *in.surface, rr.left);
+    for (const RecoveryFailure& f : rr.left) p.missing.push_back(f.nodes);
     return p;
   }
   p.outcome.times.emplace_back("volume recovery", since(t0));
@@ -200,24 +205,90 @@ void forEachSolid(int n, int threads, Work work) {
   if (error) std::rethrow_exception(error);
 }
 
+/// Per model face: does one of its triangles have one of the edges?
+std::vector<std::uint8_t> facesUsingEdges(const SurfaceMesh& surface, const std::vector<std::array<int, 2>>& edges,
+                                          int nf) {
+  std::set<std::pair<int, int>> keys;
+  for (const auto& e : edges) keys.insert(std::minmax(e[0], e[1]));
+  std::vector<std::uint8_t> touched(static_cast<std::size_t>(nf), 0);
+  for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
+    const auto& tr = surface.triangles[t];
+    for (int k = 0; k < 3; ++k)
+      if (keys.count(std::minmax(tr[k], tr[(k + 1) % 3]))) touched[surface.triangleFace[t]] = 1;
+  }
+  return touched;
+}
+
+/// The solids (in order) whose outer or void shells use a touched face.
+std::vector<int> solidsUsingFaces(const Model& model, const std::vector<std::uint8_t>& touched) {
+  std::vector<int> out;
+  for (int s = 0; s < static_cast<int>(model.solids.size()); ++s) {
+    std::vector<int> shells = model.solids[s].voidShells;
+    shells.push_back(model.solids[s].outerShell);
+    bool uses = false;
+    for (const int sh : shells)
+      if (sh >= 0)
+        for (const FaceUse& u : model.shells[sh].faces) uses = uses || touched[u.face];
+    if (uses) out.push_back(s);
+  }
+  return out;
+}
+
 }  // namespace
 
 bool VolumeMeshResult::ok() const {
   return std::all_of(solids.begin(), solids.end(), [](const SolidOutcome& s) { return s.status == SolidOutcome::Status::Ok; });
 }
 
-VolumeMeshResult meshVolumes(const VolumeMesherInput& in) {
-  if (!in.model || !in.surface) throw InputError("meshVolumes: no model or no surface mesh");
-  const Model& model = *in.model;
+VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
+  if (!input.model || !input.surface) throw InputError("meshVolumes: no model or no surface mesh");
+  const Model& model = *input.model;
   const int ns = static_cast<int>(model.solids.size());
-  const std::vector<std::vector<int>> faceTriangles = trianglesByFace(*in.surface, static_cast<int>(model.faces.size()));
-  std::vector<SolidPiece> pieces(static_cast<std::size_t>(ns));
-  forEachSolid(ns, in.options.threads, [&](int s) { pieces[s] = meshSolid(in, faceTriangles, s); });
-
+  const int nf = static_cast<int>(model.faces.size());
+  // The surface mesh may get boundary Steiner points (splitSurfaceEdges) between rounds.
+  SurfaceMesh surface = *input.surface;
+  VolumeMesherInput in = input;
+  in.surface = &surface;
   VolumeMeshResult r;
-  r.mesh.surface = *in.surface;
   std::map<std::string, double> timeSum;
   std::vector<std::string> timeOrder;
+  std::vector<SolidPiece> pieces(static_cast<std::size_t>(ns));
+  std::vector<int> todo(static_cast<std::size_t>(ns));
+  for (int s = 0; s < ns; ++s) todo[s] = s;
+  std::size_t firstMissing = 0;
+  for (int round = 0;; ++round) {
+    const std::vector<std::vector<int>> faceTriangles = trianglesByFace(surface, nf);
+    forEachSolid(static_cast<int>(todo.size()), in.options.threads,
+                 [&](int i) { pieces[todo[i]] = meshSolid(in, faceTriangles, todo[i]); });
+    for (const int s : todo)
+      for (const auto& [phase, sec] : pieces[s].outcome.times) {
+        if (!timeSum.count(phase)) timeOrder.push_back(phase);
+        timeSum[phase] += sec;
+      }
+    // Boundary entities no interior point could recover: split them in the surface mesh
+    // (an unrecovered triangle by its longest edge) and mesh again every solid using a
+    // face that changed, so shared faces stay conformal.
+    std::vector<std::array<int, 2>> requests;
+    for (const int s : todo)
+      for (const std::vector<int>& n : pieces[s].missing) {
+        if (n.size() == 2) requests.push_back({n[0], n[1]});
+        if (n.size() == 3) requests.push_back(longestEdge(surface, {n[0], n[1], n[2]}));
+      }
+    // Every round meshes the solids again: stop when splitting diverges (twice as many
+    // entities missing as at first), so a hopeless case does not run on.
+    if (round == 0) firstMissing = requests.size();
+    if (requests.empty() || round >= in.maxSplitRounds || requests.size() > 2 * firstMissing) break;
+    const std::vector<std::uint8_t> touched = facesUsingEdges(surface, requests, nf);
+    const SplitStats split = splitSurfaceEdges(model, surface, requests);
+    if (split.edgesSplit == 0) break;
+    ++r.splitRounds;
+    r.boundarySplits += split.edgesSplit;
+    todo = solidsUsingFaces(model, touched);
+    logDebug("volume: " + std::to_string(split.edgesSplit) + " boundary edges split; meshing " +
+             std::to_string(todo.size()) + " solids again");
+  }
+
+  r.mesh.surface = std::move(surface);
   for (int s = 0; s < ns; ++s) {
     SolidPiece& p = pieces[s];
     const int base = static_cast<int>(r.mesh.surface.nodes.size());
@@ -235,10 +306,6 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& in) {
     }
     r.recovery.merge(p.outcome.recovery);
     r.quality.merge(p.outcome.quality);
-    for (const auto& [phase, sec] : p.outcome.times) {
-      if (!timeSum.count(phase)) timeOrder.push_back(phase);
-      timeSum[phase] += sec;
-    }
     r.solids.push_back(std::move(p.outcome));
   }
   for (const std::string& phase : timeOrder) r.times.emplace_back(phase, timeSum[phase]);

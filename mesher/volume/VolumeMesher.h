@@ -15,8 +15,12 @@
 // threads; each result is stored by solid index and assembled in order, so the output is
 // identical for any number of threads.
 //
-// A solid that cannot be meshed (broken boundary mesh, unrecoverable boundary) gets no
-// tetrahedra and its problems are reported by CAD id; the others are meshed. Throws only
+// Boundary entities that recovery leaves missing are split in the surface mesh on the CAD
+// geometry (SplitSurfaceEdges.h: the boundary Steiner points of table 5.3, put where every
+// solid sharing the face sees them) and the solids using the changed faces are meshed
+// again, for at most maxSplitRounds rounds; the result's surface holds the new nodes.
+// A solid that still cannot be meshed (broken boundary mesh, unrecoverable boundary) gets
+// no tetrahedra and its problems are reported by CAD id; the others are meshed. Throws only
 // for errors that stop everything (bad input).
 #include <array>
 #include <string>
@@ -43,6 +47,11 @@ struct VolumeMesherInput {
   bool improve = true;   ///< phase 4 improvement
   bool validate = false; ///< run the validators after every phase (tests); problems fail the solid
   bool quality = true;   ///< measure the tetrahedra (TetQuality.h) for the report
+  /// The last resort of recovery (SplitSurfaceEdges.h): boundary edges and triangles left
+  /// unrecovered are split in the surface mesh, on the CAD geometry, and the solids using
+  /// the changed faces are meshed again; at most this many rounds, and only while fewer
+  /// than twice the first round's entities are missing (0: off, the solid fails).
+  int maxSplitRounds = 3;
 };
 
 struct VolumeProblem {
@@ -66,6 +75,8 @@ struct VolumeMeshResult {
   VolumeMesh mesh;
   std::vector<SolidOutcome> solids;
   RecoveryStats recovery;                             ///< summed over the solids
+  int boundarySplits = 0;  ///< surface edges split by the last resort of recovery (mesh.surface has them)
+  int splitRounds = 0;     ///< rounds of splitting and meshing again
   TetQualitySummary quality;                          ///< over all solids
   std::vector<std::pair<std::string, double>> times;  ///< phase -> seconds summed over the solids
   bool ok() const;

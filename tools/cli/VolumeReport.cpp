@@ -14,7 +14,6 @@ nlohmann::ordered_json recoveryJson(const RecoveryStats& s) {
   j["edges_recovered"] = s.edgesRecovered;
   j["faces_recovered"] = s.facesRecovered;
   j["steiner_points_inside"] = s.steinerPoints;
-  j["steiner_points_boundary"] = 0;
   j["flips23"] = s.flips.flips23;
   j["edge_removals"] = s.flips.removals;
   return j;
@@ -43,7 +42,10 @@ nlohmann::ordered_json qualityJson(const TetQualitySummary& q) {
 void fillVolumeReport(const Model& model, const VolumeMeshResult& vr, io::Report& report) {
   report.nodes = static_cast<long long>(vr.mesh.nodes().size());
   report.tetrahedra = static_cast<long long>(vr.mesh.tets.size());
+  report.triangles = static_cast<long long>(vr.mesh.surface.triangles.size());  // with boundary splits
   report.extra["recovery"] = recoveryJson(vr.recovery);
+  report.extra["recovery"]["steiner_points_boundary"] = vr.boundarySplits;
+  report.extra["recovery"]["split_rounds"] = vr.splitRounds;
   report.quality["volume"] = qualityJson(vr.quality);
   report.extra["volume"] = vr.quality.volume;
   nlohmann::ordered_json solids = nlohmann::ordered_json::array();
