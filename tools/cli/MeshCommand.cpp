@@ -58,6 +58,15 @@ void writeReport(const MeshArgs& a, const io::Report& r) {
   io::writeFileAtomically(a.report, r.toJson().dump(1) + "\n");
 }
 
+/// A meshing failure: the report (status failed, the total time) is written, no mesh, and
+/// the first failure becomes the one-line error (exit 3).
+[[noreturn]] void failRun(const MeshArgs& a, io::Report& r, std::chrono::steady_clock::time_point t0) {
+  r.status = io::RunStatus::Failed;
+  r.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  writeReport(a, r);
+  throw MeshingError(a.file + ": " + r.failures.front().entity + ": " + r.failures.front().what);
+}
+
 }  // namespace
 
 static void fillSurfaceReport(const SurfaceMeshResult& sr, io::Report& report) {
@@ -118,10 +127,7 @@ static int runVolume(const MeshArgs& args, const Model& topo, const SurfaceMesh&
   for (const auto& p : vr.times) report.times.push_back(p);
   fillVolumeReport(topo, vr, report);
   if (!vr.ok()) {
-    report.status = io::RunStatus::Failed;
-    report.totalSeconds = seconds(t0, Clock::now());
-    writeReport(args, report);
-    throw MeshingError(args.file + ": " + report.failures.front().entity + ": " + report.failures.front().what);
+    failRun(args, report, t0);
   }
   if (args.options.order == 2) elevateForOutput(topo, vr.mesh, report);
   const auto tw = Clock::now();
@@ -191,10 +197,7 @@ int runMesh(const MeshArgs& given) {
   for (const auto& p : sr.times) report.times.push_back(p);
   fillSurfaceReport(sr, report);
   if (!sr.ok()) {
-    report.status = io::RunStatus::Failed;
-    report.totalSeconds = seconds(t0, Clock::now());
-    writeReport(args, report);
-    throw MeshingError(args.file + ": " + report.failures.front().entity + ": " + report.failures.front().what);
+    failRun(args, report, t0);
   }
   io::WriteOptions wopt;
   wopt.binary = args.binary;
