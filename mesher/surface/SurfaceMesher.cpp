@@ -10,6 +10,7 @@
 
 #include "mesher/core/Error.h"
 #include "mesher/core/Log.h"
+#include "mesher/core/ParallelFor.h"
 #include "mesher/core/PredictionBoard.h"
 #include "mesher/sizing/BoundaryUpdate.h"
 #include "mesher/sizing/FaceControlSpace.h"
@@ -22,53 +23,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-/// The progress of a parallel phase: items done, and an optional detail (e.g. the predicted
-/// element count) refreshed with every report. tick() may be called from any thread.
-struct PhaseProgress {
-  PhaseProgress(const char* phase, int n, std::function<std::string()> detailFn = {})
-      : progress(phase, n), detail(std::move(detailFn)) {}
-  void tick(bool force = false) { progress.update(done.load(), detail ? detail() : std::string(), force); }
-  Progress progress;
-  std::atomic<int> done{0};
-  std::function<std::string()> detail;
-};
-
-/// Runs work(i) for i in [0, n) on `threads` threads (0 = all cores). The first exception
-/// thrown by any work item is rethrown after all threads have stopped.
-template <class Work>
-void parallelFor(int n, int threads, Work work, PhaseProgress& progress) {
-  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  threads = std::min(threads, std::max(1, n));
-  std::atomic<int> next{0};
-  std::exception_ptr error;
-  std::mutex errorMutex;
-  auto run = [&](bool) {
-    for (int i = next++; i < n; i = next++) {
-      try {
-        work(i);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(errorMutex);
-        if (!error) error = std::current_exception();
-        next = n;
-      }
-      ++progress.done;
-      progress.tick();
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(run, false);
-  run(true);
-  for (auto& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
-  progress.tick(true);  // the final state, whatever the rate limit let through
-}
-
-template <class Work>
-void parallelFor(int n, int threads, Work work, const char* phase) {
-  PhaseProgress progress(phase, n);
-  parallelFor(n, threads, work, progress);
-}
 
 bool faceMeshed(const Model& m, int f) { return !m.faces[f].loops.empty(); }
 

@@ -15,6 +15,7 @@
 
 #include "mesher/core/Error.h"
 #include "mesher/core/Log.h"
+#include "mesher/core/ParallelFor.h"
 #include "mesher/volume/BoundaryMesh.h"
 #include "mesher/volume/BoundaryTriangulation.h"
 #include "mesher/volume/CarveSolid.h"
@@ -175,36 +176,6 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
   return p;
 }
 
-/// Runs work(i) for i in [0, n) on up to `threads` threads (0 = all cores); the first
-/// exception is rethrown once every thread has stopped.
-template <class Work>
-void forEachSolid(int n, int threads, Work work) {
-  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  threads = std::clamp(threads, 1, std::max(1, n));
-  std::atomic<int> next{0};
-  std::exception_ptr error;
-  std::mutex lock;
-  Progress progress("Volume", n);
-  std::atomic<int> done{0};
-  auto worker = [&](bool reports) {
-    for (int i = next.fetch_add(1); i < n; i = next.fetch_add(1)) {
-      try {
-        work(i);
-      } catch (...) {
-        const std::lock_guard<std::mutex> g(lock);
-        if (!error) error = std::current_exception();
-      }
-      const int d = ++done;
-      if (reports) progress.update(d);
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int k = 1; k < threads; ++k) pool.emplace_back(worker, false);
-  worker(true);
-  for (std::thread& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
-}
-
 /// Per model face: does one of its triangles have one of the edges?
 std::vector<std::uint8_t> facesUsingEdges(const SurfaceMesh& surface, const std::vector<std::array<int, 2>>& edges,
                                           int nf) {
@@ -258,8 +229,8 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
   std::size_t firstMissing = 0;
   for (int round = 0;; ++round) {
     const std::vector<std::vector<int>> faceTriangles = trianglesByFace(surface, nf);
-    forEachSolid(static_cast<int>(todo.size()), in.options.threads,
-                 [&](int i) { pieces[todo[i]] = meshSolid(in, faceTriangles, todo[i]); });
+    parallelFor(static_cast<int>(todo.size()), in.options.threads,
+                [&](int i) { pieces[todo[i]] = meshSolid(in, faceTriangles, todo[i]); }, "volume");
     for (const int s : todo)
       for (const auto& [phase, sec] : pieces[s].outcome.times) {
         if (!timeSum.count(phase)) timeOrder.push_back(phase);
