@@ -8,7 +8,7 @@ pkgs=(
   libocct-data-exchange-dev libocct-modeling-algorithms-dev libocct-modeling-data-dev
   libocct-foundation-dev libocct-ocaf-dev
   libeigen3-dev libopenmesh-dev libgtest-dev libbenchmark-dev libcli11-dev
-  nlohmann-json3-dev libmuparser-dev libtbb-dev
+  nlohmann-json3-dev libmuparser-dev libtbb-dev zlib1g-dev
   gmsh python3-gmsh python3-meshio python3-numpy calculix-ccx python3-vtk9
 )
 if [ "${1:-}" = "--with-freecad" ]; then pkgs+=(freecad-python3); fi

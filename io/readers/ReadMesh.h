@@ -15,7 +15,7 @@
 //   .inp  Abaqus / CalculiX: *NODE, *ELEMENT (TYPE=C3D4 C3D10 S3 S6 S4 S8 CPS3 ... with
 //         ELSET=), *ELSET, *NSET (GENERATE too), *INCLUDE; groups: the element sets
 //   .vtu  VTK XML unstructured grid, ASCII, inline base64 ("binary") or appended (raw or
-//         base64), uncompressed; groups: "<array>=<value>" for each integer cell-data array
+//         base64), uncompressed or zlib (VtuPayload.h); groups: "<array>=<value>" for each integer cell-data array
 //   .stl .obj .off  through OpenMesh's readers (polygon soup: no faces are dropped)
 // Every reader throws InputError naming the file for a missing, unreadable, truncated or
 // malformed file, or a file that holds no element.

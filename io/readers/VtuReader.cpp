@@ -1,7 +1,7 @@
 // VTK XML unstructured grid reader (.vtu): the Piece's Points, Cells (connectivity,
 // offsets, types) and integer CellData arrays (as groups). Data arrays ASCII, inline
 // base64 ("binary") or appended (raw or base64), headers UInt32 or UInt64, little-endian,
-// uncompressed. The XML is scanned, not fully parsed: enough for the files VTK, meshio,
+// uncompressed or zlib-compressed (VtuPayload.h). The XML is scanned, not fully parsed: enough for the files VTK, meshio,
 // ParaView and our writer produce.
 #include <cctype>
 #include <cstdint>
@@ -12,6 +12,7 @@
 
 #include "io/readers/ReadMesh.h"
 #include "io/readers/Scanner.h"
+#include "io/readers/VtuPayload.h"
 #include "mesher/core/Error.h"
 
 namespace aniso::io {
@@ -34,15 +35,6 @@ struct DataArray {
   std::string_view content;     ///< text between the tags (ascii, binary)
 };
 
-bool isBase64(unsigned char c) { return std::isalnum(c) || c == '+' || c == '/'; }
-
-int base64Value(unsigned char c) {
-  if (c >= 'A' && c <= 'Z') return c - 'A';
-  if (c >= 'a' && c <= 'z') return c - 'a' + 26;
-  if (c >= '0' && c <= '9') return c - '0' + 52;
-  return c == '+' ? 62 : 63;
-}
-
 class VtuParser {
  public:
   VtuParser(const std::string& data, const std::string& path) : data_(data), path_(path) {}
@@ -52,13 +44,13 @@ class VtuParser {
   [[noreturn]] void fail(const std::string& what) const { throw InputError(path_ + ": " + what); }
   bool nextTag(std::size_t& pos, Tag& tag) const;
   std::vector<double> values(const DataArray& a) const;
-  std::vector<unsigned char> binaryBytes(const DataArray& a, std::size_t& headerBytes) const;
+  std::vector<unsigned char> binaryBytes(const DataArray& a) const;
   std::vector<double> decode(const std::string& type, const unsigned char* p, std::size_t bytes) const;
   const DataArray& cellArray(const char* name) const;
 
   const std::string& data_;
   std::string path_;
-  std::size_t headerSize_ = 4;
+  VtuEncoding encoding_;
   std::size_t appended_ = std::string::npos;  ///< first byte after '_'
   bool appendedBase64_ = false;
   std::vector<DataArray> arrays_;
@@ -136,62 +128,19 @@ std::vector<double> VtuParser::decode(const std::string& type, const unsigned ch
   fail("unsupported data array type " + type);
 }
 
-/// Header then data, decoded from base64 quantum by quantum (header and data may be encoded
-/// together or one after the other, each padded). Returns header + data bytes.
-std::vector<unsigned char> VtuParser::binaryBytes(const DataArray& a, std::size_t& headerBytes) const {
+std::vector<unsigned char> VtuParser::binaryBytes(const DataArray& a) const {
   const auto fmt = a.attr.find("format");
-  const bool appended = fmt != a.attr.end() && fmt->second == "appended";
-  std::size_t pos = 0, limit = 0;
-  const char* text = nullptr;
-  if (appended) {
-    if (appended_ == std::string::npos) fail("an appended data array but no <AppendedData>");
-    const auto off = a.attr.find("offset");
-    long long offset = 0;
-    if (off == a.attr.end() || !parseInteger(off->second, offset) || offset < 0) fail("appended data array without offset");
-    pos = appended_ + static_cast<std::size_t>(offset);
-    text = data_.data();
-    limit = data_.size();
-    if (!appendedBase64_) {  // raw: the header, then the bytes
-      if (pos + headerSize_ > limit) fail("truncated appended data");
-      std::uint64_t n = 0;
-      std::memcpy(&n, data_.data() + pos, headerSize_);  // little-endian
-      if (n > limit - pos - headerSize_) fail("truncated appended data");
-      headerBytes = headerSize_;
-      return std::vector<unsigned char>(data_.begin() + pos, data_.begin() + pos + headerSize_ + n);
-    }
-  } else {
-    text = a.content.data();
-    limit = a.content.size();
-  }
-  std::vector<unsigned char> out;
-  std::uint64_t need = headerSize_;
-  bool haveHeader = false;
-  int quantum[4], q = 0, pad = 0;
-  for (; pos < limit && out.size() < need; ++pos) {
-    const unsigned char c = static_cast<unsigned char>(text[pos]);
-    if (std::isspace(c)) continue;
-    if (c == '<') break;
-    if (!isBase64(c) && c != '=') fail("bad base64 data");
-    quantum[q++] = c == '=' ? 0 : base64Value(c);
-    pad += c == '=';
-    if (q < 4) continue;
-    const unsigned bits = (quantum[0] << 18) | (quantum[1] << 12) | (quantum[2] << 6) | quantum[3];
-    const unsigned char bytes[3] = {static_cast<unsigned char>(bits >> 16), static_cast<unsigned char>(bits >> 8),
-                                    static_cast<unsigned char>(bits)};
-    out.insert(out.end(), bytes, bytes + 3 - std::min(pad, 2));
-    q = pad = 0;
-    if (!haveHeader && out.size() >= headerSize_) {
-      std::uint64_t n = 0;
-      std::memcpy(&n, out.data(), headerSize_);
-      if (n > 4 * static_cast<std::uint64_t>(data_.size())) fail("implausible data array size");
-      need = headerSize_ + n;
-      haveHeader = true;
-    }
-  }
-  if (!haveHeader || out.size() < need) fail("truncated base64 data array");
-  out.resize(need);
-  headerBytes = headerSize_;
-  return out;
+  // zlib inflates at most ~1032:1; anything claiming more than that is corrupt.
+  const std::size_t limit = (encoding_.zlib ? 1100 : 4) * data_.size() + 1024;
+  if (fmt == a.attr.end() || fmt->second != "appended") return vtuPayload(a.content, true, encoding_, limit, path_);
+  if (appended_ == std::string::npos) fail("an appended data array but no <AppendedData>");
+  const auto off = a.attr.find("offset");
+  long long offset = 0;
+  if (off == a.attr.end() || !parseInteger(off->second, offset) || offset < 0 ||
+      appended_ + static_cast<std::size_t>(offset) > data_.size())
+    fail("appended data array without a valid offset");
+  const std::string_view rest(data_.data() + appended_ + offset, data_.size() - appended_ - offset);
+  return vtuPayload(rest, appendedBase64_, encoding_, limit, path_);
 }
 
 std::vector<double> VtuParser::values(const DataArray& a) const {
@@ -206,9 +155,8 @@ std::vector<double> VtuParser::values(const DataArray& a) const {
     return out;
   }
   if (format != "binary" && format != "appended") fail("unsupported data array format " + format);
-  std::size_t header = 0;
-  const std::vector<unsigned char> bytes = binaryBytes(a, header);
-  return decode(type->second, bytes.data() + header, bytes.size() - header);
+  const std::vector<unsigned char> bytes = binaryBytes(a);
+  return decode(type->second, bytes.data(), bytes.size());
 }
 
 const DataArray& VtuParser::cellArray(const char* name) const {
@@ -246,9 +194,11 @@ ReadMesh VtuParser::parse() {
       sawFile = true;
       if (tag.attr["type"] != "UnstructuredGrid") fail("not a VTK unstructured grid (type=\"" + tag.attr["type"] + "\")");
       if (tag.attr.count("byte_order") && tag.attr["byte_order"] != "LittleEndian") fail("big-endian VTU is not supported");
-      if (tag.attr.count("compressor") && !tag.attr["compressor"].empty())
-        fail("compressed VTU (" + tag.attr["compressor"] + ") is not supported");
-      headerSize_ = tag.attr.count("header_type") && tag.attr["header_type"] == "UInt64" ? 8 : 4;
+      const std::string compressor = tag.attr.count("compressor") ? tag.attr["compressor"] : "";
+      if (!compressor.empty() && compressor != "vtkZLibDataCompressor")
+        fail("compressed VTU (" + compressor + ") is not supported; zlib is");
+      encoding_.zlib = !compressor.empty();
+      encoding_.headerSize = tag.attr.count("header_type") && tag.attr["header_type"] == "UInt64" ? 8 : 4;
     } else if (tag.name == "Piece") {
       if (sawPiece) fail("more than one <Piece> is not supported");
       sawPiece = true;
