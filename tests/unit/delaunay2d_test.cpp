@@ -18,37 +18,13 @@
 #include "mesher/delaunay/SpatialSort.h"
 #include "mesher/delaunay/Triangulation2d.h"
 #include "mesher/delaunay/Validate2d.h"
+#include "delaunay2d_fixtures.h"
 
 using namespace aniso;
 using namespace aniso::del2d;
+using namespace aniso::del2d::testing;
 
 namespace {
-
-Box2 unitBox() {
-  Box2 b;
-  b.add(Vec2(0, 0));
-  b.add(Vec2(1, 1));
-  return b;
-}
-
-std::string joined(const std::vector<std::string>& v) {
-  std::string s;
-  for (const auto& x : v) s += x + "\n";
-  return s;
-}
-
-#define EXPECT_VALID(tri, opts)                                   \
-  do {                                                            \
-    const auto problems_ = validate(tri, opts);                   \
-    EXPECT_TRUE(problems_.empty()) << joined(problems_);          \
-  } while (0)
-
-ValidateOptions delaunayCheck(const Mat2& m = Mat2::Identity()) {
-  ValidateOptions o;
-  o.delaunay = true;
-  o.transform = m;
-  return o;
-}
 
 /// Sorted vertex triples of the live triangles.
 std::set<std::array<std::uint32_t, 3>> triangleSet(const Triangulation2d& tri) {
