@@ -16,26 +16,12 @@
 #include "mesher/core/Error.h"
 #include "mesher/geometry/SphereSurface.h"
 #include "mesher/metric/MetricComparison.h"
+#include "control_fixtures.h"
 
 using namespace aniso;
+using namespace aniso::testing;
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
-
-Box2 box2(double u0, double v0, double u1, double v1) {
-  Box2 b;
-  b.add(Vec2(u0, v0));
-  b.add(Vec2(u1, v1));
-  return b;
-}
-
-Box3 unitBox3() {
-  Box3 b;
-  b.add(Vec3::Zero());
-  b.add(Vec3::Ones());
-  return b;
-}
 
 /// The message of the exception f throws (empty if none or another type).
 template <class E, class F>
@@ -107,7 +93,7 @@ TEST(ControlAnalytic, ExpressionsIn3dWithDirections) {
   EXPECT_NEAR(m.lengthAlong(Vec3(0, 0, 1)), 0.4, 1e-12);
   const MetricExpression3d parallel({"1", "1", "1"}, {"1", "0", "0"}, {"2", "0", "0"});
   EXPECT_THROW(parallel(Vec3::Zero()), MeshingError);
-  const CSAnalytic3d cs(unitBox3(), rotated);
+  const CSAnalytic3d cs(kCube, rotated);
   EXPECT_LT(metricDifference(cs.getMetric(Vec3(0.2, 0.2, z)), m), 1e-12);
 }
 
@@ -120,7 +106,7 @@ TEST(ControlAnalytic, CallablesAndSubDomains) {
   EXPECT_NEAR(cs.getMetric(Vec2(0.75, 0.75)).sizing.lengthAlong(Vec2(1, 0)), 0.001, 1e-12);
   EXPECT_THROW(CSAnalytic2d(box2(0, 0, 1, 1), CSAnalytic2d::MetricFunction{}), InputError);
   EXPECT_THROW(CSAnalytic2d(Box2(), [](const Vec2&) { return Metric2d(); }), InputError);
-  CSAnalytic3d cs3(unitBox3(), [](const Vec3&) { return Metric3d::isotropic(0.1); });
+  CSAnalytic3d cs3(kCube, [](const Vec3&) { return Metric3d::isotropic(0.1); });
   Box3 sub;
   sub.add(Vec3(0.5, 0.5, 0.5));
   sub.add(Vec3(1, 1, 1));
@@ -140,7 +126,7 @@ TEST(ControlAnalytic, SurfaceSuppliesTheParameterizationTensor) {
 TEST(ControlAnalytic, ConcurrentQueriesMatchSerialOnes) {
   auto sphere = std::make_shared<SphereSurface>(Frame(), 1.0);
   const CSAnalytic2d cs(box2(0, 0, 2, 1), "pi/6 + u*v", "0.01 + 0.02*sin(3*u)^2", "0.0101-0.005*u", sphere, 1e-8);
-  const CSAnalytic3d cs3(unitBox3(), MetricExpression3d({"0.1+x", "0.2+y*y", "0.3+z"}, {"1", "y", "0"}, {"0", "1", "x"}));
+  const CSAnalytic3d cs3(kCube, MetricExpression3d({"0.1+x", "0.2+y*y", "0.3+z"}, {"1", "y", "0"}, {"0", "1", "x"}));
   std::mt19937 rng(1);
   std::uniform_real_distribution<double> u(0, 2), v(0, 1);
   std::vector<Vec2> pts(4000);
@@ -178,7 +164,7 @@ TEST(ControlAnalytic, ManyInstancesPerThreadStayIndependent) {
 TEST(ControlAnalytic, IdentityIsEuclidean) {
   const CSIdentity2d id2(box2(0, 0, 1, 1));
   EXPECT_EQ(id2.getMetric(Vec2(0.3, 0.3)).transformation(), Mat2::Identity());
-  const CSIdentity3d id3(unitBox3());
+  const CSIdentity3d id3(kCube);
   EXPECT_EQ(id3.getMetric(Vec3(3, 3, 3)).matrix(), Mat3::Identity());
   EXPECT_EQ(id3.revision(), 0u);
 }

@@ -27,53 +27,20 @@
 #include "mesher/metric/MetricComparison.h"
 #include "mesher/metric/MetricGradation.h"
 #include "mesher/predicates/Predicates.h"
+#include "control_fixtures.h"
 
 using namespace aniso;
+using namespace aniso::testing;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr BackgroundInterpolation kMethods[] = {BackgroundInterpolation::Single, BackgroundInterpolation::Element,
                                                 BackgroundInterpolation::Neighbourhood};
-
-Box2 box2(double u0, double v0, double u1, double v1) {
-  Box2 b;
-  b.add(Vec2(u0, v0));
-  b.add(Vec2(u1, v1));
-  return b;
-}
-
-Box3 box3(const Vec3& lo, const Vec3& hi) {
-  Box3 b;
-  b.add(lo);
-  b.add(hi);
-  return b;
-}
-
-const Box2 kSquare = box2(0, 0, 1, 1);
-const Box3 kCube = box3(Vec3::Zero(), Vec3::Ones());
 
 BackgroundMeshOptions withMethod(BackgroundInterpolation m) {
   BackgroundMeshOptions o;
   o.interpolation = m;
   return o;
-}
-
-/// The smooth rotating field of control_quadtree_test.
-Metric2d swirl(const Vec2& p) {
-  const Vec2 d = p - Vec2(0.5, -0.2);
-  const double r2 = (p - Vec2(0.5, 0.5)).squaredNorm();
-  const double h1 = 0.004 + 0.2 * r2;
-  return Metric2d::fromAngle(std::atan2(d.y(), d.x()), h1, 3 * h1);
-}
-
-/// The smooth turning field of control_octree_test.
-Metric3d twist(const Vec3& p) {
-  const double r2 = (p - Vec3(0.5, 0.5, 0.5)).squaredNorm();
-  const double h = 0.01 + 0.3 * r2;
-  const double a = 1.5 * p.z();
-  const Vec3 e1(std::cos(a), std::sin(a), 0), e2(-std::sin(a), std::cos(a), 0);
-  return Metric3d::fromDirections(e1, e2, Vec3::UnitZ(), h, 2 * h, 3 * h);
 }
 
 CSAnalytic2d constant2d(double h) {
@@ -484,19 +451,8 @@ TEST(ControlMesh2d, RandomSourcesKeepTheMeshValid) {
   SizingParameters params;
   CSMesh2d cs(box2(-1, -1, 3, 1), params);
   std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(-1.2, 3.2), v(-1.2, 1.2), h(-4, -1), a(0, kPi);
-  for (int i = 0; i < 60; ++i) {
-    const double h1 = std::pow(10, h(rng));
-    cs.insertDiscreteSource(Vec2(u(rng), v(rng)), Metric2d::fromAngle(a(rng), h1, 4 * h1));
-    ASSERT_NO_THROW(cs.validate()) << "after fresh insertion " << i;
-  }
-  cs.initializeControlVertices();
-  cs.validate();
-  for (int i = 0; i < 60; ++i) {
-    const double h1 = std::pow(10, h(rng));
-    cs.insertDiscreteSource(Vec2(u(rng), v(rng)), Metric2d::fromAngle(a(rng), h1, 4 * h1));
-    ASSERT_NO_THROW(cs.validate()) << "after update insertion " << i;
-  }
+  insertRandomSources2d(cs, rng, -1.2, 3.2, -1.2, 1.2);
+  if (::testing::Test::HasFatalFailure()) return;
   cs.setContinuousSource(CSAnalytic2d(cs.bounds(), [](const Vec2& p) { return swirl(0.25 * (p + Vec2(1, 1))); }));
   cs.validate();
   cs.smoothGradation(params.gradation);
@@ -786,14 +742,7 @@ TEST(ControlMesh3d, GridExportQueryCacheAndBadInput) {
                p3 = g.points[g.cells[4 * c + 3]];
     ASSERT_GT((p1 - p0).cross(p2 - p0).dot(p3 - p0), 0);
   }
-  MetricQueryCache3d cache(0.05);
-  const Vec3 p(0.2, 0.3, 0.4);
-  cache.get(cs, p);
-  const double h = cs.getMetric(p).axes().lengths(0);
-  cache.get(cs, p + Vec3(0.01 * h, 0, 0));
-  cache.get(cs, p + Vec3(2 * h, 0, 0));
-  EXPECT_EQ(cache.hits(), 1u);
-  EXPECT_EQ(cache.misses(), 2u);
+  expectQueryCache3d(cs);
   EXPECT_THROW(CSMesh3d(Box3(), params), InputError);
 }
 

@@ -15,36 +15,21 @@
 #include "mesher/core/Error.h"
 #include "mesher/metric/MetricComparison.h"
 #include "mesher/metric/MetricGradation.h"
+#include "control_fixtures.h"
 
 using namespace aniso;
+using namespace aniso::testing;
 
 namespace {
 
-Box3 box3(const Vec3& lo, const Vec3& hi) {
-  Box3 b;
-  b.add(lo);
-  b.add(hi);
-  return b;
-}
-
-const Box3 kUnit = box3(Vec3::Zero(), Vec3::Ones());
 
 double leafSizeAt(const CSOctree3d& cs, const Vec3& x) {
   const auto& tree = cs.structure().tree();
   return tree.nodeSize(tree.locate(x)).maxCoeff();
 }
 
-/// Smooth field whose directions turn and whose lengths grow away from (0.5, 0.5, 0.5).
-Metric3d twist(const Vec3& p) {
-  const double r2 = (p - Vec3(0.5, 0.5, 0.5)).squaredNorm();
-  const double h = 0.01 + 0.3 * r2;
-  const double a = 1.5 * p.z();
-  const Vec3 e1(std::cos(a), std::sin(a), 0), e2(-std::sin(a), std::cos(a), 0);
-  return Metric3d::fromDirections(e1, e2, Vec3::UnitZ(), h, 2 * h, 3 * h);
-}
-
 CSAnalytic3d constant(double h) {
-  return CSAnalytic3d(kUnit, [h](const Vec3&) { return Metric3d::isotropic(h); });
+  return CSAnalytic3d(kCube, [h](const Vec3&) { return Metric3d::isotropic(h); });
 }
 
 std::vector<Vec3> sphereDirections(int n) {
@@ -61,7 +46,7 @@ std::vector<Vec3> sphereDirections(int n) {
 
 TEST(ControlOctree, PointSourceRefinesAroundIt) {
   SizingParameters params;
-  CSOctree3d cs(kUnit, params);
+  CSOctree3d cs(kCube, params);
   cs.setContinuousSource(constant(0.2));
   const std::size_t before = cs.leafCount();
   const Vec3 q(0.3, 0.6, 0.45);
@@ -89,8 +74,8 @@ TEST(ControlOctree, InitialSourcesThenExtrapolation) {
 
 TEST(ControlOctree, ContinuousSourceIsWithinMetricDifferenceAtEveryLeafCentre) {
   SizingParameters params;
-  const CSAnalytic3d source(kUnit, twist);
-  CSOctree3d cs(kUnit, params);
+  const CSAnalytic3d source(kCube, twist);
+  CSOctree3d cs(kCube, params);
   cs.setContinuousSource(source);
   cs.validate();
   EXPECT_GT(cs.leafCount(), 64u);
@@ -103,8 +88,8 @@ TEST(ControlOctree, ContinuousSourceIsWithinMetricDifferenceAtEveryLeafCentre) {
 
 TEST(ControlOctree, FieldIsContinuousAcrossHangingEdgeAndFaceVertices) {
   SizingParameters params;
-  CSOctree3d cs(kUnit, params);
-  cs.setContinuousSource(CSAnalytic3d(kUnit, twist));
+  CSOctree3d cs(kCube, params);
+  cs.setContinuousSource(CSAnalytic3d(kCube, twist));
   cs.insertDiscreteSource(Vec3(0.8, 0.2, 0.3), Metric3d::isotropic(0.002));
   cs.validate();
   const auto& s = cs.structure();
@@ -162,7 +147,7 @@ TEST(ControlOctree, BalancedAfterEveryOperation) {
 
 TEST(ControlOctree, SmoothingSatisfiesTheGradationBoundOnEveryLeafEdge) {
   SizingParameters params;
-  CSOctree3d cs(kUnit, params);
+  CSOctree3d cs(kCube, params);
   cs.setContinuousSource(constant(0.25));
   cs.insertDiscreteSource(Vec3(0.5, 0.5, 0.5), Metric3d::fromDirections(Vec3(1, 1, 0), Vec3(-1, 1, 0), Vec3(0, 0, 1),
                                                                          0.002, 0.01, 0.02));
@@ -191,8 +176,8 @@ TEST(ControlOctree, SmoothingSatisfiesTheGradationBoundOnEveryLeafEdge) {
 
 TEST(ControlOctree, ConcurrentQueriesMatchSerialOnes) {
   SizingParameters params;
-  CSOctree3d cs(kUnit, params);
-  cs.setContinuousSource(CSAnalytic3d(kUnit, twist));
+  CSOctree3d cs(kCube, params);
+  cs.setContinuousSource(CSAnalytic3d(kCube, twist));
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> u(-0.1, 1.1);
   std::vector<Vec3> pts(20000);
@@ -210,8 +195,8 @@ TEST(ControlOctree, ConcurrentQueriesMatchSerialOnes) {
 
 TEST(ControlOctree, GridExportAndQueryCache) {
   SizingParameters params;
-  CSOctree3d cs(kUnit, params);
-  cs.setContinuousSource(CSAnalytic3d(kUnit, twist));
+  CSOctree3d cs(kCube, params);
+  cs.setContinuousSource(CSAnalytic3d(kCube, twist));
   const ControlSpaceGrid g = cs.grid();
   EXPECT_EQ(g.dim, 3);
   EXPECT_EQ(g.cellSize, 8);
@@ -223,12 +208,5 @@ TEST(ControlOctree, GridExportAndQueryCache) {
                p4 = g.points[g.cells[8 * c + 4]];
     ASSERT_GT((p1 - p0).cross(p3 - p0).dot(p4 - p0), 0);
   }
-  MetricQueryCache3d cache(0.05);
-  const Vec3 p(0.2, 0.3, 0.4);
-  cache.get(cs, p);
-  const double h = cs.getMetric(p).axes().lengths(0);
-  cache.get(cs, p + Vec3(0.01 * h, 0, 0));
-  cache.get(cs, p + Vec3(2 * h, 0, 0));
-  EXPECT_EQ(cache.hits(), 1u);
-  EXPECT_EQ(cache.misses(), 2u);
+  expectQueryCache3d(cs);
 }

@@ -16,32 +16,17 @@
 #include "mesher/geometry/SphereSurface.h"
 #include "mesher/metric/MetricComparison.h"
 #include "mesher/metric/MetricGradation.h"
+#include "control_fixtures.h"
 
 using namespace aniso;
+using namespace aniso::testing;
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
-
-Box2 box2(double u0, double v0, double u1, double v1) {
-  Box2 b;
-  b.add(Vec2(u0, v0));
-  b.add(Vec2(u1, v1));
-  return b;
-}
 
 /// Edge length of the leaf containing uv (largest extent).
 double leafSizeAt(const CSQuadtree2d& cs, const Vec2& uv) {
   const auto& tree = cs.structure().tree();
   return tree.nodeSize(tree.locate(uv)).maxCoeff();
-}
-
-/// A rotating, strongly varying (smooth on [0,1]²) field used to force refinement.
-Metric2d swirl(const Vec2& p) {
-  const Vec2 d = p - Vec2(0.5, -0.2);
-  const double r2 = (p - Vec2(0.5, 0.5)).squaredNorm();
-  const double h1 = 0.004 + 0.2 * r2;
-  return Metric2d::fromAngle(std::atan2(d.y(), d.x()), h1, 3 * h1);
 }
 
 std::vector<Vec2> directions(int n) {
@@ -251,19 +236,8 @@ TEST(ControlQuadtree, BalancedAfterEveryRandomInsertion) {
   SizingParameters params;
   CSQuadtree2d cs(box2(-1, -1, 3, 1), params);
   std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(-1, 3), v(-1, 1), h(-4, -1), a(0, kPi);
-  for (int i = 0; i < 60; ++i) {
-    const double h1 = std::pow(10, h(rng));
-    cs.insertDiscreteSource(Vec2(u(rng), v(rng)), Metric2d::fromAngle(a(rng), h1, 4 * h1));
-    ASSERT_NO_THROW(cs.validate()) << "after fresh insertion " << i;
-  }
-  cs.initializeControlVertices();
-  cs.validate();
-  for (int i = 0; i < 60; ++i) {
-    const double h1 = std::pow(10, h(rng));
-    cs.insertDiscreteSource(Vec2(u(rng), v(rng)), Metric2d::fromAngle(a(rng), h1, 4 * h1));
-    ASSERT_NO_THROW(cs.validate()) << "after update insertion " << i;
-  }
+  insertRandomSources2d(cs, rng, -1, 3, -1, 1);
+  if (::testing::Test::HasFatalFailure()) return;
   cs.smoothGradation(params.gradation);
   cs.validate();
 }

@@ -15,29 +15,12 @@
 #include "mesher/geometry/Circle2d.h"
 #include "mesher/metric/MetricComparison.h"
 #include "mesher/metric/MetricIntersection.h"
+#include "control_fixtures.h"
 
 using namespace aniso;
+using namespace aniso::testing;
 
 namespace {
-
-constexpr double kPi = std::numbers::pi;
-
-Box2 box2(double u0, double v0, double u1, double v1) {
-  Box2 b;
-  b.add(Vec2(u0, v0));
-  b.add(Vec2(u1, v1));
-  return b;
-}
-
-Box3 box3(const Vec3& lo, const Vec3& hi) {
-  Box3 b;
-  b.add(lo);
-  b.add(hi);
-  return b;
-}
-
-const Box2 kSquare = box2(0, 0, 1, 1);
-const Box3 kCube = box3(Vec3::Zero(), Vec3::Ones());
 
 CSQuadtree2d uniformQuadtree(double h) {
   CSQuadtree2d cs(kSquare, SizingParameters{});
