@@ -117,11 +117,10 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
       if (cs[f]) cs[f] = (quadSized[f] = std::make_unique<quad::QuadSizedSpace>(*cs[f])).get();
   ContourOptions copt;
   copt.evenSegments = in.options.quad;
-  // The boundary sources respect h_min too: below it, tiny CAD edges and sliver faces
-  // would drive the edge discretization down to round-off (measured: boundary nodes
-  // 1e-7 apart, unrecoverable edges on part.step) — see the issue note.
-  BoundaryUpdateOptions bopt;
-  bopt.hMin = in.options.sizing.hminFor(model.diagonal());
+  // The boundary sources respect h_min, or a thin face's own h_min (BoundaryUpdate.h):
+  // without a floor, tiny CAD edges and sliver faces would drive the edge discretization
+  // down to round-off (measured: boundary nodes 1e-7 apart, unrecoverable edges on part.step).
+  const double hMin = in.options.sizing.hminFor(model.diagonal());
   constexpr int kRounds = 3;
   std::vector<EdgeDiscretization> edges;
   std::vector<FaceBoundary> boundaries(nf);
@@ -134,8 +133,14 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
     if (round < kRounds) {
       parallelFor(nf, in.options.threads, [&](int f) {
         if (!cs[f]) return;
+        BoundaryUpdateOptions bopt;
+        bopt.hMin = hMin;
+        bopt.cadTolerance = model.faces[f].tolerance;
         const BoundaryUpdateStats u = updateFromBoundary(*spaces[f], boundaries[f], in.options.sizing, bopt);
         if (u.total() == 0) return;
+        logDebug("face " + std::to_string(f + 1) + " boundary sizing: " + std::to_string(u.shortSegments) +
+                 " short segments, " + std::to_string(u.gaps) + " gaps (" + std::to_string(u.unresolvedGaps) +
+                 " too narrow), h_min " + std::to_string(u.faceMinSize));
         spaces[f]->smoothGradation(in.options.sizing.gradation);
         updates += u.total();
       }, "boundary sizing");

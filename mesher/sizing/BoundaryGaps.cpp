@@ -1,0 +1,141 @@
+#include "mesher/sizing/BoundaryGaps.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/SVD>
+
+#include "mesher/core/Segment.h"
+
+namespace aniso {
+namespace {
+
+/// Path along the loop / straight distance above which two segments of one loop are two
+/// sides of a gap (see the header).
+constexpr double kGapPathRatio = 3.0;
+
+/// Bucket grid over the segments' (u, v) boxes.
+class SegmentGrid {
+ public:
+  SegmentGrid(const std::vector<BoundarySegment>& segs, const Box2& box) : box_(box) {
+    const int n = static_cast<int>(segs.size());
+    const double cells = std::max(1.0, std::sqrt(static_cast<double>(n)));
+    const Vec2 size = box.size().cwiseMax(1e-300);
+    nx_ = std::clamp(static_cast<int>(cells * size.x() / size.maxCoeff()), 1, 1024);
+    ny_ = std::clamp(static_cast<int>(cells * size.y() / size.maxCoeff()), 1, 1024);
+    cellsOf_.assign(static_cast<size_t>(nx_) * ny_, {});
+    for (int s = 0; s < n; ++s) {
+      Box2 sb;
+      sb.add(segs[s].a);
+      sb.add(segs[s].b);
+      forCells(sb, [&](int c) { cellsOf_[c].push_back(s); });
+    }
+  }
+  template <class F>
+  void forCells(const Box2& q, F f) const {
+    const Vec2 size = box_.size() + Vec2::Constant(1e-300);
+    const auto ix = [&](double x) { return std::clamp(static_cast<int>((x - box_.lo.x()) / size.x() * nx_), 0, nx_ - 1); };
+    const auto iy = [&](double y) { return std::clamp(static_cast<int>((y - box_.lo.y()) / size.y() * ny_), 0, ny_ - 1); };
+    for (int j = iy(q.lo.y()); j <= iy(q.hi.y()); ++j)
+      for (int i = ix(q.lo.x()); i <= ix(q.hi.x()); ++i) f(j * nx_ + i);
+  }
+  const std::vector<int>& cell(int c) const { return cellsOf_[c]; }
+
+ private:
+  Box2 box_;
+  int nx_ = 1, ny_ = 1;
+  std::vector<std::vector<int>> cellsOf_;
+};
+
+/// `at` ∈ [0, 1]: the position of the nearest point on t (closestSegmentParameter).
+bool sameSideOfGap(const BoundarySegment& s, const BoundarySegment& t, double at, double distance,
+                   const std::vector<double>& loopLength) {
+  if (s.loop != t.loop) return false;
+  const double d = std::abs(s.along - (t.along + (at - 0.5) * t.length));
+  const double path = std::min(d, loopLength[s.loop] - d);
+  return path <= kGapPathRatio * distance;
+}
+
+}  // namespace
+
+BoundarySegments boundarySegments(const ControlSpace2d& cs, const FaceBoundary& boundary) {
+  BoundarySegments out;
+  for (int l = 0; l < static_cast<int>(boundary.loops.size()); ++l) {
+    const auto& loop = boundary.loops[l];
+    const int n = static_cast<int>(loop.size());
+    double along = 0;
+    for (int i = 0; i < n; ++i) {
+      const BoundaryNode& a = loop[i];
+      const BoundaryNode& b = loop[(i + 1) % n];
+      const double len = (cs.getMetric(0.5 * (a.uv + b.uv)).parameterization * (b.uv - a.uv)).norm();
+      if (a.node != b.node) out.segments.push_back({a.uv, b.uv, l, along + 0.5 * len, len});  // skip pole pieces
+      along += len;
+      out.box.add(a.uv);
+      out.box.add(b.uv);
+    }
+    out.loopLength.push_back(along);
+  }
+  return out;
+}
+
+std::vector<BoundaryGap> findBoundaryGaps(const ControlSpace2d& cs, const BoundarySegments& bs, double lMin,
+                                          double minWidth) {
+  std::vector<BoundaryGap> gaps;
+  const std::vector<BoundarySegment>& segs = bs.segments;
+  if (segs.empty()) return gaps;
+  const SegmentGrid grid(segs, bs.box);
+  std::vector<int> stamp(segs.size(), -1);
+  for (int s = 0; s < static_cast<int>(segs.size()); ++s) {
+    const BoundarySegment& sg = segs[s];
+    const Vec2 mid = 0.5 * (sg.a + sg.b);
+    const SurfaceMetricAt at = cs.getMetric(mid);
+    const Mat2 m = at.transformation();
+    const Mat2& mp = at.parameterization;
+    // Search radius in (u, v): the longest (u, v) vector of metric length lMin (lMin / σ_min(M))
+    // or of real length minWidth (minWidth / σ_min(M_p)).
+    const double sMin = Eigen::JacobiSVD<Mat2>(m).singularValues()(1);
+    const double sMinP = Eigen::JacobiSVD<Mat2>(mp).singularValues()(1);
+    if (!(sMin > 0) || !(sMinP > 0)) continue;
+    const double r = std::max(lMin / sMin, minWidth / sMinP);
+    Box2 q;
+    q.add(mid - Vec2(r, r));
+    q.add(mid + Vec2(r, r));
+    BoundaryGap best;
+    best.metricWidth = HUGE_VAL;
+    grid.forCells(q, [&](int c) {
+      for (int t : grid.cell(c)) {
+        if (t == s || stamp[t] == s) continue;
+        stamp[t] = s;
+        const double param = closestSegmentParameter<Vec2>(mid, segs[t].a, segs[t].b);
+        const Vec2 p = segs[t].a + param * (segs[t].b - segs[t].a);
+        const double d = (m * (p - mid)).norm();
+        const double real = (mp * (p - mid)).norm();
+        if (d < best.metricWidth && (d < lMin || real < minWidth) && !sameSideOfGap(sg, segs[t], param, real, bs.loopLength)) {
+          best.metricWidth = d;
+          best.at = p;
+          best.other = t;
+        }
+      }
+    });
+    if (best.other < 0) continue;
+    best.segment = s;
+    best.across = mp * (best.at - mid);
+    gaps.push_back(best);
+  }
+  return gaps;
+}
+
+double thinFaceWidth(const BoundarySegments& segs, const std::vector<BoundaryGap>& gaps, double cap) {
+  double total = 0, weighted = 0;
+  for (const BoundarySegment& s : segs.segments) {
+    total += s.length;
+    weighted += s.length * cap;
+  }
+  for (const BoundaryGap& g : gaps) {
+    const double len = segs.segments[g.segment].length;
+    weighted -= len * (cap - std::min(g.width(), cap));
+  }
+  return total > 0 ? weighted / total : cap;
+}
+
+}  // namespace aniso
