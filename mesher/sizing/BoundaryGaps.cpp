@@ -47,13 +47,49 @@ class SegmentGrid {
   std::vector<std::vector<int>> cellsOf_;
 };
 
-/// `at` ∈ [0, 1]: the position of the nearest point on t (closestSegmentParameter).
-bool sameSideOfGap(const BoundarySegment& s, const BoundarySegment& t, double at, double distance,
+/// Is the point of t at parameter `at` ∈ [0, 1] (closestSegmentParameter) on the same side
+/// as the point `along` of loop `loop`, `distance` away?
+bool sameSideOfGap(int loop, double along, const BoundarySegment& t, double at, double distance,
                    const std::vector<double>& loopLength) {
-  if (s.loop != t.loop) return false;
-  const double d = std::abs(s.along - (t.along + (at - 0.5) * t.length));
-  const double path = std::min(d, loopLength[s.loop] - d);
+  if (loop != t.loop) return false;
+  const double d = std::abs(along - (t.along + (at - 0.5) * t.length));
+  const double path = std::min(d, loopLength[loop] - d);
   return path <= kGapPathRatio * distance;
+}
+
+/// The nearest point (in the metric m) of another side than the boundary point x (at
+/// `along` on loop `loop`, on segment `self`), searched within r in (u, v), that is
+/// closer than lMin in m or than minWidth in space (M_p = mp).
+struct Nearest {
+  int segment = -1;
+  Vec2 at;
+  double metric = HUGE_VAL;
+};
+Nearest nearestOtherSide(const BoundarySegments& bs, const SegmentGrid& grid, std::vector<int>& stamp, int stampId,
+                         int self, const Vec2& x, int loop, double along, const Mat2& m, const Mat2& mp, double r,
+                         double lMin, double minWidth) {
+  const std::vector<BoundarySegment>& segs = bs.segments;
+  Box2 q;
+  q.add(x - Vec2(r, r));
+  q.add(x + Vec2(r, r));
+  Nearest best;
+  grid.forCells(q, [&](int c) {
+    for (int t : grid.cell(c)) {
+      if (t == self || stamp[t] == stampId) continue;
+      stamp[t] = stampId;
+      const double param = closestSegmentParameter<Vec2>(x, segs[t].a, segs[t].b);
+      const Vec2 p = segs[t].a + param * (segs[t].b - segs[t].a);
+      const double d = (m * (p - x)).norm();
+      const double real = (mp * (p - x)).norm();
+      if (d < best.metric && (d < lMin || real < minWidth) &&
+          !sameSideOfGap(loop, along, segs[t], param, real, bs.loopLength)) {
+        best.metric = d;
+        best.at = p;
+        best.segment = t;
+      }
+    }
+  });
+  return best;
 }
 
 }  // namespace
@@ -84,7 +120,7 @@ std::vector<BoundaryGap> findBoundaryGaps(const ControlSpace2d& cs, const Bounda
   const std::vector<BoundarySegment>& segs = bs.segments;
   if (segs.empty()) return gaps;
   const SegmentGrid grid(segs, bs.box);
-  std::vector<int> stamp(segs.size(), -1);
+  std::vector<int> stamp(segs.size(), -1);  // per-query marks: segments seen through several cells
   for (int s = 0; s < static_cast<int>(segs.size()); ++s) {
     const BoundarySegment& sg = segs[s];
     const Vec2 mid = 0.5 * (sg.a + sg.b);
@@ -97,30 +133,15 @@ std::vector<BoundaryGap> findBoundaryGaps(const ControlSpace2d& cs, const Bounda
     const double sMinP = Eigen::JacobiSVD<Mat2>(mp).singularValues()(1);
     if (!(sMin > 0) || !(sMinP > 0)) continue;
     const double r = std::max(lMin / sMin, minWidth / sMinP);
-    Box2 q;
-    q.add(mid - Vec2(r, r));
-    q.add(mid + Vec2(r, r));
-    BoundaryGap best;
-    best.metricWidth = HUGE_VAL;
-    grid.forCells(q, [&](int c) {
-      for (int t : grid.cell(c)) {
-        if (t == s || stamp[t] == s) continue;
-        stamp[t] = s;
-        const double param = closestSegmentParameter<Vec2>(mid, segs[t].a, segs[t].b);
-        const Vec2 p = segs[t].a + param * (segs[t].b - segs[t].a);
-        const double d = (m * (p - mid)).norm();
-        const double real = (mp * (p - mid)).norm();
-        if (d < best.metricWidth && (d < lMin || real < minWidth) && !sameSideOfGap(sg, segs[t], param, real, bs.loopLength)) {
-          best.metricWidth = d;
-          best.at = p;
-          best.other = t;
-        }
-      }
-    });
-    if (best.other < 0) continue;
-    best.segment = s;
-    best.across = mp * (best.at - mid);
-    gaps.push_back(best);
+    const Nearest n = nearestOtherSide(bs, grid, stamp, s, s, mid, sg.loop, sg.along, m, mp, r, lMin, minWidth);
+    if (n.segment < 0) continue;
+    BoundaryGap g;
+    g.segment = s;
+    g.other = n.segment;
+    g.at = n.at;
+    g.metricWidth = n.metric;
+    g.across = mp * (n.at - mid);
+    gaps.push_back(g);
   }
   return gaps;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "mesher/core/Segment.h"
@@ -15,6 +16,8 @@ namespace {
 /// A thin face's h_min is at least this many times its CAD tolerance: below, two edges are
 /// the same curve as far as the CAD model knows.
 constexpr double kToleranceFactor = 10.0;
+/// On a thin face (h_min_f = its width) gaps down to half its h_min_f are resolved.
+constexpr double kThinFaceResolvedGap = 0.5;
 
 /// Would intersecting the control space's metric at `at` with m change it by more than
 /// eps (δ_M)? Sources that change nothing are not inserted, so the rounds of alg. 3.1 stop.
@@ -29,6 +32,37 @@ struct Source {
   Vec2 at;
   Metric2d m;
 };
+
+/// The sources of one gap (BoundaryUpdate.h): elements no longer than the gap across it, at
+/// most γ_a times that along it, at the segment's midpoint and the nearest point of the
+/// other side (the gap found there) and at the segment's ends (their distance to that other
+/// segment: a tapering gap is narrower at one end); none where the gap is narrower than
+/// `narrowest`.
+void addGapSources(const CSAdaptive2d& cs, const BoundarySegments& bs, const BoundaryGap& g, double narrowest,
+                   double hMin, const SizingParameters& params, std::vector<Source>& sources,
+                   BoundaryUpdateStats& stats) {
+  const BoundarySegment& s = bs.segments[g.segment];
+  const BoundarySegment& t = bs.segments[g.other];
+  const Mat2 mp = cs.getMetric(g.at).parameterization;
+  const auto atEnd = [&](const Vec2& e) { return (mp * (closestPointOnSegment<Vec2>(e, t.a, t.b) - e)).norm(); };
+  const std::pair<Vec2, double> samples[] = {
+      {s.a, atEnd(s.a)}, {Vec2(0.5 * (s.a + s.b)), g.width()}, {s.b, atEnd(s.b)}, {g.at, g.width()}};
+  const double angle = std::atan2(g.across.y(), g.across.x());
+  bool inserted = false, narrow = false;
+  for (const auto& [p, width] : samples) {
+    if (width < narrowest) {
+      narrow = true;
+      continue;
+    }
+    const double h = std::max(width, hMin);
+    const Metric2d m = Metric2d::fromAngle(angle, h, h * params.anisotropy);
+    if (!wouldChange(cs, p, m, params.metricDifferenceEps)) continue;
+    sources.push_back({p, m});
+    inserted = true;
+  }
+  stats.gaps += inserted;
+  stats.unresolvedGaps += narrow;
+}
 
 }  // namespace
 
@@ -47,7 +81,13 @@ BoundaryUpdateStats updateFromBoundary(CSAdaptive2d& cs, const FaceBoundary& bou
   if (bs.segments.empty()) return stats;
   std::vector<BoundaryGap> gaps = findBoundaryGaps(cs, bs, lMin, options.hMin);
   stats.faceMinSize = faceMinSize(thinFaceWidth(bs, gaps, options.hMin), options);
-  if (!options.vicinity && !(stats.faceMinSize < options.hMin)) gaps.clear();  // not a thin face
+  // A strip: most of its boundary faces another side across a gap.
+  double gapLength = 0, total = 0;
+  for (const BoundarySegment& sg : bs.segments) total += sg.length;
+  for (const BoundaryGap& g : gaps)
+    if (g.metricWidth < lMin) gapLength += bs.segments[g.segment].length;
+  const bool strip = gapLength > options.stripFraction * total;
+  if (!options.vicinity && !strip && !(stats.faceMinSize < options.hMin)) gaps.clear();
   const double hMin = stats.faceMinSize;
   std::vector<Source> sources;
   for (const BoundarySegment& sg : bs.segments) {
@@ -64,30 +104,10 @@ BoundaryUpdateStats updateFromBoundary(CSAdaptive2d& cs, const FaceBoundary& bou
       }
     }
   }
+  const double narrowest = hMin < options.hMin ? kThinFaceResolvedGap * hMin : options.resolvedGapRatio * hMin;
   for (const BoundaryGap& g : gaps) {
     if (!(g.metricWidth < lMin)) continue;  // found by its real width only: resolved already
-    // Elements no longer than the gap across it, at most γ_a times that along it, at the
-    // segment's ends and midpoint (each with the gap measured there: a tapering gap is
-    // narrower at one end) and at the nearest point of the other side.
-    const BoundarySegment& s = bs.segments[g.segment];
-    const BoundarySegment& t = bs.segments[g.other];
-    const Mat2 mp = cs.getMetric(g.at).parameterization;
-    const double angle = std::atan2(g.across.y(), g.across.x());
-    bool inserted = false, narrow = false;
-    for (const Vec2& p : {s.a, Vec2(0.5 * (s.a + s.b)), s.b, g.at}) {
-      const double width = p == g.at ? g.width() : (mp * (closestPointOnSegment<Vec2>(p, t.a, t.b) - p)).norm();
-      if (width < options.resolvedGapRatio * hMin) {
-        narrow = true;
-        continue;
-      }
-      const double h = std::max(width, hMin);
-      const Metric2d m = Metric2d::fromAngle(angle, h, h * params.anisotropy);
-      if (!wouldChange(cs, p, m, params.metricDifferenceEps)) continue;
-      sources.push_back({p, m});
-      inserted = true;
-    }
-    stats.gaps += inserted;
-    stats.unresolvedGaps += narrow;
+    addGapSources(cs, bs, g, narrowest, hMin, params, sources, stats);
   }
   for (const Source& src : sources) cs.insertDiscreteSource(src.at, src.m);
   return stats;

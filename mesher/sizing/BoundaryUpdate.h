@@ -8,27 +8,34 @@
 //   - vicinity of boundaries (BoundaryGaps.h): where two boundary segments of different
 //     sides are closer than 1/l_Mmax in the metric (a thin strip, a narrow gap, a sharp
 //     corner), sources ask for elements no longer than the gap across it (and at most γ_a
-//     times that along it), so that no triangle spans the gap: at the segment's ends and
-//     midpoint, each with the gap measured there (a tapering gap is narrower at one end),
-//     and at the nearest point of the other side. Applied to thin faces (below) always, to
-//     the others only with options.vicinity: measured on the public models at --hmax-rel
-//     0.02 --anisotropy 1, resolving every gap of every face (tapering fillet tips, wedges
-//     between tangent CAD edges) doubles the triangle count there in mediocre elements and
-//     lowers the referee's mean ratio (U_Joint_2 0.936 → 0.894, part 0.972 → 0.917,
-//     component8 0.982 → 0.914) while the needles at the tips stay (the gap ends below h_min).
+//     times that along it), so that no triangle spans the gap: at the segment's midpoint
+//     and at the nearest point of the other side with the gap found there, and at the
+//     segment's ends with their distance to that other segment (a tapering gap is
+//     narrower at one end).
+//     Applied always to thin faces (below) and to strips — faces with more than
+//     stripFraction of their boundary length across a gap: a fillet, a trailing-edge band
+//     —, to the other faces only with options.vicinity. Measured on the public models at
+//     --hmax-rel 0.02 --anisotropy 1 (tools/bench/surface_small_features.py): on every
+//     face, the rule resolves wedges between tangent CAD edges and sharp corners into many
+//     mediocre elements and lowers the referee's mean ratio (part 0.972 → 0.950,
+//     component8 0.982 → 0.917); on strips and thin faces only, the needles (η < 0.1) not
+//     forced by the CAD go U_Joint_2 52 → 26, Block 4 → 0, wing_fuselage 36 → 0,
+//     SampleCrankshaft 3 → 1, SlenderSurface 108 → 0, the others unchanged.
 //
 // The face's own h_min (faceMinSize): sizes never go below h_min, except on a thin face —
 // one whose boundary width (thinFaceWidth, BoundaryGaps.h, the mean over the boundary of
 // the gap widths capped at h_min) is below thinFaceWidth · h_min, like a strip narrower
-// than h_min along its length. Such a face gets h_min_f = its width, bounded
-// below by thinFaceRatio · h_min and by kToleranceFactor × its CAD tolerance (never above
-// h_min), so that it meshes in well-shaped elements of its own width instead of needles
-// h_min long; faces that are only locally thin (a tapering tip, a neck) keep h_min.
-// A gap narrower than resolvedGapRatio · h_min_f gets no source: elements of size h_min_f
-// cannot span it well, and refining there would only multiply the needles (the tip of two
-// CAD edges meeting at a tiny angle, two edges within tolerance of each other): left
-// coarse, it keeps few. Short-segment sources are bounded below by h_min_f too (a CAD edge
-// shorter than h_min_f does not drive the neighbourhood to round-off).
+// than h_min along its length. Such a face gets h_min_f = its width, bounded below by
+// thinFaceRatio · h_min and by kToleranceFactor × its CAD tolerance (never above h_min),
+// so that it meshes in well-shaped elements of its own width instead of needles h_min
+// long; faces that are only locally thin (a tapering tip, a neck) keep h_min.
+// Gaps narrower than resolvedGapRatio · h_min (on a thin face: half its h_min_f) get no
+// source: elements of the smallest size cannot span them well, and refining there only
+// multiplies the needles — at the tip of two CAD edges meeting at a tiny angle the gap
+// sources would carry the smallest size into the tip (measured with 0.5 instead of 2:
+// U_Joint_2's fillet tips 584 → 858 forced needles, mean ratio 0.931 → 0.914). Left
+// coarse, the tip keeps few. Short-segment sources are bounded below by h_min_f too (a CAD
+// edge shorter than h_min_f does not drive the neighbourhood to round-off).
 #include "mesher/control/CSAdaptive2d.h"
 #include "mesher/core/MeshOptions.h"
 #include "mesher/surface/FaceBoundary.h"
@@ -38,18 +45,19 @@ namespace aniso {
 struct BoundaryUpdateStats {
   int shortSegments = 0;   ///< sources from segments too short for the face's metric
   int gaps = 0;            ///< sources from boundary vicinity
-  int unresolvedGaps = 0;  ///< gaps narrower than resolvedGapRatio · h_min_f (no source)
+  int unresolvedGaps = 0;  ///< gaps too narrow to resolve (no source)
   double faceMinSize = 0;  ///< h_min_f used
   int total() const { return shortSegments + gaps; }
 };
 
 struct BoundaryUpdateOptions {
   double hMin = 0;          ///< the model's h_min (lower bound of the requested sizes)
-  bool vicinity = false;    ///< the vicinity rule on every face (thin faces always get it)
+  bool vicinity = false;    ///< the vicinity rule on every face (thin faces and strips always get it)
+  double stripFraction = 0.6;  ///< a face with more of its boundary length across a gap is a strip
   double thinFaceWidth = 0.5;     ///< a face narrower than this × h_min is thin
   double thinFaceRatio = 0.1;     ///< lowest h_min_f, relative to h_min
   double cadTolerance = 0;        ///< the face's CAD tolerance (model units)
-  double resolvedGapRatio = 0.5;  ///< narrower gaps (relative to h_min_f) get no source
+  double resolvedGapRatio = 2.0;  ///< narrower gaps (relative to h_min) get no source, thin faces aside
 };
 
 /// h_min_f of the rules above for a face whose boundary width is `width`.

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include <Eigen/Geometry>
 
@@ -133,14 +134,29 @@ TEST(SurfaceThinFace, UpdateRefinesAThinStripToItsWidth) {
   const double h = cs.getMetric(Vec2(5.5, 0)).sizing.angleLengths().h2;
   EXPECT_LT(h, 0.006);
   EXPECT_GT(h, 0.003);
-  // The same strip 0.004 wide with h_min 0.005 is not thin (width > h_min / 2): its gaps
-  // get no sources unless the vicinity rule is on for every face.
-  CSQuadtree2d cs2(box(-0.1, -0.1, 10.1, 10.1), params);
-  cs2.setContinuousSource(CSAnalytic2d(box(-0.1, -0.1, 10.1, 10.1), [](const Vec2&) { return Metric2d::isotropic(1); }));
-  o.hMin = 0.005;
-  EXPECT_EQ(updateFromBoundary(cs2, b, params, o).gaps, 0);
+  // The same strip 0.004 wide with h_min 0.0015 is not thin (width > h_min / 2) but a strip
+  // (its whole length faces the other side) wider than 2 h_min: sources of the gap's size,
+  // h_min kept. With the strip rule off (stripFraction 1) its gaps get no sources unless
+  // the vicinity rule is on for every face; with h_min 0.0025 the gap is narrower than
+  // 2 h_min and left.
+  const auto fresh = [&params] {
+    auto c = std::make_unique<CSQuadtree2d>(box(-0.1, -0.1, 10.1, 10.1), params);
+    c->setContinuousSource(CSAnalytic2d(box(-0.1, -0.1, 10.1, 10.1), [](const Vec2&) { return Metric2d::isotropic(1); }));
+    return c;
+  };
+  o.hMin = 0.0015;
+  const BoundaryUpdateStats st = updateFromBoundary(*fresh(), b, params, o);
+  EXPECT_EQ(st.faceMinSize, 0.0015);
+  EXPECT_GT(st.gaps, 0);
+  o.hMin = 0.0025;
+  const BoundaryUpdateStats narrow = updateFromBoundary(*fresh(), b, params, o);
+  EXPECT_EQ(narrow.gaps, 0);
+  EXPECT_GT(narrow.unresolvedGaps, 0);
+  o.hMin = 0.0015;
+  o.stripFraction = 1;
+  EXPECT_EQ(updateFromBoundary(*fresh(), b, params, o).gaps, 0);
   o.vicinity = true;
-  EXPECT_GT(updateFromBoundary(cs2, b, params, o).gaps, 0);
+  EXPECT_GT(updateFromBoundary(*fresh(), b, params, o).gaps, 0);
 }
 
 TEST(SurfaceThinFace, StripNarrowerThanHminMeshesWellShaped) {
