@@ -4,8 +4,9 @@
 // Every live tet K gets q(K) = S_oI / S_oK (eq. 5.2): the volume of the circumsphere of
 // the ideal (unit, regular) tet over that of K, both in the metric M_K at K's centroid;
 // q = (R_I / R_K)³ with R_I = √6/4. M_K is interpolated linearly from the vertices'
-// tensors (improve3d::VertexMetrics: one control-space call per vertex, not one per
-// evaluated tet — measured 3.5 evaluations per final tet; for a constant field the same).
+// tensors (refine/VertexTensors.h: one control-space call per vertex, the one made for the
+// insertion reused, not one per evaluated tet — measured 3.5 evaluations per final tet; a
+// tet with four isotropic vertices takes a scalar fast path).
 // When q(K) ≥ q_t but an edge of K is longer than edgeLengthMax in the metric at its
 // midpoint (the mean of its ends' tensors), q(K) = 0.95 q_t (5.5.1);
 // edges joining two surface nodes are not checked (a boundary edge cannot be shortened by

@@ -8,7 +8,7 @@
 // width; push and pop are O(1). Deterministic.
 // Lazy deletion: each tet slot carries a stamp that changes whenever the slot gets a new
 // tet; an entry whose stamp differs, or whose slot is free, is stale and skipped by pop().
-// Entries are 12 bytes.
+// Entries are 12 bytes; compactIfGrown() drops stale ones when the queue has doubled.
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -61,6 +61,19 @@ class RefineQueue {
   }
   /// Entries held, stale ones included.
   std::size_t size() const { return size_; }
+  /// Drops the stale entries (order within a bucket kept) once they may be the majority:
+  /// when the queue has doubled since the last compaction. Amortized O(1) per push; bounds
+  /// the memory of entries of tets long destroyed (the peak of the refinement).
+  void compactIfGrown(const del3d::TetMesh& mesh) {
+    if (size_ < std::max<std::size_t>(2 * compacted_, kMinCompaction)) return;
+    size_ = 0;
+    for (std::vector<Entry>& b : buckets_) {
+      std::erase_if(b, [&](const Entry& e) { return !current(mesh, e); });
+      if (b.capacity() > 2 * b.size() + 64) b.shrink_to_fit();
+      size_ += b.size();
+    }
+    compacted_ = size_;
+  }
 
  private:
   std::uint32_t stampOf(del3d::TetId t) const { return t.index < stamp_.size() ? stamp_[t.index] : 0u; }
@@ -69,7 +82,9 @@ class RefineQueue {
   std::array<std::vector<Entry>, kBuckets> buckets_;
   int lowest_ = kBuckets;
   std::size_t size_ = 0;
+  std::size_t compacted_ = 0;  // size after the last compaction
   std::vector<std::uint32_t> stamp_;
+  static constexpr std::size_t kMinCompaction = 1 << 16;
 };
 
 }  // namespace aniso::refine3d

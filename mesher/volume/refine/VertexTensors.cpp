@@ -1,0 +1,44 @@
+#include "mesher/volume/refine/VertexTensors.h"
+
+namespace aniso::refine3d {
+
+void VertexTensors::store(std::size_t v, const Mat3& m) {
+  const double s = m.trace() / 3;
+  if (s > 0 && (m - s * Mat3::Identity()).norm() <= kIsotropicTolerance * s) {
+    scale_[v] = s;
+    return;
+  }
+  scale_[v] = 0;
+  index_[v] = static_cast<std::uint32_t>(aniso_.size());
+  aniso_.push_back(m);
+}
+
+void VertexTensors::sync() {
+  const std::size_t old = scale_.size();
+  scale_.resize(mesh_.numVertices(), 1.0);
+  index_.resize(mesh_.numVertices(), 0);
+  for (std::size_t v = old; v < scale_.size(); ++v) {
+    const del3d::VertexId id(static_cast<std::uint32_t>(v));
+    if (mesh_.vertexTet(id).valid()) store(v, cs_.getMetric(mesh_.point(id)).matrix());
+  }
+}
+
+void VertexTensors::add(del3d::VertexId v, const Mat3& m) {
+  if (scale_.size() <= v.index) {
+    scale_.resize(std::size_t{v.index} + 1, 1.0);
+    index_.resize(scale_.size(), 0);
+  }
+  store(v.index, m);
+}
+
+Mat3 VertexTensors::tetMetric(const std::uint32_t* v) const {
+  return 0.25 * (at(del3d::VertexId(v[0])) + at(del3d::VertexId(v[1])) + at(del3d::VertexId(v[2])) +
+                 at(del3d::VertexId(v[3])));
+}
+
+std::size_t VertexTensors::memoryBytes() const {
+  return scale_.capacity() * sizeof(double) + index_.capacity() * sizeof(std::uint32_t) +
+         aniso_.capacity() * sizeof(Mat3);
+}
+
+}  // namespace aniso::refine3d

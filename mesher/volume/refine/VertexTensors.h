@@ -1,0 +1,59 @@
+#pragma once
+// VertexTensors — the per-vertex metric store of the refinement (thesis sec. 5.5): the
+// control space's transformation tensor at each vertex, queried once per vertex, so that the
+// metric of a tet (the mean of its four vertices' tensors, VolumeRefinement.h) costs no
+// control-space call. An isotropic tensor s·I (uniform or isotropic sizing: the common case)
+// is kept as its scale s alone (8 bytes instead of a 72-byte matrix); a tet whose four
+// vertices are isotropic has the scalar metric s̄·I with s̄ their mean — the fast path of
+// the refinement, where q(K) and the edge lengths are Euclidean ones times s̄.
+// Not thread-safe for writes.
+#include <cstdint>
+#include <vector>
+
+#include "mesher/control/ControlSpace3d.h"
+#include "mesher/delaunay3d/TetMesh.h"
+
+namespace aniso::refine3d {
+
+/// Relative off-isotropy (|M − s·I| / s) below which a tensor is stored as s·I.
+inline constexpr double kIsotropicTolerance = 1e-12;
+
+class VertexTensors {
+ public:
+  VertexTensors(const del3d::TetMesh& mesh, const ControlSpace3d& cs) : mesh_(mesh), cs_(cs) { sync(); }
+  /// Queries the tensors of the vertices added to the mesh since the last call (a vertex
+  /// in no tet gets the identity).
+  void sync();
+  /// Records m as the tensor of v, the vertex just added (its metric already queried).
+  void add(del3d::VertexId v, const Mat3& m);
+
+  bool isotropic(del3d::VertexId v) const { return scale_[v.index] > 0; }
+  /// The scale s of an isotropic tensor s·I (0 for an anisotropic one).
+  double scale(del3d::VertexId v) const { return scale_[v.index]; }
+  /// The tensor of v.
+  Mat3 at(del3d::VertexId v) const {
+    const double s = scale_[v.index];
+    return s > 0 ? Mat3(s * Mat3::Identity()) : aniso_[index_[v.index]];
+  }
+  /// True, with s̄ the mean scale, when the four vertices v[0..3] are isotropic.
+  bool tetScale(const std::uint32_t* v, double& s) const {
+    const double a = scale_[v[0]], b = scale_[v[1]], c = scale_[v[2]], d = scale_[v[3]];
+    s = 0.25 * (a + b + c + d);
+    return a > 0 && b > 0 && c > 0 && d > 0;
+  }
+  /// The mean of the four vertices' tensors.
+  Mat3 tetMetric(const std::uint32_t* v) const;
+  /// Bytes held (capacities).
+  std::size_t memoryBytes() const;
+
+ private:
+  void store(std::size_t v, const Mat3& m);
+
+  const del3d::TetMesh& mesh_;
+  const ControlSpace3d& cs_;
+  std::vector<double> scale_;         // s > 0: isotropic s·I; 0: aniso_[index_[v]]
+  std::vector<std::uint32_t> index_;  // per vertex, used when scale_ is 0
+  std::vector<Mat3> aniso_;
+};
+
+}  // namespace aniso::refine3d
