@@ -3,10 +3,12 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "mesher/metric/MeanRatio.h"
-#include "mesher/volume/improve/TetStar.h"
+#include "mesher/volume/refine/VertexTensors.h"
 
 namespace aniso {
 namespace {
@@ -77,8 +79,37 @@ void TetQualitySummary::merge(const TetQualitySummary& o) {
   muM.merge(o.muM);
 }
 
+namespace {
+
+/// Largest (referee's and true) and smallest (true) cosine of the dihedral angles of one
+/// tet from one set of unit normals (refereeNormals): meshq's cosine of pair (i, j) is
+/// −n_i·n_j; with outward normals (n0, n2 flipped relative to n1, n3 for either sign of
+/// the volume) the pairs of equal parity, (0, 2) and (1, 3), keep that sign and the four
+/// others change it.
+void cosines(const Vec3 n[4], double& trueMin, double& trueMax, double& refereeMax) {
+  trueMin = 1, trueMax = -1, refereeMax = -1;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) {
+      const double raw = std::clamp(-n[i].dot(n[j]), -1.0, 1.0);
+      const double c = ((i ^ j) & 1) ? -raw : raw;
+      trueMin = std::min(trueMin, c);
+      trueMax = std::max(trueMax, c);
+      refereeMax = std::max(refereeMax, raw);
+    }
+}
+
+}  // namespace
+
+// One pass: the angles are compared as cosines (acos is decreasing), converted once at the
+// end. The metric of a tet is the mean of its vertices' tensors and that of an edge the mean
+// of its ends' (as the refinement's edge check and the improvement measure them): one
+// control-space query per vertex instead of one per tet and one per edge.
 void accumulateTetQuality(const SolidTetMesh& s, const ControlSpace3d* cs, TetQualitySummary& out) {
   const del3d::TetMesh& mesh = s.mesh;
+  const double cosSliver = std::cos(kSliverDihedralDeg / kRadToDeg);
+  double cmin = 1, cmax = -1, refereeCmax = -1;
+  std::unique_ptr<refine3d::VertexTensors> vt;
+  if (cs) vt = std::make_unique<refine3d::VertexTensors>(mesh, *cs);
   for (std::uint32_t k = 0; k < mesh.tetSlots(); ++k) {
     const del3d::TetId t(k);
     if (!mesh.isAlive(t)) continue;
@@ -89,32 +120,64 @@ void accumulateTetQuality(const SolidTetMesh& s, const ControlSpace3d* cs, TetQu
     ++out.tets;
     out.volume += vol;
     if (vol <= 0) ++out.inverted;
-    out.meanRatio.add(meanRatio(a, b, c, d));
-    const DihedralRange r = tetDihedralRange(a, b, c, d);
-    out.minDihedral = std::min(out.minDihedral, r.minDeg);
-    out.maxDihedral = std::max(out.maxDihedral, r.maxDeg);
-    if (r.minDeg < kSliverDihedralDeg) ++out.belowDihedral;
-    out.refereeMinDihedral = std::min(out.refereeMinDihedral, refereeMinDihedral(a, b, c, d));
-    if (cs) out.etaM.add(meanRatio(cs->getMetric(0.25 * (a + b + c + d)), a, b, c, d));
+    const double eta = meanRatio(a, b, c, d);
+    out.meanRatio.add(eta);
+    Vec3 n[4];
+    refereeNormals(a, b, c, d, n);
+    double lo, hi, ref;
+    cosines(n, lo, hi, ref);
+    cmin = std::min(cmin, lo);
+    cmax = std::max(cmax, hi);
+    refereeCmax = std::max(refereeCmax, ref);
+    if (hi > cosSliver) ++out.belowDihedral;
+    if (!vt) continue;
+    double scale;
+    if (vt->tetScale(tv, scale)) {
+      out.etaM.add(eta);  // a mean of s·I tensors is isotropic: η_M = η
+    } else {
+      const Mat3 m = vt->tetMetric(tv);
+      out.etaM.add(meanRatio(Vec3(m * a), Vec3(m * b), Vec3(m * c), Vec3(m * d)));
+    }
   }
-  if (!cs) return;
-  // μ_M: each edge once, from the star of its lower-index end.
-  std::vector<del3d::TetId> star;
-  std::vector<std::uint32_t> nbr;
-  for (std::uint32_t v = 0; v < mesh.numVertices(); ++v) {
-    const del3d::VertexId vid(v);
-    if (!mesh.vertexTet(vid).valid()) continue;
-    improve3d::vertexStar(mesh, vid, star);
-    nbr.clear();
-    for (const del3d::TetId t : star)
-      for (int i = 0; i < 4; ++i)
-        if (mesh.tetVertices(t)[i] > v) nbr.push_back(mesh.tetVertices(t)[i]);
-    std::sort(nbr.begin(), nbr.end());
-    nbr.erase(std::unique(nbr.begin(), nbr.end()), nbr.end());
-    const Vec3 p = mesh.point(vid);
-    for (const std::uint32_t w : nbr) {
-      const Vec3 q = mesh.point(del3d::VertexId(w));
-      out.muM.add(cs->getMetric(0.5 * (p + q)).length(q - p));
+  if (out.tets > 0) {
+    out.minDihedral = std::min(out.minDihedral, std::acos(cmax) * kRadToDeg);
+    out.maxDihedral = std::max(out.maxDihedral, std::acos(cmin) * kRadToDeg);
+    out.refereeMinDihedral = std::min(out.refereeMinDihedral, std::acos(refereeCmax) * kRadToDeg);
+  }
+  if (!vt) return;
+  // μ_M: each edge once, from the tets around its lower-index end: a vertex -> tets
+  // incidence (compressed rows, 4 entries per tet) read row by row, the neighbours already
+  // measured marked by a stamp (no star walks, no sorting).
+  const std::size_t nv = mesh.numVertices();
+  std::vector<std::uint32_t> first(nv + 1, 0);
+  for (std::uint32_t k = 0; k < mesh.tetSlots(); ++k)
+    if (mesh.isAlive(del3d::TetId(k)))
+      for (int i = 0; i < 4; ++i) ++first[mesh.tetVertices(del3d::TetId(k))[i] + 1];
+  for (std::size_t v = 0; v < nv; ++v) first[v + 1] += first[v];
+  std::vector<std::uint32_t> incident(first[nv]);
+  {
+    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+    for (std::uint32_t k = 0; k < mesh.tetSlots(); ++k)
+      if (mesh.isAlive(del3d::TetId(k)))
+        for (int i = 0; i < 4; ++i) incident[fill[mesh.tetVertices(del3d::TetId(k))[i]]++] = k;
+  }
+  std::vector<std::uint32_t> seen(nv, del3d::kNone);
+  for (std::uint32_t v = 0; v < nv; ++v) {
+    const Vec3 p = mesh.point(del3d::VertexId(v));
+    for (std::uint32_t r = first[v]; r < first[v + 1]; ++r) {
+      const std::uint32_t* tv = mesh.tetVertices(del3d::TetId(incident[r]));
+      for (int i = 0; i < 4; ++i) {
+        const std::uint32_t w = tv[i];
+        if (w <= v || seen[w] == v) continue;
+        seen[w] = v;
+        const Vec3 dq = mesh.point(del3d::VertexId(w)) - p;
+        const double sv = vt->scale(del3d::VertexId(v)), sw = vt->scale(del3d::VertexId(w));
+        if (sv > 0 && sw > 0) {
+          out.muM.add(0.5 * (sv + sw) * dq.norm());
+        } else {
+          out.muM.add((0.5 * (vt->at(del3d::VertexId(v)) + vt->at(del3d::VertexId(w))) * dq).norm());
+        }
+      }
     }
   }
 }

@@ -12,8 +12,10 @@
 //     minimum is ≥ θ whenever every true dihedral angle lies in [θ, 180° − θ]:
 //     refereeMinDihedral reproduces it exactly (vertex-order dependent).
 //   Metric (sec. 2.5.1–2.5.2, table 5.6):
-//     η_M per tet with the control space's metric at its centroid (eq. 2.47–2.48);
-//     μ_M per unique edge with the metric at its midpoint (eq. 2.14, 2.49).
+//     η_M per tet (eq. 2.47–2.48) in the mean of its four vertices' tensors and μ_M per
+//     unique edge (eq. 2.14, 2.49) in the mean of its two ends' tensors — the linear
+//     interpolation of the control space's metric at the centroid / midpoint, as the
+//     refinement and the improvement measure them; one control-space query per vertex.
 // Stateless; accumulators merge across solids / threads (QualityStats::merge).
 #include <cstddef>
 

@@ -76,6 +76,7 @@ void reportLeft(SolidPiece& p, int solid, const SurfaceMesh& surface, const std:
 void extract(const SolidTetMesh& s, SolidPiece& p) {
   const del3d::TetMesh& m = s.mesh;
   std::vector<int> freeIndex(m.numVertices(), 0);
+  p.tets.reserve(m.numTets());  // sized once: no doubling at the peak memory of the run
   for (std::uint32_t k = 0; k < m.tetSlots(); ++k) {
     const del3d::TetId t(k);
     if (!m.isAlive(t)) continue;
@@ -171,7 +172,11 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
     p.outcome.counters.emplace_back("slivers_after", static_cast<double>(is.sliversAfter));
     if (!validated(p, in, bt.tets, b, "improvement")) return p;
   }
-  if (in.quality) accumulateTetQuality(bt.tets, cs.get(), p.outcome.quality);
+  if (in.quality) {
+    t0 = Clock::now();
+    accumulateTetQuality(bt.tets, cs.get(), p.outcome.quality);
+    p.outcome.times.emplace_back("volume quality", since(t0));
+  }
   extract(bt.tets, p);
   return p;
 }
@@ -260,6 +265,12 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
   }
 
   r.mesh.surface = std::move(surface);
+  std::size_t totalTets = 0, totalInner = 0;
+  for (const SolidPiece& p : pieces) totalTets += p.tets.size(), totalInner += p.inner.size();
+  r.mesh.tets.reserve(totalTets);
+  r.mesh.tetSolid.reserve(totalTets);
+  r.mesh.surface.nodes.reserve(r.mesh.surface.nodes.size() + totalInner);
+  r.mesh.surface.nodeOn.reserve(r.mesh.surface.nodes.size() + totalInner);
   for (int s = 0; s < ns; ++s) {
     SolidPiece& p = pieces[s];
     const int base = static_cast<int>(r.mesh.surface.nodes.size());
