@@ -116,7 +116,15 @@ void QualityFlips::run(double candidateBelow) {
   for (std::uint32_t k = 0; k < s_.mesh.tetSlots(); ++k)
     if (s_.mesh.isAlive(del3d::TetId(k)) && vm_.score(del3d::TetId(k)) < key) work.push_back(del3d::TetId(k));
   const std::size_t cap = kMaxFlipsPerTet * work.size() + counts_.total();
-  for (std::size_t k = 0; k < work.size() && counts_.total() < cap; ++k) visit(work[k], work);
+  // Created tets are visited again only when they are candidates themselves (performance:
+  // most flips leave good tets, whose visit finds nothing).
+  std::vector<del3d::TetId> created;
+  for (std::size_t k = 0; k < work.size() && counts_.total() < cap; ++k) {
+    created.clear();
+    if (!visit(work[k], created)) continue;
+    for (const del3d::TetId t : created)
+      if (s_.mesh.isAlive(t) && vm_.score(t) < key) work.push_back(t);
+  }
 }
 
 }  // namespace aniso::improve3d
