@@ -8,8 +8,10 @@
 
 #include <Eigen/Geometry>
 
+#include "mesher/core/Log.h"
 #include "mesher/volume/CavityRecovery.h"
 #include "mesher/volume/MeshQueries.h"
+#include "mesher/volume/RecoveryDiagnosis.h"
 
 namespace aniso {
 
@@ -72,6 +74,7 @@ class Recovery {
       s.edgesRecovered[phase] = static_cast<long long>(e0) - static_cast<long long>(missingEdges_.size());
       s.facesRecovered[phase] = static_cast<long long>(f0) - static_cast<long long>(missingFaces_.size());
     }
+    logLeft();
     for (const int e : missingEdges_) {
       const auto& ed = bt_.boundary.edges[e];
       r.left.push_back({bt_.boundary.triangleFace[bt_.boundary.edgeTriangle[e]],
@@ -93,6 +96,17 @@ class Recovery {
   }
 
  private:
+  /// The local configuration of every entity left missing (RecoveryDiagnosis.h), at debug level.
+  void logLeft() const {
+    const volume::IsBoundaryVertex fixed = [this](VertexId v) { return bt_.tets.isFixed(v); };
+    const std::string solid = "solid " + std::to_string(bt_.tets.solid + 1) + ": missing ";
+    for (const int e : missingEdges_)
+      logDebug(solid + volume::describeMissingEdge(mesh_, bt_.boundary.edges[e][0], bt_.boundary.edges[e][1], fixed,
+                                                   guard_));
+    for (const int f : missingFaces_)
+      logDebug(solid + volume::describeMissingTriangle(mesh_, bt_.boundary.triangles[f], fixed, guard_));
+  }
+
   /// A note on a nearly flat surface triangle (area / longest edge² below kFlatShape,
   /// 0.43 for the equilateral one): such slivers of the surface mesh leave almost no room
   /// for a point inside the solid next to them.
