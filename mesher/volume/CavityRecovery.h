@@ -1,5 +1,6 @@
 #pragma once
-// INTERIOR-CAVITY recovery (phase 2 of BoundaryRecovery.h) — what the thesis does with
+// INTERIOR-CAVITY recovery (phase 2 of BoundaryRecovery.h; steps 2-3 in CavityRegion.h,
+// step 4 in CavityStar.h) — what the thesis does with
 // vicinity and boundary points (sec. 5.4.3–5.4.4), done without ever putting a point on
 // the boundary:
 //  1 the patch I: the set of missing boundary triangles connected to the missing entity
@@ -28,6 +29,8 @@
 #include <vector>
 
 #include "mesher/volume/BoundaryTriangulation.h"
+#include "mesher/volume/CavityRegion.h"
+#include "mesher/volume/CavityStar.h"
 
 namespace aniso::volume {
 
@@ -50,6 +53,10 @@ class CavityRecovery {
   int recoverPatch(std::vector<int> seeds);
   /// Steps 2-5 for the patch: the number of new points, or a negative code (no change).
   int retriangulate(const std::vector<int>& patch);
+  /// Step 5: the cavity replaced by the two stars if they have exactly its boundary and
+  /// volume and leave no boundary node out; new apexes are added only then.
+  int replaceByStars(const Cavity& cavity, const CavitySides& sides, const Apex& in, const Apex& out,
+                     const std::vector<int>& patch);
   /// VICINITY (thesis 5.4.3) on the material side only: a point inserted (Delaunay, not
   /// across constrained faces) inside the solid near a patch no star recovers, so that
   /// the next round meets another configuration. Returns 1 when a point went in.

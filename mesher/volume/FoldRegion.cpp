@@ -168,6 +168,8 @@ bool replaceRegion(const SurfaceMesh& m, const std::vector<Tri>& tris, const std
     bend = std::max(bend, std::abs(n.dot(m.nodes[v] - centroid)));
     p.emplace_back(m.nodes[v].dot(u), m.nodes[v].dot(w));
   }
+  for (const int t : region)  // the dropped nodes too: the region is replaced, not reshaped
+    for (const int v : tris[t]) bend = std::max(bend, std::abs(n.dot(m.nodes[v] - centroid)));
   if (!(bend <= kMaxLoopBend * extent)) return false;
   std::vector<Tri> ears;
   if (!earClip(p, ears)) return false;

@@ -8,8 +8,8 @@
 //    its chord; else every triangle of the face incident to a vertex of the seeds, grown
 //    by one ring (at most kMaxRings times) until step 2 holds;
 //  2 the boundary of R as a chain (directed edges that do not cancel) is one simple loop,
-//    nearly flat (every loop node within kMaxLoopBend of the loop's extent from the plane
-//    of its vector area);
+//    and R is nearly flat (every node of R within kMaxLoopBend of the loop's extent from
+//    the plane of the loop's vector area), so the surface is not reshaped;
 //  3 the nodes inside the loop are face nodes used by R only (no other face uses them);
 //    they are dropped from the triangulation (they stay in the node array, in no element);
 //  4 the loop, projected on that plane, is triangulated by ear clipping (exact orient2d,

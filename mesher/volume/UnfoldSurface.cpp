@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <set>
 #include <utility>
@@ -18,6 +19,10 @@ using Tri = std::array<int, 3>;
 
 /// Flips per face, at most this many times the face's triangle count.
 constexpr int kFlipsPerTriangle = 2;
+/// A flip is made only where the quad is nearly flat: the volume of the tet of its four
+/// nodes at most this times the cube of its longest edge (0.118 for the regular tet), so
+/// that mending a fold never reshapes the surface itself.
+constexpr double kMaxFlipBend = 0.01;
 /// Region re-triangulations (FoldRegion.h) per face.
 constexpr int kRegionRepairsPerFace = 64;
 
@@ -58,12 +63,10 @@ class FaceTriangles {
 
   /// One improving flip on a fold, or false when there is none.
   bool flipOnce() {
-    for (const auto& [e, list] : uses_) {
-      if (list.size() != 2 || !folded(m_, tris_[list[0]], tris_[list[1]])) continue;
-      for (const int t : list)
+    for (const std::vector<int>& pair : foldedPairs())  // a copy: flips change uses_
+      for (const int t : pair)
         for (int k = 0; k < 3; ++k)
           if (tryFlip(t, tris_[t][k], tris_[t][(k + 1) % 3])) return true;
-    }
     return false;
   }
 
@@ -121,6 +124,11 @@ class FaceTriangles {
     // T = (a, b, c) and U = (b, a, d) cyclically: the quad runs a, d, b, c.
     const Tri nt = {a, d, c}, nu = {d, b, c};
     if (!(normalOf(m_, nt).norm() > 0) || !(normalOf(m_, nu).norm() > 0)) return false;
+    // The quad must be nearly flat: a flip then barely moves the surface.
+    const Vec3 pa = m_.nodes[a], pb = m_.nodes[b], pc = m_.nodes[c], pd = m_.nodes[d];
+    const double l = std::max({(pb - pa).norm(), (pc - pa).norm(), (pd - pa).norm(), (pc - pb).norm(),
+                               (pd - pb).norm(), (pd - pc).norm()});
+    if (!(std::abs((pb - pa).dot((pc - pa).cross(pd - pa))) / 6.0 <= kMaxFlipBend * l * l * l)) return false;
     const int before = quadFolds(t, u, T, U);
     const Tri oldT = T, oldU = U;
     setTriangle(t, nt);

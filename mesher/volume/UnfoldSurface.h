@@ -12,7 +12,7 @@
 //
 // Mending: edge flips inside each face (never on a CAD edge: both triangles of a flipped
 // edge belong to the face, so the rim and every face sharing it keep their triangles, and
-// no node is added or removed). A flip of an edge of a triangle on a fold is kept only if
+// no node is added or removed), only where the quad is nearly flat. A flip of an edge of a triangle on a fold is kept only if
 // it lowers the number of folded edges among the five edges of its quad and both new
 // triangles are non-degenerate; the global count of folded edges strictly decreases, so
 // the process ends. Folds no flip mends are re-triangulated as regions (FoldRegion.h).
