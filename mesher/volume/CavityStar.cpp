@@ -21,8 +21,10 @@ constexpr double kGoodVertexStar = 0.01;
 constexpr double kOffsets[] = {0.1, 0.25, 0.5, 1.0, 0.05};
 /// Margins (in units of the patch's mean edge length) of the kernel points sought.
 constexpr double kKernelMargins[] = {0.05, 0.01, 1e-3, 1e-5, 1e-7};
-/// Relaxation steps of relaxIntoKernel.
-constexpr int kRelaxIterations = 2000;
+/// Relaxation steps of relaxIntoKernel (a kernel that is not reached by then is empty or
+/// too thin for the margin; the profile of ellipses.brep showed the solver spending half
+/// of the recovery time in vain relaxations at 2000).
+constexpr int kRelaxIterations = 500;
 
 double vol6(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) { return (b - a).dot((c - a).cross(d - a)); }
 
@@ -111,10 +113,12 @@ std::vector<Vec3> apexCandidates(const TetMesh& m, const std::vector<CavityFace>
     for (int k = 0; k < 4; ++k) g += 0.25 * m.point(m.vertex(t, k));
     c.push_back(g);
   }
-  for (const double margin : kKernelMargins) {  // a point of the kernel, when one is found
+  for (const double margin : kKernelMargins) {  // a point of the kernel: the widest margin found
     Vec3 k;
-    if (relaxIntoKernel(m, side, frame.centroid + direction * 0.25 * frame.h * frame.normal, margin * frame.h, k))
+    if (relaxIntoKernel(m, side, frame.centroid + direction * 0.25 * frame.h * frame.normal, margin * frame.h, k)) {
       c.push_back(k);
+      break;
+    }
   }
   return c;
 }

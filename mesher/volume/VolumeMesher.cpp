@@ -21,6 +21,7 @@
 #include "mesher/volume/CarveSolid.h"
 #include "mesher/volume/SolidTetMesh.h"
 #include "mesher/volume/SplitSurfaceEdges.h"
+#include "mesher/volume/UnfoldSurface.h"
 #include "mesher/volume/VolumeControlSpace.h"
 #include "mesher/volume/VolumeImprovement.h"
 #include "mesher/volume/VolumeRefinement.h"
@@ -210,6 +211,18 @@ std::vector<int> solidsUsingFaces(const Model& model, const std::vector<std::uin
   return out;
 }
 
+/// A folded surface overlaps itself and no tetrahedralization contains it: mended first
+/// (UnfoldSurface.h). Quad-dominant and quadratic meshes are surface meshes only.
+void mendFolds(SurfaceMesh& surface, VolumeMeshResult& r) {
+  if (!surface.quads.empty() || !surface.triangleMid.empty()) return;
+  const UnfoldStats u = unfoldSurface(surface);
+  r.foldsRepaired = u.foldedBefore - u.foldedAfter;
+  if (u.foldedBefore > 0)
+    logDebug("volume: surface folds: " + std::to_string(u.foldedBefore) + " folded edges, " + std::to_string(u.flips) +
+             " flips, " + std::to_string(u.regions) + " regions (" + std::to_string(u.nodesDropped) +
+             " nodes dropped), " + std::to_string(u.foldedAfter) + " left");
+}
+
 }  // namespace
 
 bool VolumeMeshResult::ok() const {
@@ -226,6 +239,7 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
   VolumeMesherInput in = input;
   in.surface = &surface;
   VolumeMeshResult r;
+  mendFolds(surface, r);
   std::map<std::string, double> timeSum;
   std::vector<std::string> timeOrder;
   std::vector<SolidPiece> pieces(static_cast<std::size_t>(ns));

@@ -1,6 +1,7 @@
 #pragma once
 // VolumeMesher — the whole volume meshing process of a model (thesis 3.5.2, ch. 5), after
-// the surface mesh: for every solid, independently,
+// the surface mesh, whose folds are mended first (UnfoldSurface.h: a folded surface
+// overlaps itself, so no tetrahedralization contains it): for every solid, independently,
 //   1 its outward boundary mesh, validated closed and oriented (BoundaryMesh.h);
 //   2 the Delaunay triangulation of its boundary nodes (BoundaryTriangulation.h, 5.3);
 //   3 boundary recovery (BoundaryRecovery.h, 5.4) and removal of the outside
@@ -77,6 +78,7 @@ struct VolumeMeshResult {
   RecoveryStats recovery;                             ///< summed over the solids
   int boundarySplits = 0;  ///< surface edges split by the last resort of recovery (mesh.surface has them)
   int splitRounds = 0;     ///< rounds of splitting and meshing again
+  int foldsRepaired = 0;   ///< folded surface edges mended before meshing (UnfoldSurface.h)
   TetQualitySummary quality;                          ///< over all solids
   std::vector<std::pair<std::string, double>> times;  ///< phase -> seconds summed over the solids
   bool ok() const;

@@ -46,6 +46,7 @@ void fillVolumeReport(const Model& model, const VolumeMeshResult& vr, io::Report
   report.extra["recovery"] = recoveryJson(vr.recovery);
   report.extra["recovery"]["steiner_points_boundary"] = vr.boundarySplits;
   report.extra["recovery"]["split_rounds"] = vr.splitRounds;
+  report.extra["recovery"]["surface_folds_repaired"] = vr.foldsRepaired;
   report.quality["volume"] = qualityJson(vr.quality);
   report.extra["volume"] = vr.quality.volume;
   nlohmann::ordered_json solids = nlohmann::ordered_json::array();
