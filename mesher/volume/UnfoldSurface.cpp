@@ -218,7 +218,8 @@ UnfoldStats unfoldSurface(SurfaceMesh& mesh) {
     if (before == 0) continue;
     // 1. Flips.
     const int maxFlips = kFlipsPerTriangle * static_cast<int>(ids.size());
-    for (int n = 0; n < maxFlips && ft.flipOnce(); ++n) ++stats.flips;
+    int flips = 0;
+    for (; flips < maxFlips && ft.flipOnce(); ++flips) ++stats.flips;
     for (const int t : ids) existing.erase(sortedTri(mesh.triangles[t]));
     for (std::size_t k = 0; k < ids.size(); ++k) {
       mesh.triangles[ids[k]] = ft.triangles()[k];
@@ -229,6 +230,7 @@ UnfoldStats unfoldSurface(SurfaceMesh& mesh) {
     const int regions = repairRegions(mesh, now, useCount, existing, stats);
     stats.regions += regions;
     stats.foldedAfter += FaceTriangles(mesh, now).countFolded();
+    if (flips > 0 || regions > 0) stats.facesChanged.push_back(f);
     if (regions > 0) rebuilt[f] = std::move(now);
   }
   if (rebuilt.empty()) return stats;

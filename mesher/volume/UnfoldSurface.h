@@ -18,6 +18,8 @@
 // the process ends. Folds no flip mends are re-triangulated as regions (FoldRegion.h).
 // Faces in order, triangles in order: deterministic. The mesh must be linear (no mid
 // nodes). A face whose triangles were re-triangulated moves to the end of the list.
+#include <vector>
+
 #include "mesher/surface/SurfaceMesh.h"
 
 namespace aniso {
@@ -28,6 +30,7 @@ struct UnfoldStats {
   int flips = 0;         ///< edges flipped
   int regions = 0;       ///< regions re-triangulated (FoldRegion.h)
   int nodesDropped = 0;  ///< face nodes left in no triangle by those
+  std::vector<int> facesChanged;  ///< 0-based model faces whose triangles changed, in order
 };
 
 UnfoldStats unfoldSurface(SurfaceMesh& mesh);

@@ -213,14 +213,16 @@ std::vector<int> solidsUsingFaces(const Model& model, const std::vector<std::uin
 
 /// A folded surface overlaps itself and no tetrahedralization contains it: mended first
 /// (UnfoldSurface.h). Quad-dominant and quadratic meshes are surface meshes only.
-void mendFolds(SurfaceMesh& surface, VolumeMeshResult& r) {
-  if (!surface.quads.empty() || !surface.triangleMid.empty()) return;
+/// Returns the faces whose triangles changed.
+std::vector<int> mendFolds(SurfaceMesh& surface, VolumeMeshResult& r) {
+  if (!surface.quads.empty() || !surface.triangleMid.empty()) return {};
   const UnfoldStats u = unfoldSurface(surface);
-  r.foldsRepaired = u.foldedBefore - u.foldedAfter;
+  r.foldsRepaired += u.foldedBefore - u.foldedAfter;
   if (u.foldedBefore > 0)
     logDebug("volume: surface folds: " + std::to_string(u.foldedBefore) + " folded edges, " + std::to_string(u.flips) +
              " flips, " + std::to_string(u.regions) + " regions (" + std::to_string(u.nodesDropped) +
              " nodes dropped), " + std::to_string(u.foldedAfter) + " left");
+  return u.facesChanged;
 }
 
 }  // namespace
@@ -268,8 +270,10 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
     // entities missing as at first), so a hopeless case does not run on.
     if (round == 0) firstMissing = requests.size();
     if (requests.empty() || round >= in.maxSplitRounds || requests.size() > 2 * firstMissing) break;
-    const std::vector<std::uint8_t> touched = facesUsingEdges(surface, requests, nf);
+    std::vector<std::uint8_t> touched = facesUsingEdges(surface, requests, nf);
     const SplitStats split = splitSurfaceEdges(model, surface, requests);
+    // A split next to a sliver can fold the surface again (three nearly collinear rim nodes).
+    for (const int f : mendFolds(surface, r)) touched[f] = 1;
     if (split.edgesSplit == 0) break;
     ++r.splitRounds;
     r.boundarySplits += split.edgesSplit;
