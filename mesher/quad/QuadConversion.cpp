@@ -5,6 +5,7 @@
 #include <string>
 
 #include "mesher/core/Log.h"
+#include "mesher/quad/PoleTriangles.h"
 
 namespace aniso::quad {
 namespace {
@@ -30,6 +31,7 @@ QuadStats convertToQuads(FaceMesh& fm, const ControlSpace2d& cs, const Parametri
   const auto t0 = std::chrono::steady_clock::now();
   QuadStats st;
   QuadMesh2d mesh = QuadMesh2d::fromFaceMesh(fm);
+  const std::vector<Corners> poles = detachPoleTriangles(mesh);
   VertexMetrics metrics(mesh, cs, surface, nodes);
   st.merge = mergeFront(mesh, metrics, o.merge);
   auto pairUp = [&] {
@@ -50,6 +52,7 @@ QuadStats convertToQuads(FaceMesh& fm, const ControlSpace2d& cs, const Parametri
   if (st.paired > 0) st.smoothed += smoothQuadMesh(mesh, metrics, o.smooth).moved;
   mesh.compact();
   measure(mesh, metrics, st);
+  reattachPoleTriangles(mesh, poles);
   mesh.toFaceMesh(fm);
   st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   logDebug("quad conversion: merged " + std::to_string(st.merge.quads) + " (odd splits " +

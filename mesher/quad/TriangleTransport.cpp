@@ -4,6 +4,7 @@
 #include <array>
 #include <deque>
 
+#include "mesher/quad/ChainQuadrangulation.h"
 #include "mesher/quad/PairSplit.h"
 
 namespace aniso::quad {
@@ -194,7 +195,12 @@ class Transport {
         for (int attempt = 0; attempt < o_.partners && mesh_.isTriangle(t); ++attempt) {
           const auto paths = pathsToTriangles(mesh_, t, o_.maxPathLength, attempt + 1);
           if (static_cast<int>(paths.size()) <= attempt) break;
-          // t walks to the partner, else the partner walks to t.
+          // The chain re-quadrangulated, else t walks to the partner, else the partner to t.
+          if (quadrangulateChain(mesh_, metrics_, paths[attempt], {o_.minQuality})) {
+            ++stats_.paired;
+            ++stats_.chains;
+            break;
+          }
           int partner = paths[attempt].back();
           if (follow(t, partner) || follow(partner, t)) break;
         }

@@ -3,8 +3,9 @@
 // the boundary counts are even). A face whose boundary loops are all even has an even
 // number of triangles in every edge-connected part (3T + 4Q = 2E_i + E_b), so the
 // triangles left over can be paired up: for each one, the nearest other triangles (by a
-// breadth-first search through the elements) are tried in turn as its partner; the
-// triangle walks towards the partner's centroid — at each step, over the quads next to it,
+// breadth-first search through the elements) are tried in turn as its partner; the chain
+// of elements between the two is re-quadrangulated as a whole (ChainQuadrangulation.h), or
+// else the triangle walks towards the partner's centroid — at each step, over the quads next to it,
 // the pentagon (triangle ∪ quad) is cut into a quad and a triangle (five ways), the legal
 // cut bringing the triangle's centroid nearest to the goal taken, and only if it comes
 // nearer (so the walk ends) — until the two share an edge, and then they are merged, or,
@@ -26,6 +27,7 @@ struct TransportOptions {
 struct TransportStats {
   int paired = 0;   ///< pairs merged into quads
   int splitPairs = 0;  ///< of which split into five quads (PairSplit.h)
+  int chains = 0;      ///< of which by re-quadrangulating the chain between them (ChainQuadrangulation.h)
   int moves = 0;    ///< pentagon cuts
   int triangles = 0;  ///< live triangles left
   int failedCuts = 0;   ///< walks stuck (no legal cut brings the triangle nearer)
