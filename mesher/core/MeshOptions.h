@@ -36,10 +36,15 @@ struct SizingParameters {
   std::string check() const;
 };
 
+/// How --quad converts triangles (thesis 4.7): merging (alg. 4.4), morphing (alg. 4.5) or
+/// the mixed method (alg. 4.3).
+enum class QuadMethod { Merge, Morph, Mixed };
+
 struct MeshOptions {
   int dim = 0;          ///< 2 or 3; 0 = 3 when the model has solids, else 2
   int order = 1;        ///< 1 linear, 2 quadratic
   bool quad = false;    ///< quad-dominant surface meshes
+  QuadMethod quadMethod = QuadMethod::Merge;  ///< --quad-method
   int threads = 0;      ///< 0 = all cores
   SizingParameters sizing;
   std::string sizingFile;  ///< user sizing sources (--sizing FILE.json)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <queue>
+#include <set>
 #include <tuple>
 
 #include "mesher/quad/OddSplit.h"
@@ -83,9 +84,50 @@ class Merger {
     return out;
   }
 
+  bool useMorph(int e, int k, int level) {
+    if (o_.method == QuadMethod::Merge) return false;
+    if (o_.method == QuadMethod::Morph || level <= o_.nearBoundaryLevels) return true;
+    return metrics_.gradation(mesh_.corners[e][k], mesh_.corners[e][(k + 1) % 3]) <= o_.lowGradation;
+  }
+
+  /// A morphing step for front edge k of e; true when it changed the front (a quad or a
+  /// seam). The triangles it made (swaps, seam) are classified.
+  bool morph(int e, int k, int level) {
+    const int n0 = mesh_.numElements();
+    const MorphResult m = morphFrontEdge(mesh_, metrics_, e, k, onFront_, parity_, o_.morph);
+    grow();
+    for (int f = n0; f < mesh_.numElements(); ++f)
+      if (mesh_.isTriangle(f)) push(f);
+    if (m.quad != kNone) {
+      ++stats_.morphed;
+      created(m.quad, level);
+      return true;
+    }
+    if (m.seamVertex == kNone) {
+      ++stats_.morphFailures[static_cast<int>(m.failure)];
+      return false;
+    }
+    ++stats_.seams;
+    onFront_[m.seamVertex] = 1;
+    return true;
+  }
+
   void step(const Entry& x) {
-    const int e = x.e, k = x.k;
+    int e = x.e, k = x.k;
     const int level = frontLevel(e, k);
+    const int a = mesh_.corners[e][k], b = mesh_.corners[e][(k + 1) % 3];
+    // Morphing is tried once per front edge (its failed swaps must not cycle).
+    if (useMorph(e, k, level) && morphTried_.insert({a, b}).second) {
+      if (morph(e, k, level)) return;
+      // Fall back to merging, on the base triangle as the failed step's swaps left it.
+      if (!mesh_.isTriangle(e) || mesh_.edgeIndex(e, a, b) == kNone) {
+        e = kNone;
+        for (int f = mesh_.numElements() - 1; f >= 0 && e == kNone && f >= mesh_.numElements() - 64; --f)
+          if (mesh_.isTriangle(f) && mesh_.edgeIndex(f, a, b) != kNone) e = f;
+        if (e == kNone) return;
+        k = mesh_.edgeIndex(e, a, b);
+      }
+    }
     const int apex = mesh_.corners[e][(k + 2) % 3];
     const std::vector<Candidate> cands = candidates(e, k);
     if (cands.empty()) {
@@ -160,6 +202,7 @@ class Merger {
   const MergeOptions& o_;
   MergeStats stats_;
   RegionParity parity_;
+  std::set<std::pair<int, int>> morphTried_;
   std::vector<int> stamp_, level_;
   std::vector<std::uint8_t> onFront_;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap_;

@@ -14,8 +14,14 @@
 //     one triangle, which TriangleTransport.h pairs up later;
 //   - the new quad's edges join the front one level up, and the front edges around its
 //     corners are reclassified.
+// With morphing (method Morph or Mixed, alg. 4.3 and 4.5) the chosen front edges first try
+// a morphing step; what it cannot do is merged as above.
 // Triangles that no front edge could merge stay triangles.
+#include <array>
+
+#include "mesher/core/MeshOptions.h"
 #include "mesher/quad/FrontRank.h"
+#include "mesher/quad/MorphStep.h"
 
 namespace aniso::quad {
 
@@ -23,6 +29,14 @@ struct MergeOptions {
   double minQuality = 0.1;  ///< least scaled Jacobian (QuadShape.h elementQuality) of a merged quad
   int maxDeferrals = 6;
   FrontWeights weights;
+  /// Merge: every quad by merging. Morph: every quad by morphing (MorphStep.h), merging
+  /// where a morphing step fails. Mixed (alg. 4.3): morphing where the front edge is near
+  /// the boundary (level ≤ nearBoundaryLevels) or the metric gradation along it is low
+  /// (≤ lowGradation, VertexMetrics::gradation), merging elsewhere.
+  QuadMethod method = QuadMethod::Merge;
+  int nearBoundaryLevels = 2;
+  double lowGradation = 1.1;
+  MorphOptions morph;
 };
 
 struct MergeStats {
@@ -33,6 +47,9 @@ struct MergeStats {
   int deferred = 0;
   int rejected = 0;   ///< front edges whose triangle had no legal merge then
   int triangles = 0;  ///< live triangles left
+  int morphed = 0;    ///< of the quads, formed by morphing
+  int seams = 0;      ///< seams closed by morphing (FrontSeam.h)
+  std::array<int, 7> morphFailures{};  ///< failed morphing steps by MorphFailure
 };
 
 MergeStats mergeFront(QuadMesh2d& mesh, VertexMetrics& metrics, const MergeOptions& options = {});

@@ -53,9 +53,14 @@ QuadStats convertToQuads(FaceMesh& fm, const ControlSpace2d& cs, const Parametri
   mesh.compact();
   measure(mesh, metrics, st);
   reattachPoleTriangles(mesh, poles);
+  mesh.dropUnusedVertices();
   mesh.toFaceMesh(fm);
   st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  logDebug("quad conversion: merged " + std::to_string(st.merge.quads) + " (odd splits " +
+  logDebug("quad conversion: merged " + std::to_string(st.merge.quads) + " (morphed " + std::to_string(st.merge.morphed) +
+           ", seams " + std::to_string(st.merge.seams) + ", morph failures side/degenerate/shape/top/enclosed/parity " +
+           std::to_string(st.merge.morphFailures[1]) + "/" + std::to_string(st.merge.morphFailures[2]) + "/" +
+           std::to_string(st.merge.morphFailures[3]) + "/" + std::to_string(st.merge.morphFailures[4]) + "/" +
+           std::to_string(st.merge.morphFailures[5]) + "/" + std::to_string(st.merge.morphFailures[6]) + ", odd splits " +
            std::to_string(st.merge.oddSplits) + ", edge splits " + std::to_string(st.merge.edgeSplits) +
            ", forced " + std::to_string(st.merge.forcedOdd) + ", rejected " + std::to_string(st.merge.rejected) + "), left " + std::to_string(st.merge.triangles) +
            ", paired " + std::to_string(st.paired) + " in " + std::to_string(st.moves) + " moves (failed: " + std::to_string(st.failedCuts) + " cuts, " +

@@ -170,6 +170,26 @@ void QuadMesh2d::compact() {
   adj = std::move(a2);
 }
 
+void QuadMesh2d::dropUnusedVertices() {
+  std::vector<int> id(uv.size(), kNone);
+  for (int e = 0; e < numElements(); ++e)
+    for (int k = 0; k < sides(e); ++k) id[corners[e][k]] = 0;
+  int w = 0;
+  for (int v = 0; v < numVertices(); ++v) {
+    if (id[v] == kNone && !boundary[v] && node[v] < 0) continue;
+    id[v] = w;
+    uv[w] = uv[v];
+    node[w] = node[v];
+    boundary[w] = boundary[v];
+    ++w;
+  }
+  uv.resize(w);
+  node.resize(w);
+  boundary.resize(w);
+  for (int e = 0; e < numElements(); ++e)
+    for (int k = 0; k < sides(e); ++k) corners[e][k] = id[corners[e][k]];
+}
+
 std::vector<std::string> QuadMesh2d::validate() const {
   std::vector<std::string> bad;
   auto say = [&](int e, const std::string& what) { bad.push_back("element " + std::to_string(e) + ": " + what); };

@@ -74,6 +74,9 @@ struct QuadMesh2d {
 
   /// Drops dead elements (ids change; adjacency remapped).
   void compact();
+  /// Drops the inner vertices no live element uses (left by morphing: enclosed vertices,
+  /// seams); vertex ids change, the boundary vertices keep theirs (they come first).
+  void dropUnusedVertices();
 
   /// Structural checks, one message per problem: corner indices in range and distinct,
   /// adjacency symmetric with matching (reversed) edges, boundary edges between boundary

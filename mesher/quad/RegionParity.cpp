@@ -1,6 +1,7 @@
 #include "mesher/quad/RegionParity.h"
 
 #include <algorithm>
+#include <array>
 #include <deque>
 
 namespace aniso::quad {
@@ -11,18 +12,25 @@ int RegionParity::find(int g) {
 }
 
 bool RegionParity::mergeKeepsParity(const QuadMesh2d& mesh, int t1, int t2, int maxVisits) {
+  const std::array<int, 2> pair{t1, t2};
+  return removalKeepsParity(mesh, pair, maxVisits);
+}
+
+bool RegionParity::removalKeepsParity(const QuadMesh2d& mesh, std::span<const int> removed, int maxVisits) {
   if (static_cast<int>(mark_.size()) < mesh.numElements()) {
     mark_.resize(mesh.numElements(), 0);
     label_.resize(mesh.numElements(), 0);
   }
   ++epoch_;
-  mark_[t1] = mark_[t2] = epoch_;
-  label_[t1] = label_[t2] = -1;
+  for (int t : removed) {
+    mark_[t] = epoch_;
+    label_[t] = -1;
+  }
   // Seeds: the region triangles across the pair's outer edges, one group each.
   std::vector<std::deque<int>> queue;
   std::vector<long long> count;
   parent_.clear();
-  for (int t : {t1, t2})
+  for (int t : removed)
     for (int k = 0; k < 3; ++k) {
       const int g = mesh.adj[t][k];
       if (g == kNone || !mesh.isTriangle(g) || mark_[g] == epoch_) continue;
@@ -70,7 +78,7 @@ bool RegionParity::mergeKeepsParity(const QuadMesh2d& mesh, int t1, int t2, int 
         const int u = mesh.adj[t][k];
         if (u == kNone || !mesh.isTriangle(u)) continue;
         if (mark_[u] == epoch_) {
-          if (label_[u] < 0) continue;  // t1 or t2
+          if (label_[u] < 0) continue;  // a removed triangle
           const int a = find(g), b = find(label_[u]);
           if (a != b) {
             parent_[b] = a;

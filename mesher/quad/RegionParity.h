@@ -13,6 +13,7 @@
 // search stops when at most one piece is still growing, and the finished pieces must be
 // even (all may finish: then at most one may be odd, and only if their total is odd — the
 // component was already odd, from an earlier forced merge).
+#include <span>
 #include <vector>
 
 #include "mesher/quad/QuadMesh2d.h"
@@ -24,6 +25,9 @@ class RegionParity {
   /// True when the merge of triangles t1 and t2 keeps every region component even (or the
   /// search exceeded maxVisits, in which case the merge is allowed).
   bool mergeKeepsParity(const QuadMesh2d& mesh, int t1, int t2, int maxVisits = 200000);
+  /// The same for removing any set of live triangles (a morphed quad's, MorphStep.h); the
+  /// region then loses their count, so with an odd set the pieces' total is odd.
+  bool removalKeepsParity(const QuadMesh2d& mesh, std::span<const int> removed, int maxVisits = 200000);
 
  private:
   int find(int g);

@@ -177,7 +177,11 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
     o.problems = meshes[f].problems;
     if (meshes[f].ok()) {
       FaceMesh& fm = meshes[f].mesh;
-      if (in.options.quad) o.quad = quad::convertToQuads(fm, *spaces[f], model.faces[f].surface.get(), r.mesh.nodes);
+      if (in.options.quad) {
+        quad::QuadOptions qo;
+        qo.merge.method = in.options.quadMethod;
+        o.quad = quad::convertToQuads(fm, *spaces[f], model.faces[f].surface.get(), r.mesh.nodes, qo);
+      }
       const FaceQuality q = faceQuality(fm.uv, fm.triangles, *spaces[f]);
       o.quality = {q.eta, in.options.quad ? o.quad.mu : q.mu, q.ek};
     }

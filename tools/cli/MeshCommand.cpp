@@ -27,6 +27,10 @@ nlohmann::ordered_json optionsJson(const MeshArgs& a) {
   j["dim"] = a.options.dim;
   j["order"] = a.options.order;
   j["quad"] = a.options.quad;
+  if (a.options.quad) {
+    const QuadMethod m = a.options.quadMethod;
+    j["quad_method"] = m == QuadMethod::Merge ? "merge" : (m == QuadMethod::Morph ? "morph" : "mixed");
+  }
   j["threads"] = a.options.threads;
   j["fragment"] = a.fragment;
   j["anisotropy"] = s.anisotropy;

@@ -56,6 +56,10 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({2, 3}));
   meshCmd->add_option("--order", mesh.options.order, "Element order")->check(CLI::IsMember({1, 2}))->capture_default_str();
   meshCmd->add_flag("--quad", mesh.options.quad, "Quad-dominant surface mesh");
+  meshCmd->add_option("--quad-method", mesh.options.quadMethod, "--quad conversion: merge, morph or mixed (thesis 4.7)")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, QuadMethod>{
+          {"merge", QuadMethod::Merge}, {"morph", QuadMethod::Morph}, {"mixed", QuadMethod::Mixed}}))
+      ->capture_default_str();
   addSizingOptions(*meshCmd, mesh.options.sizing);
   meshCmd->add_option("--sizing", mesh.options.sizingFile, "User sizing sources (JSON)");
   meshCmd->add_option("--threads", mesh.options.threads, "Threads (0 = all cores)")->check(CLI::Range(0, 4096))->capture_default_str();

@@ -1,0 +1,108 @@
+#include "mesher/quad/SideEdge.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace aniso::quad {
+namespace {
+
+/// Unsigned metric angle between the rays v→x and v→y.
+double rayAngle(const QuadMesh2d& mesh, const Mat2& s, int v, int x, int y) {
+  const Vec2 p = s * (mesh.uv[x] - mesh.uv[v]), q = s * (mesh.uv[y] - mesh.uv[v]);
+  return std::abs(std::atan2(p.x() * q.y() - p.y() * q.x(), p.dot(q)));
+}
+
+/// Swaps the edge (x, y) of triangle f, shared with triangle g: (v, x, y) + (y, x, w) →
+/// (v, x, w) + (v, w, y) when both are strictly convex and counter-clockwise. Returns w, or kNone.
+int swapOpposite(QuadMesh2d& mesh, int f, int v) {
+  const int i = mesh.cornerIndex(f, v);
+  const Corners& c = mesh.corners[f];
+  const int x = c[(i + 1) % 3], y = c[(i + 2) % 3];
+  const int g = mesh.adj[f][(i + 1) % 3];
+  if (g == kNone || !mesh.isTriangle(g)) return kNone;
+  const int j = mesh.edgeIndex(g, y, x);
+  if (j == kNone) return kNone;
+  const int w = mesh.corners[g][(j + 2) % 3];
+  const std::array<Corners, 2> added{Corners{v, x, w, kNone}, Corners{v, w, y, kNone}};
+  if (!convexCCW(mesh, added[0]) || !convexCCW(mesh, added[1])) return kNone;
+  const std::array<int, 2> removed{f, g};
+  mesh.replacePatch(removed, added);
+  return w;
+}
+
+}  // namespace
+
+RegionFan regionFan(const QuadMesh2d& mesh, VertexMetrics& metrics, int v, int e, bool ccw) {
+  RegionFan fan;
+  const Mat2& s = metrics.at(v);
+  int f = e;
+  {
+    const int i = mesh.cornerIndex(f, v);
+    fan.rays.push_back(mesh.corners[f][ccw ? (i + 1) % 3 : (i + 2) % 3]);
+    fan.angle.push_back(0);
+  }
+  while (static_cast<int>(fan.triangles.size()) < 256) {
+    const int i = mesh.cornerIndex(f, v);
+    fan.triangles.push_back(f);
+    const int far = mesh.corners[f][ccw ? (i + 2) % 3 : (i + 1) % 3];
+    fan.angle.push_back(fan.angle.back() + rayAngle(mesh, s, v, fan.rays.back(), far));
+    fan.rays.push_back(far);
+    const int g = mesh.adj[f][ccw ? (i + 2) % 3 : i];
+    if (g == e) {
+      fan.closed = true;
+      break;
+    }
+    if (g == kNone || !mesh.isTriangle(g)) break;
+    f = g;
+  }
+  return fan;
+}
+
+int triangleWithEdge(const QuadMesh2d& mesh, int a, int b, int hint) {
+  if (hint == kNone || !mesh.alive(hint) || mesh.cornerIndex(hint, a) == kNone) return kNone;
+  std::vector<int> around;
+  bool closed = false;
+  mesh.star(a, hint, around, closed);
+  for (int f : around)
+    if (mesh.isTriangle(f) && mesh.edgeIndex(f, a, b) != kNone) return f;
+  return kNone;
+}
+
+SideEdge selectSideEdge(QuadMesh2d& mesh, VertexMetrics& metrics, int e, int k, bool left, const SideOptions& o) {
+  SideEdge side;
+  const int v = mesh.corners[e][left ? k : (k + 1) % 3];
+  const RegionFan fan = regionFan(mesh, metrics, v, e, left);
+  if (fan.closed) return side;
+  const double alpha = fan.angle.back();
+  if (alpha < o.sideAngle) {
+    side.vertices.push_back(fan.rays.back());
+    side.front = true;
+    return side;
+  }
+  const double half = 0.5 * alpha;
+  std::vector<std::pair<double, int>> near;
+  for (std::size_t j = 1; j + 1 < fan.rays.size(); ++j)
+    if (std::abs(fan.angle[j] - half) < o.bisectorTolerance) near.push_back({std::abs(fan.angle[j] - half), fan.rays[j]});
+  std::sort(near.begin(), near.end());
+  for (const auto& [off, v] : near) side.vertices.push_back(v);
+  if (!near.empty()) return side;
+  // The triangle the bisector runs through, its edge opposite v swapped.
+  for (std::size_t j = 0; j < fan.triangles.size(); ++j) {
+    if (!(fan.angle[j] < half && half < fan.angle[j + 1])) continue;
+    const int f = fan.triangles[j];
+    // Left: f = (v, ray j, ray j+1); right: f = (v, ray j+1, ray j). swapOpposite works on f's own order.
+    const int w = swapOpposite(mesh, f, v);
+    if (w == kNone) return side;
+    const Mat2& s = metrics.at(v);
+    const double a = fan.angle[j] + rayAngle(mesh, s, v, fan.rays[j], w);
+    if (std::abs(a - half) < o.bisectorTolerance) {
+      side.vertices.push_back(w);
+      side.swapped = true;
+    }
+    return side;
+  }
+  return side;
+}
+
+}  // namespace aniso::quad
