@@ -8,7 +8,10 @@
 //     bisector of α, closest first (the caller takes the pair of sides giving the best quad);
 //   - else the edge opposite the vertex in the triangle the bisector runs through is
 //     swapped (when both triangles are in the region and their union strictly convex), and
-//     the new edge taken when within the tolerance.
+//     the new edge taken when within the tolerance;
+//   - the best inner candidate longer (metric) than maxLengthRatio × the base edge is split
+//     at its midpoint (its two triangles become four), the midpoint taken instead (fig.
+//     4.13(b): side edges made by swapping or splitting).
 // The fan (regionFan) lists the region's triangles around the vertex from the base
 // triangle, counter-clockwise at a and clockwise at b, with the rays between them and
 // their cumulative metric angles.
@@ -19,6 +22,7 @@ namespace aniso::quad {
 struct SideOptions {
   double sideAngle = 2.35619449019234492885;          ///< 3π/4
   double bisectorTolerance = 0.52359877559829887308;  ///< π/6
+  double maxLengthRatio = 1.5;
 };
 
 struct RegionFan {
@@ -36,6 +40,7 @@ struct SideEdge {
   std::vector<int> vertices;  ///< far ends of the candidate side edges, best first; empty when none
   bool front = false;  ///< the adjacent front edge was used
   bool swapped = false;
+  bool split = false;
 };
 
 /// The side edge at the left (`left`, vertex a) or right end (vertex b) of front edge k of
