@@ -4,8 +4,9 @@ corner, measured in 3D from the written file as shared/tools/check_quad.py does)
 model is closed, area within 1% of the CAD area of the distinct faces, the report's quad block
 agreeing with the file, deterministic output.
 usage: quad_mesh_test.py CLI SHARED_DIR [--tier fast|slow]
-fast: a few small models at --hmax-rel 0.05, quad fraction >= 0.95; slow: every public model at the
-issue's sizes (--hmax-rel 0.02 --curvature-ratio 0.26 --anisotropy 1), quad fraction >= 0.98."""
+fast: a few small models at --hmax-rel 0.05, quad fraction >= 0.95, each also with --quad-method
+morph and mixed (same checks; the report names the method); slow: every public model at the issue's
+sizes (--hmax-rel 0.02 --curvature-ratio 0.26 --anisotropy 1), quad fraction >= 0.98 (default method)."""
 import filecmp, json, os, subprocess, sys, tempfile
 import numpy as np, meshio
 
@@ -38,17 +39,21 @@ def measure(path):
 
 t = tempfile.mkdtemp()
 failed, passed = [], 0
-for m in manifest:
+runs = [(m, None) for m in manifest]
+if tier == "fast": runs += [(m, meth) for meth in ("morph", "mixed") for m in manifest]
+for m, method in runs:
     out, out2, rep = (os.path.join(t, x) for x in ("a.msh", "b.msh", "r.json"))
     for x in (out, out2, rep):
         if os.path.exists(x): os.remove(x)
     cmd = [cli, "mesh", os.path.join(models, m["file"]), "--dim", "2", "--quad"] + extra
+    if method: cmd += ["--quad-method", method]
+    name = m["file"] + (f" ({method})" if method else "")
     try:
         p = subprocess.run(cmd + ["-o", out, "--report", rep], capture_output=True, text=True, timeout=900)
     except subprocess.TimeoutExpired:
-        failed.append(f"{m['file']}: timeout"); continue
+        failed.append(f"{name}: timeout"); continue
     if p.returncode != 0:
-        failed.append(f"{m['file']}: exit {p.returncode}: {p.stderr.strip()[-200:]}"); continue
+        failed.append(f"{name}: exit {p.returncode}: {p.stderr.strip()[-200:]}"); continue
     r = json.load(open(rep))
     nq, nt, sj, area, open_edges = measure(out)
     cad = r["model"]["unique_face_area"]
@@ -63,14 +68,15 @@ for m in manifest:
     qb = r["quality"].get("quad", {})
     if abs(qb.get("fraction", -1) - frac) > 1e-9: why.append("report's quad fraction differs from the file's")
     if qb.get("scaled_jacobian", {}).get("min", -1) > sj + 1e-6: why.append("report's min scaled Jacobian above the file's")
+    if r["options"].get("quad_method") != (method or "merge"): why.append(f"report's quad_method {r['options'].get('quad_method')}")
     if tier == "fast":
         subprocess.run(cmd + ["-o", out2], capture_output=True, timeout=900)
         if not filecmp.cmp(out, out2, shallow=False): why.append("output differs between two runs")
-    if why: failed.append(f"{m['file']}: " + "; ".join(why))
+    if why: failed.append(f"{name}: " + "; ".join(why))
     else:
         passed += 1
-        print(f"ok {m['file']}: {nq} quads {nt} triangles ({100 * frac:.1f}%), min scaled Jacobian {sj:.3f}, "
+        print(f"ok {name}: {nq} quads {nt} triangles ({100 * frac:.1f}%), min scaled Jacobian {sj:.3f}, "
               f"mean {qb['scaled_jacobian']['mean']:.3f}, mu_M {qb['mu_M']['mean']:.3f}", flush=True)
 for f in failed: print("FAIL", f)
-print(f"{passed}/{len(manifest)} quad meshes passed")
+print(f"{passed}/{len(runs)} quad meshes passed")
 sys.exit(1 if failed else 0)

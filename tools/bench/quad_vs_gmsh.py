@@ -2,6 +2,7 @@
 """Quad meshes side by side with Gmsh's Blossom recombination (issue 7).
 usage: tools/bench/quad_vs_gmsh.py [CLI] [--dir MODELS] [--only a.step,b.brep] [--no-gmsh | --gmsh-only]
                                   [--gmsh-cache FILE.json] [--ours-cache FILE.json] [--timeout S]
+                                  [--quad-method merge|morph|mixed]
 For every model of MODELS/MANIFEST.json: `anisomesh mesh --dim 2 --quad --hmax-rel 0.02
 --curvature-ratio 0.26 --anisotropy 1` and Gmsh 4.8 (`-2 -algo front2d`, Mesh.RecombineAll=1,
 Blossom, the same relative size and curvature sizing as shared/tools/gmsh_anchor.py), each
@@ -10,7 +11,8 @@ measured the same way as shared/tools/check_quad.py: quad fraction, scaled Jacob
 Prints one table row per model, then the means. --gmsh-cache keeps Gmsh's figures per model in
 FILE.json (read when present, written after each Gmsh run): Gmsh's side does not change between
 runs of ours (--ours-cache does the same for ours, e.g. to print the table of two separate
-runs). Needs Debian's python3-gmsh/meshio/numpy."""
+runs; keep one file per --quad-method). The last line compares the means over the models both
+mesh. Needs Debian's python3-gmsh/meshio/numpy."""
 import json, os, subprocess, sys, tempfile
 import numpy as np, meshio
 
@@ -22,6 +24,7 @@ opt = lambda k, d: args[args.index(k) + 1] if k in args else d
 d = opt("--dir", os.path.abspath(os.path.join(root, "..", "shared", "models")))
 only = opt("--only", "")
 timeout = int(opt("--timeout", "600"))
+method = opt("--quad-method", "merge")
 man = [m for m in json.load(open(os.path.join(d, "MANIFEST.json"))) if "error" not in m]
 if only: man = [m for m in man if m["file"] in only.split(",")]
 tmp = tempfile.mkdtemp()
@@ -76,14 +79,14 @@ def cell(r, why):
     return f"{100 * r['frac']:6.1f} {r['sj_min']:6.3f} {r['sj_avg']:6.3f} {r['open']:5d} {100 * r['area_rel']:+7.2f}%"
 
 print(f"{'model':<36} {'anisomesh: quad%  SJmin  SJavg  open   area':>40} | {'gmsh blossom: quad%  SJmin  SJavg  open   area':>44}")
-ours, theirs = [], []
+ours, theirs, both = [], [], []
 for m in man:
     f = os.path.join(d, m["file"])
     if "--gmsh-only" in args: a, wa = None, "skipped"
     elif m["file"] in ours_cache: a, wa = ours_cache[m["file"]]
     else:
         a, wa = run([cli, "mesh", f, "-o", f"{tmp}/a.msh", "--dim", "2", "--quad", "--hmax-rel", "0.02",
-                     "--curvature-ratio", "0.26", "--anisotropy", "1"], f"{tmp}/a.msh", m)
+                     "--curvature-ratio", "0.26", "--anisotropy", "1", "--quad-method", method], f"{tmp}/a.msh", m)
         if ours_file:
             ours_cache[m["file"]] = [a, wa]
             json.dump(ours_cache, open(ours_file, "w"))
@@ -96,7 +99,12 @@ for m in man:
             json.dump(cache, open(cache_file, "w"))
     if a: ours.append(a)
     if g: theirs.append(g)
+    if a and g: both.append((a, g))
     print(f"{m['file']:<36} {cell(a, wa):>40} | {cell(g, wg):>44}", flush=True)
 mean = lambda rows, k: np.mean([r[k] for r in rows]) if rows else float("nan")
 print(f"{'mean (meshed models)':<36} {100 * mean(ours, 'frac'):6.1f} {min([r['sj_min'] for r in ours] or [0]):6.3f} {mean(ours, 'sj_avg'):6.3f}"
       f"{'':>16} | {100 * mean(theirs, 'frac'):6.1f} {min([r['sj_min'] for r in theirs] or [0]):6.3f} {mean(theirs, 'sj_avg'):6.3f}")
+print(f"{'mean (models both mesh: ' + str(len(both)) + ')':<36} {100 * mean([a for a, _ in both], 'frac'):6.1f} "
+      f"{min([a['sj_min'] for a, _ in both] or [0]):6.3f} {mean([a for a, _ in both], 'sj_avg'):6.3f}{'':>16} | "
+      f"{100 * mean([g for _, g in both], 'frac'):6.1f} {min([g['sj_min'] for _, g in both] or [0]):6.3f} "
+      f"{mean([g for _, g in both], 'sj_avg'):6.3f}   (--quad-method {method})")
