@@ -129,12 +129,14 @@ double Refiner::evaluateIsotropic(const std::uint32_t* tv, const TetPoints& tp, 
     q = r * r * r;
   }
   if (q < o_.qualityThreshold) return q;
+  // Squared lengths against the prefilter first (local data, no root), then the boundary test.
+  const double shortEnough = o_.edgeLengthMax / (scale * kEdgePrefilter);
   for (const auto& e : kEdges) {
+    const double l2 = (tp.p[e[1]] - tp.p[e[0]]).squaredNorm();
+    if (l2 <= shortEnough * shortEnough) continue;
     const VertexId a(tv[e[0]]), b(tv[e[1]]);
     if (s_.isFixed(a) && s_.isFixed(b)) continue;
-    const double l = (tp.p[e[1]] - tp.p[e[0]]).norm();
-    if (scale * l * kEdgePrefilter <= o_.edgeLengthMax) continue;
-    if (0.5 * (vt_.scale(a) + vt_.scale(b)) * l > o_.edgeLengthMax) return 0.95 * o_.qualityThreshold;
+    if (0.5 * (vt_.scale(a) + vt_.scale(b)) * std::sqrt(l2) > o_.edgeLengthMax) return 0.95 * o_.qualityThreshold;
   }
   return q;
 }
