@@ -30,6 +30,9 @@ constexpr double kMinBudgetTets = 1e5;
 /// cube at h = 0.02: 1.07 M predicted, 1.40 M tets after refinement). Reserved pages that
 /// are never written cost no resident memory.
 constexpr double kReserveFactor = 1.5;
+/// Cap of that reservation (64 M tets, 2.2 GB): a larger mesh grows its arrays as it goes,
+/// so that a wild prediction never asks for an allocation beyond the machine.
+constexpr double kMaxReserveTets = 67108864.0;
 /// Tets per vertex of a unit mesh (5.7-5.8 measured), for the vertex arrays.
 constexpr double kTetsPerVertex = 5.5;
 /// Volume of the unit regular tet, V_M(K_I) of eq. 6.2.
@@ -90,7 +93,7 @@ class Refiner {
 };
 
 void Refiner::reserveFor(double predictedTets) {
-  const double tets = std::min(kReserveFactor * predictedTets, static_cast<double>(del3d::TetMesh::kMaxTets));
+  const double tets = std::min(kReserveFactor * predictedTets, kMaxReserveTets);
   if (!(tets > static_cast<double>(mesh_.tetSlots()))) return;
   const std::size_t nt = static_cast<std::size_t>(tets);
   mesh_.reserve(mesh_.numVertices() + static_cast<std::size_t>(tets / kTetsPerVertex), nt);
