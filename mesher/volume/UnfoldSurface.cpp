@@ -5,11 +5,13 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include <Eigen/Geometry>
 
+#include "mesher/core/Log.h"
 #include "mesher/volume/FoldRegion.h"
 
 namespace aniso {
@@ -229,7 +231,14 @@ UnfoldStats unfoldSurface(SurfaceMesh& mesh) {
     std::vector<Tri> now = ft.triangles();
     const int regions = repairRegions(mesh, now, useCount, existing, stats);
     stats.regions += regions;
-    stats.foldedAfter += FaceTriangles(mesh, now).countFolded();
+    const FaceTriangles left(mesh, now);
+    stats.foldedAfter += left.countFolded();
+    for (const std::vector<int>& pair : left.foldedPairs()) {
+      std::string tris;
+      for (const int t : pair)
+        tris += " (" + std::to_string(now[t][0]) + ", " + std::to_string(now[t][1]) + ", " + std::to_string(now[t][2]) + ")";
+      logDebug("face " + std::to_string(f + 1) + ": fold left between triangles" + tris);
+    }
     if (flips > 0 || regions > 0) stats.facesChanged.push_back(f);
     if (regions > 0) rebuilt[f] = std::move(now);
   }
