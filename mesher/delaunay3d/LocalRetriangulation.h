@@ -10,7 +10,7 @@
 
 namespace aniso::del3d {
 
-inline constexpr std::size_t kMaxLocalTets = 8;
+inline constexpr std::size_t kMaxLocalTets = 16;  // 2 per tet of an edge ring of 8 (sliver Steiner points)
 
 /// Replaces `oldTets` (distinct live tets, at most kMaxLocalTets) by tets with the vertex
 /// quadruples `newTets` (at most kMaxLocalTets, each positively oriented — not checked

@@ -48,6 +48,8 @@ VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, cons
     st.sliverFlips = ss.flips;
     st.sliverMoves = ss.moves;
     st.sliverInsertions = ss.insertions;
+    st.sliverEdgeRemovals = ss.edgeRemovals;
+    st.sliverSteinerPoints = ss.steinerPoints;
   } else {
     st.sliversBefore = st.sliversAfter = improve3d::countSlivers(s, vm, o.sliverAngleDeg, o.euclideanSliverAngleDeg);
   }

@@ -57,7 +57,8 @@ struct VolumeImproveStats {
   std::size_t flips23 = 0, flips32 = 0, flips44 = 0;
   std::size_t sliversBefore = 0;  ///< tets below sliverAngleDeg before sliver removal
   std::size_t sliversAfter = 0;
-  std::size_t sliverFlips = 0, sliverMoves = 0, sliverInsertions = 0;
+  std::size_t sliverFlips = 0, sliverMoves = 0, sliverInsertions = 0, sliverEdgeRemovals = 0,
+              sliverSteinerPoints = 0;
 };
 
 VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, const VolumeImproveOptions& o = {});

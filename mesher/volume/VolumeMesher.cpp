@@ -171,6 +171,8 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
     p.outcome.counters.emplace_back("improvement_flips", static_cast<double>(is.flips23 + is.flips32 + is.flips44));
     p.outcome.counters.emplace_back("slivers_before", static_cast<double>(is.sliversBefore));
     p.outcome.counters.emplace_back("slivers_after", static_cast<double>(is.sliversAfter));
+    p.outcome.counters.emplace_back("sliver_edge_removals", static_cast<double>(is.sliverEdgeRemovals));
+    p.outcome.counters.emplace_back("sliver_steiner_points", static_cast<double>(is.sliverSteinerPoints));
     if (!validated(p, in, bt.tets, b, "improvement")) return p;
   }
   if (in.quality) {

@@ -7,7 +7,9 @@
 
 #include "mesher/delaunay3d/Inserter.h"
 #include "mesher/delaunay3d/Locate.h"
+#include "mesher/volume/improve/QualityEdgeRemoval.h"
 #include "mesher/volume/improve/QualityFlips.h"
+#include "mesher/volume/improve/SliverSteinerPoint.h"
 #include "mesher/volume/improve/TetStar.h"
 #include "mesher/volume/improve/VertexMover.h"
 #include "mesher/volume/refine/TetMetricGeometry.h"
@@ -40,9 +42,11 @@ class SliverRemover {
   bool isSliver(TetId t) const { return s_.mesh.isAlive(t) && vm_.isSliver(t, angle_, euclidean_); }
   bool attack(TetId t);
   bool flipAway(TetId t);
+  bool removeEdges(TetId t);
   void candidates(TetId t, std::vector<Vec3>& out) const;
   bool insertAt(TetId t, const Vec3& c);
   bool insertPoint(TetId t);
+  bool steinerPoint(TetId t);
 
   SolidTetMesh& s_;
   const ControlSpace3d& cs_;
@@ -65,6 +69,23 @@ bool SliverRemover::flipAway(TetId t) {
     if (isSliver(created_[k])) flips_.visit(created_[k], created_);
   stats.flips += flips_.counts().total() - before;
   return true;
+}
+
+// Removal of one of t's edges whose ring is too large for T32/T44, then flips of the created
+// slivers.
+bool SliverRemover::removeEdges(TetId t) {
+  static constexpr int kEdge[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+  created_.clear();
+  for (const auto& e : kEdge) {
+    if (!removeEdgeByQuality(s_, vm_, t, e[0], e[1], created_)) continue;
+    ++stats.edgeRemovals;
+    const std::size_t before = flips_.counts().total();
+    for (std::size_t k = 0; k < created_.size() && k < 64; ++k)
+      if (isSliver(created_[k])) flips_.visit(created_[k], created_);
+    stats.flips += flips_.counts().total() - before;
+    return true;
+  }
+  return false;
 }
 
 // The candidate points of step 3: the metric circumcentre, then for each boundary face of
@@ -95,8 +116,16 @@ bool SliverRemover::insertAt(TetId t, const Vec3& c) {
   const del3d::LocateResult loc = del3d::locate(s_.mesh, xyz, t, rng_);
   if (loc.status != del3d::LocateStatus::Inside && loc.status != del3d::LocateStatus::OnFace) return false;
   const Metric3d mc = cs_.getMetric(c);
+  // A sliver much smaller than the local size (at a small feature of the boundary) takes a
+  // point at its own scale: the distance limit is relative to its mean edge length there.
+  const std::uint32_t* tv = s_.mesh.tetVertices(t);
+  double meanEdge = 0;
   for (int i = 0; i < 4; ++i)
-    if (mc.length(s_.mesh.point(s_.mesh.vertex(loc.tet, i)) - c) < kSliverInsertDistance) return false;
+    for (int j = i + 1; j < 4; ++j)
+      meanEdge += mc.length(s_.mesh.point(VertexId(tv[i])) - s_.mesh.point(VertexId(tv[j]))) / 6;
+  const double limit = kSliverInsertDistance * std::min(1.0, meanEdge);
+  for (int i = 0; i < 4; ++i)
+    if (mc.length(s_.mesh.point(s_.mesh.vertex(loc.tet, i)) - c) < limit) return false;
   del3d::InsertOptions io;
   io.start = loc.tet;
   io.transform = &mc.matrix();
@@ -121,8 +150,22 @@ bool SliverRemover::insertPoint(TetId t) {
   return false;
 }
 
+// Step 4: the sliver and some neighbours replaced by the star of a new vertex
+// (SliverSteinerPoint.h), which is then relocated; then flips of the slivers of its star.
+bool SliverRemover::steinerPoint(TetId t) {
+  created_.clear();
+  const VertexId v = insertSteinerPointAtSliver(s_, vm_, t, created_);
+  if (!v.valid()) return false;
+  ++stats.steinerPoints;
+  if (mover_.relocate(v)) ++stats.moves;
+  vertexStar(s_.mesh, v, star_);
+  for (const TetId u : std::vector<TetId>(star_))
+    if (isSliver(u)) flipAway(u);
+  return true;
+}
+
 bool SliverRemover::attack(TetId t) {
-  if (flipAway(t)) return true;
+  if (flipAway(t) || removeEdges(t)) return true;
   std::uint32_t tv[4];
   std::copy_n(s_.mesh.tetVertices(t), 4, tv);
   for (const std::uint32_t v : tv) {
@@ -147,7 +190,7 @@ bool SliverRemover::attack(TetId t) {
     if (mover_.relocate(VertexId(v), true)) ++stats.moves;
     if (!isSliver(t)) return true;
   }
-  return insertion_ && insertPoint(t);
+  return insertion_ && (insertPoint(t) || steinerPoint(t));
 }
 
 std::vector<TetId> SliverRemover::round(const std::vector<TetId>& slivers) {
@@ -162,6 +205,13 @@ std::vector<TetId> SliverRemover::round(const std::vector<TetId>& slivers) {
 
 }  // namespace
 
+std::vector<TetId> liveSlivers(const SolidTetMesh& s, const VertexMetrics& vm, double angleDeg, double euclideanDeg) {
+  std::vector<TetId> out;
+  for (std::uint32_t k = 0; k < s.mesh.tetSlots(); ++k)
+    if (s.mesh.isAlive(TetId(k)) && vm.isSliver(TetId(k), angleDeg, euclideanDeg)) out.push_back(TetId(k));
+  return out;
+}
+
 std::size_t countSlivers(const SolidTetMesh& s, const VertexMetrics& vm, double angleDeg, double euclideanDeg) {
   std::size_t n = 0;
   for (std::uint32_t k = 0; k < s.mesh.tetSlots(); ++k)
@@ -172,13 +222,14 @@ std::size_t countSlivers(const SolidTetMesh& s, const VertexMetrics& vm, double 
 SliverStats removeSlivers(SolidTetMesh& s, const ControlSpace3d& cs, VertexMetrics& vm, double angleDeg,
                           double euclideanDeg, int rounds, bool insertion) {
   SliverRemover r(s, cs, vm, angleDeg, euclideanDeg, insertion);
-  std::vector<TetId> slivers;
-  for (std::uint32_t k = 0; k < s.mesh.tetSlots(); ++k)
-    if (s.mesh.isAlive(TetId(k)) && vm.isSliver(TetId(k), angleDeg, euclideanDeg)) slivers.push_back(TetId(k));
+  std::vector<TetId> slivers = liveSlivers(s, vm, angleDeg, euclideanDeg);
   r.stats.before = slivers.size();
   vm.setGuardEuclidean(true);
+  // Later rounds visit every sliver again: the operators (insertions, Steiner points) make
+  // new tets, some of them slivers, that the previous round's list does not hold.
   for (int i = 0; i < rounds && !slivers.empty(); ++i) {
-    std::vector<TetId> left = r.round(slivers);
+    r.round(slivers);
+    std::vector<TetId> left = liveSlivers(s, vm, angleDeg, euclideanDeg);
     if (left.size() >= slivers.size()) break;
     slivers = std::move(left);
   }

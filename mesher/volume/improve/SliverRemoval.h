@@ -9,17 +9,25 @@
 // turn:
 //   1 flips of its faces and edges (QualityFlips::visit with gain 0, repeated on the
 //     tets created while one of them is still a sliver);
+//   1b removal of one of its edges with a ring of up to volume::kMaxRemovalRing tets
+//     (QualityEdgeRemoval.h: the best fan of the ring polygon), then flips as in 1;
 //   2 relocation of its free vertices (VertexMover::relocate);
 //   3 (optional) a point at its metric circumcentre or, failing that, at the apex of the
 //     regular tet (in its metric) on one of its boundary faces — a sliver lying on a
 //     curved boundary (two boundary faces, four surface nodes) has its circumcentre far
 //     away — inserted with del3d::Inserter (transform = the metric there, mustRemove =
 //     the sliver, never crossing a constrained face; cancelled when outside the solid or
-//     closer than kSliverInsertDistance, in that metric, to a vertex of its containing
-//     tet), then relocation of the new vertex and flips of its star.
-// The first round visits every sliver of the mesh, later ones those left by the previous
-// round; rounds stop when one removes no sliver or after `rounds`.
+//     closer than kSliverInsertDistance times min(1, the sliver's mean edge length), in
+//     that metric, to a vertex of its containing tet: a sliver much smaller than the local
+//     size takes a point at its own scale), then relocation of the new vertex and flips of its star.
+//   4 (optional, when 3 inserts nothing) the sliver and some of its neighbours replaced by
+//     the star of a new free vertex (SliverSteinerPoint.h), relocated, then flips of its
+//     star.
+// Every round visits every sliver of the mesh (in slot order; the operators make new tets,
+// some of them slivers); rounds stop when one does not lower the number of slivers or
+// after `rounds`.
 #include <cstddef>
+#include <vector>
 
 #include "mesher/control/ControlSpace3d.h"
 #include "mesher/volume/SolidTetMesh.h"
@@ -27,13 +35,19 @@
 
 namespace aniso::improve3d {
 
-/// Metric distance below which a sliver's circumcentre is too close to an existing vertex.
+/// Metric distance below which a sliver's circumcentre is too close to an existing vertex
+/// (times min(1, the sliver's mean metric edge length)).
 inline constexpr double kSliverInsertDistance = 0.25;
 
 struct SliverStats {
   std::size_t before = 0, after = 0;
   std::size_t flips = 0, moves = 0, insertions = 0;
+  std::size_t edgeRemovals = 0, steinerPoints = 0;
 };
+
+/// The live slivers of s in slot order (VertexMetrics::isSliver).
+std::vector<del3d::TetId> liveSlivers(const SolidTetMesh& s, const VertexMetrics& vm, double angleDeg,
+                                      double euclideanDeg);
 
 /// Number of live slivers of s (VertexMetrics::isSliver).
 std::size_t countSlivers(const SolidTetMesh& s, const VertexMetrics& vm, double angleDeg, double euclideanDeg);

@@ -50,6 +50,13 @@ double VertexMetrics::score(const std::uint32_t* v) const {
   return guardEuclidean_ ? std::min(metric, e) : metric;
 }
 
+double VertexMetrics::scorePoints(const Vec3* p, const Mat3& m, bool isotropicTensor) const {
+  const double e = meanRatioCubed(p[0], p[1], p[2], p[3]);
+  if (isotropicTensor) return e;
+  const double metric = meanRatioCubed(m * p[0], m * p[1], m * p[2], m * p[3]);
+  return guardEuclidean_ ? std::min(metric, e) : metric;
+}
+
 double VertexMetrics::scoreWith(const std::uint32_t* v, std::uint32_t moved, const Vec3& p) const {
   Vec3 q[4];
   for (int i = 0; i < 4; ++i) q[i] = v[i] == moved ? p : mesh_.point(del3d::VertexId(v[i]));

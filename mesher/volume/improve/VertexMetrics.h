@@ -43,6 +43,10 @@ class VertexMetrics {
   double eta(const std::uint32_t* v) const { return std::cbrt(score(v)); }
   /// score() of the tet with vertex ids v where vertex `moved` is placed at p.
   double scoreWith(const std::uint32_t* v, std::uint32_t moved, const Vec3& p) const;
+  /// score() of the points p[0..3] (not necessarily vertices) measured in the tensor m;
+  /// Euclidean only when `isotropicTensor`.
+  double scorePoints(const Vec3* p, const Mat3& m, bool isotropicTensor) const;
+  bool isIsotropic(del3d::VertexId v) const { return iso_[v.index] != 0; }
   /// Smallest dihedral angle (degrees) of the tet mapped by its metric.
   double metricMinDihedral(del3d::TetId t) const;
   /// A sliver: metric smallest dihedral below metricAngle, or a Euclidean dihedral angle

@@ -1,0 +1,171 @@
+// Tests of the sliver operators on hand-made configurations: edge removal by quality
+// (improve/QualityEdgeRemoval.h) and the Steiner point at a sliver
+// (improve/SliverSteinerPoint.h); validateSolidTetMesh (through checkSolid) after each.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "mesher/control/CSAnalytic3d.h"
+#include "mesher/delaunay3d/LocalRetriangulation.h"
+#include "mesher/volume/improve/QualityEdgeRemoval.h"
+#include "mesher/volume/improve/SliverSteinerPoint.h"
+#include "mesher/volume/improve/VertexMetrics.h"
+#include "volume_refine_fixture.h"
+
+using namespace aniso;
+using namespace aniso::testing;
+using del3d::TetId;
+using del3d::VertexId;
+
+namespace {
+
+/// Kernel vertex of point i: the first 8 vertices are the enclosing-box corners (in no tet).
+VertexId pv(int i) { return VertexId(static_cast<std::uint32_t>(8 + i)); }
+
+/// A solid from points (all of them surface nodes: node[pv(i)] = i) and tets (made
+/// positive), faces with equal vertex triples linked, the hull constrained; `boundary`
+/// gets the hull as point triples.
+SolidTetMesh solidFrom(const std::vector<Vec3>& pts, const std::vector<std::array<int, 4>>& tets,
+                       std::set<Triple>& boundary) {
+  SolidTetMesh s;
+  s.solid = 0;
+  for (int c = 0; c < 8; ++c) s.mesh.addVertex(Vec3(c & 1, (c >> 1) & 1, (c >> 2) & 1) * 100.0 - Vec3(50, 50, 50));
+  for (const Vec3& p : pts) s.mesh.addVertex(p);
+  s.node.assign(s.mesh.numVertices(), -1);
+  for (std::size_t i = 0; i < pts.size(); ++i) s.node[pv(static_cast<int>(i)).index] = static_cast<int>(i);
+  std::map<Triple, std::pair<TetId, int>> open;
+  for (const auto& q : tets) {
+    std::array<VertexId, 4> v = {pv(q[0]), pv(q[1]), pv(q[2]), pv(q[3])};
+    if (del3d::orientation(s.mesh, v) < 0) std::swap(v[0], v[1]);
+    const TetId t = s.mesh.createTet(v[0], v[1], v[2], v[3]);
+    for (const VertexId x : v) s.mesh.setVertexTet(x, t);
+    for (int i = 0; i < 4; ++i) {
+      const std::uint32_t* tv = s.mesh.tetVertices(t);
+      const Triple key = sortedTriple(s.node[tv[del3d::kFaceVertex[i][0]]], s.node[tv[del3d::kFaceVertex[i][1]]],
+                                      s.node[tv[del3d::kFaceVertex[i][2]]]);
+      const auto it = open.find(key);
+      if (it == open.end()) {
+        open.emplace(key, std::make_pair(t, i));
+        continue;
+      }
+      s.mesh.link(t, i, it->second.first, it->second.second);
+      open.erase(it);
+    }
+  }
+  boundary.clear();
+  for (const auto& [key, face] : open) {
+    s.mesh.setConstrained(face.first, face.second, true);
+    boundary.insert(key);
+  }
+  return s;
+}
+
+double worstEta(const SolidTetMesh& s, const improve3d::VertexMetrics& vm) {
+  double w = 1e300;
+  for (std::uint32_t k = 0; k < s.mesh.tetSlots(); ++k)
+    if (s.mesh.isAlive(TetId(k))) w = std::min(w, vm.eta(s.mesh.tetVertices(TetId(k))));
+  return w;
+}
+
+const CSAnalytic3d& unitSpace() {
+  static const CSAnalytic3d cs(Box3(Vec3(-3, -3, -3), Vec3(3, 3, 3)), [](const Vec3&) { return Metric3d::isotropic(1); });
+  return cs;
+}
+
+/// The bipyramid: edge (0, 1) from (0, 0, -h) to (0, 0, h), ring of 5 tets around it
+/// through the regular pentagon 2..6 of radius 1.
+SolidTetMesh bipyramid(double h, std::set<Triple>& boundary) {
+  std::vector<Vec3> pts = {Vec3(0, 0, -h), Vec3(0, 0, h)};
+  std::vector<std::array<int, 4>> tets;
+  for (int i = 0; i < 5; ++i) {
+    const double a = 2 * std::numbers::pi * i / 5;
+    pts.emplace_back(std::cos(a), std::sin(a), 0);
+    tets.push_back({0, 1, 2 + i, 2 + (i + 1) % 5});
+  }
+  return solidFrom(pts, tets, boundary);
+}
+
+TEST(QualityEdgeRemoval, RemovesTheEdgeOfALongBipyramid) {
+  // h = 2: the five needles around the long edge (worst η 0.49) become six tets on the
+  // pentagon's fan (worst η 0.67)
+  std::set<Triple> boundary;
+  SolidTetMesh s = bipyramid(2.0, boundary);
+  improve3d::VertexMetrics vm(s.mesh, unitSpace());
+  const double before = worstEta(s, vm);
+  const TetId t = s.mesh.vertexTet(pv(0));
+  std::vector<TetId> created;
+  ASSERT_TRUE(improve3d::removeEdgeByQuality(s, vm, t, s.mesh.localIndex(t, pv(0)),
+                                             s.mesh.localIndex(t, pv(1)), created));
+  EXPECT_EQ(created.size(), 6u);
+  EXPECT_EQ(s.mesh.numTets(), 6u);
+  ASSERT_TRUE(checkSolid(s, boundary).empty()) << joined(checkSolid(s, boundary));
+  EXPECT_GT(worstEta(s, vm), before + 0.1);
+  EXPECT_NEAR(meshVolume(s.mesh), 5 * std::sin(2 * std::numbers::pi / 5) / 2 * 4.0 / 3.0, 1e-12);
+}
+
+TEST(QualityEdgeRemoval, KeepsTheEdgeWhenTheRingIsBetter) {
+  // h = 0.5: the ring (worst η 0.99) beats every fan (0.56): nothing changes
+  std::set<Triple> boundary;
+  SolidTetMesh s = bipyramid(0.5, boundary);
+  improve3d::VertexMetrics vm(s.mesh, unitSpace());
+  const TetId t = s.mesh.vertexTet(pv(0));
+  std::vector<TetId> created;
+  EXPECT_FALSE(improve3d::removeEdgeByQuality(s, vm, t, s.mesh.localIndex(t, pv(0)),
+                                              s.mesh.localIndex(t, pv(1)), created));
+  EXPECT_TRUE(created.empty());
+  EXPECT_EQ(s.mesh.numTets(), 5u);
+  EXPECT_TRUE(checkSolid(s, boundary).empty());
+}
+
+/// A pyramid over the square a b c d whose base folds by `lift` along the diagonal ac
+/// (b and d lifted): the flat tet abcd carries the two base triangles abc and acd (the
+/// boundary sliver of a nearly flat fold), the tets abde and cbde fill the rest.
+SolidTetMesh flatCap(double lift, std::set<Triple>& boundary) {
+  const std::vector<Vec3> pts = {Vec3(0, 0, 0), Vec3(1, 0, lift), Vec3(1, 1, 0), Vec3(0, 1, lift), Vec3(0.5, 0.5, 0.8)};
+  return solidFrom(pts, {{0, 1, 2, 3}, {0, 1, 3, 4}, {2, 1, 3, 4}}, boundary);
+}
+
+TEST(SliverSteinerPoint, SplitsAFlatCapOnTwoBoundaryFaces) {
+  std::set<Triple> boundary;
+  SolidTetMesh s = flatCap(0.01, boundary);
+  ASSERT_TRUE(checkSolid(s, boundary).empty()) << joined(checkSolid(s, boundary));
+  improve3d::VertexMetrics vm(s.mesh, unitSpace());
+  const double before = worstEta(s, vm), volume = meshVolume(s.mesh);
+  ASSERT_LT(before, 0.1);
+  TetId cap;
+  for (std::uint32_t k = 0; k < s.mesh.tetSlots(); ++k)
+    if (s.mesh.isAlive(TetId(k)) && s.mesh.localIndex(TetId(k), pv(4)) < 0) cap = TetId(k);
+  ASSERT_TRUE(cap.valid());
+  std::vector<TetId> created;
+  const VertexId v = improve3d::insertSteinerPointAtSliver(s, vm, cap, created);
+  ASSERT_TRUE(v.valid());
+  EXPECT_FALSE(s.isFixed(v));
+  EXPECT_FALSE(s.mesh.isAlive(cap) && s.mesh.localIndex(cap, pv(4)) < 0);
+  ASSERT_TRUE(checkSolid(s, boundary).empty()) << joined(checkSolid(s, boundary));
+  EXPECT_NEAR(meshVolume(s.mesh), volume, 1e-12);
+  EXPECT_GT(worstEta(s, vm), before + 0.2);
+  for (const TetId u : created) EXPECT_GE(s.mesh.localIndex(u, v), 0);
+}
+
+TEST(SliverSteinerPoint, LeavesAGoodTetAlone) {
+  // the regular-ish pyramid halves: no region around a good tet gets better
+  std::set<Triple> boundary;
+  SolidTetMesh s = flatCap(-0.5, boundary);  // b, d lowered: abcd is a proper tet
+  improve3d::VertexMetrics vm(s.mesh, unitSpace());
+  const double before = worstEta(s, vm);
+  ASSERT_GT(before, 0.3);
+  const std::size_t vertices = s.mesh.numVertices();
+  TetId best;
+  double bestEta = -1;
+  for (std::uint32_t k = 0; k < s.mesh.tetSlots(); ++k)
+    if (s.mesh.isAlive(TetId(k)) && vm.eta(s.mesh.tetVertices(TetId(k))) > bestEta)
+      best = TetId(k), bestEta = vm.eta(s.mesh.tetVertices(TetId(k)));
+  std::vector<TetId> created;
+  const VertexId v = improve3d::insertSteinerPointAtSliver(s, vm, best, created);
+  if (v.valid()) EXPECT_GT(worstEta(s, vm), before);  // only ever an improvement
+  else EXPECT_EQ(s.mesh.numVertices(), vertices);
+  EXPECT_TRUE(checkSolid(s, boundary).empty()) << joined(checkSolid(s, boundary));
+}
+
+}  // namespace
