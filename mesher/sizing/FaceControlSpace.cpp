@@ -77,7 +77,19 @@ void insertUserSizing(CSQuadtree2d& cs, const UserSizing& user, const Parametric
     for (int j = 0; j <= 8; ++j)
       faceBox.add(surface.point(bounds.lo + Vec2(i / 8.0, j / 8.0).cwiseProduct(bounds.size())));
   const double extent = std::max(faceBox.diagonal(), 1e-300);
+  // A source whose region misses the face (its sampled box grown by a quarter of its
+  // extent, for what the coarse sample misses) is skipped: its sampling costs up to 513².
+  Box3 near = faceBox;
+  near.lo.array() -= 0.25 * extent;
+  near.hi.array() += 0.25 * extent;
   for (const SizingSource& src : user.sources) {
+    Box3 region;
+    const double r = src.kind == SizingSource::Kind::Box ? 0.0 : src.radius;
+    region.add(src.a);
+    if (src.kind != SizingSource::Kind::Point) region.add(src.b);
+    region.lo.array() -= r;
+    region.hi.array() += r;
+    if ((region.lo.array() > near.hi.array()).any() || (near.lo.array() > region.hi.array()).any()) continue;
     const double h = src.metric.axes().lengths.minCoeff();
     const int n = std::clamp(static_cast<int>(std::ceil(2 * extent / h)), 8, 512);
     for (int i = 0; i <= n; ++i)

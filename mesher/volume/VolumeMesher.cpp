@@ -39,6 +39,7 @@ struct SolidPiece {
   std::vector<std::array<int, 4>> tets;
   std::vector<Vec3> inner;
   std::vector<std::vector<int>> missing;  ///< surface nodes of the boundary edges/triangles not recovered
+  std::vector<ThinSpot> thin;
 };
 
 void fail(SolidPiece& p, const std::string& entity, const std::string& what) {
@@ -148,6 +149,8 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
   p.outcome.times.emplace_back("volume carving", since(t0));
   for (const std::string& s : carved) fail(p, solidName(solid), s);
   if (!carved.empty() || !validated(p, in, bt.tets, b, "boundary recovery")) return p;
+  p.thin = findThinBoundary(bt.tets, b.triangles, b.triangleFace);
+  if (in.stopWhenThin && !p.thin.empty()) return p;
 
   std::shared_ptr<ControlSpace3d> cs;
   if (in.refine || in.improve || in.quality) {
@@ -306,6 +309,7 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
       r.mesh.tets.push_back(t);
       r.mesh.tetSolid.push_back(s);
     }
+    r.thin.insert(r.thin.end(), p.thin.begin(), p.thin.end());
     r.recovery.merge(p.outcome.recovery);
     r.quality.merge(p.outcome.quality);
     r.solids.push_back(std::move(p.outcome));

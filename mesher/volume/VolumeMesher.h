@@ -20,6 +20,9 @@
 // geometry (SplitSurfaceEdges.h: the boundary Steiner points of table 5.3, put where every
 // solid sharing the face sees them) and the solids using the changed faces are meshed
 // again, for at most maxSplitRounds rounds; the result's surface holds the new nodes.
+// After carving, the boundary triangles whose tet reaches across a thin part are found
+// (ThinBoundary.h, alg. 3.3's proximity check) and returned; with stopWhenThin such a solid
+// stops there (the caller meshes the surface finer and calls again).
 // A solid that still cannot be meshed (broken boundary mesh, unrecoverable boundary) gets
 // no tetrahedra and its problems are reported by CAD id; the others are meshed. Throws only
 // for errors that stop everything (bad input).
@@ -34,6 +37,7 @@
 #include "mesher/surface/SurfaceMesh.h"
 #include "mesher/volume/BoundaryRecovery.h"
 #include "mesher/volume/TetQuality.h"
+#include "mesher/volume/ThinBoundary.h"
 #include "mesher/volume/VolumeMesh.h"
 
 namespace aniso {
@@ -53,6 +57,10 @@ struct VolumeMesherInput {
   /// the changed faces are meshed again; at most this many rounds, and only while fewer
   /// than twice the first round's entities are missing (0: off, the solid fails).
   int maxSplitRounds = 3;
+  /// Alg. 3.3's proximity check (ThinBoundary.h): a solid with thin boundary triangles
+  /// after carving stops there (no refinement, no tetrahedra in the result) and reports
+  /// them in VolumeMeshResult::thin, for the caller to mesh the surface finer and call again.
+  bool stopWhenThin = false;
 };
 
 struct VolumeProblem {
@@ -79,6 +87,9 @@ struct VolumeMeshResult {
   int boundarySplits = 0;  ///< surface edges split by the last resort of recovery (mesh.surface has them)
   int splitRounds = 0;     ///< rounds of splitting and meshing again
   int foldsRepaired = 0;   ///< folded surface edges mended before meshing (UnfoldSurface.h)
+  /// Boundary triangles thinner than their size across the solid (ThinBoundary.h), solid
+  /// by solid; with stopWhenThin the solids having some were not meshed further.
+  std::vector<ThinSpot> thin;
   TetQualitySummary quality;                          ///< over all solids
   std::vector<std::pair<std::string, double>> times;  ///< phase -> seconds summed over the solids
   bool ok() const;

@@ -13,6 +13,7 @@
 #include "tools/cli/Commands.h"
 #include "mesher/quad/QuadQuality.h"
 #include "mesher/surface/SurfaceMesher.h"
+#include "mesher/volume/ThinBoundary.h"
 #include "mesher/volume/VolumeMesher.h"
 #include "tools/cli/VolumeReport.h"
 #include "tools/cli/ModelInput.h"
@@ -116,18 +117,53 @@ static void elevateForOutput(const Model& topo, Mesh& mesh, io::Report& report) 
   report.extra["order2"] = {{"mid_nodes", s.midNodes}, {"straightened", s.straightened}};
 }
 
+/// Rounds of alg. 3.3's outer loop: the surface meshed again, finer where the solid is
+/// thinner than its triangles (ThinBoundary.h), then the volume again.
+constexpr int kMaxProximityRounds = 2;
+
 /// Dim 3: the volume mesh of every solid (VolumeMesher.h), reported and written; no file
-/// when a solid fails (exit 3).
-static int runVolume(const MeshArgs& args, const Model& topo, const SurfaceMesh& surface, const UserSizing& user,
-                     io::Report& report, const io::WriteOptions& wopt, std::chrono::steady_clock::time_point t0) {
+/// when a solid fails (exit 3). Alg. 3.3: while a solid is thinner than its boundary
+/// triangles (at most kMaxProximityRounds times), those faces get sizing sources and the
+/// whole surface is meshed again (shared edges stay consistent), then the volume; the
+/// report's "proximity" block gives the rounds and the faces refined.
+static int runVolume(const MeshArgs& args, const Model& topo, SurfaceMesherInput sin, SurfaceMeshResult sr,
+                     const UserSizing& user, io::Report& report, const io::WriteOptions& wopt,
+                     std::chrono::steady_clock::time_point t0) {
   using Clock = std::chrono::steady_clock;
   auto seconds = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
+  UserSizing sizing = user;
   VolumeMesherInput vin;
   vin.model = &topo;
-  vin.surface = &surface;
   vin.options = args.options;
-  vin.user = &user;
-  VolumeMeshResult vr = meshVolumes(vin);
+  vin.user = &sizing;
+  int rounds = 0;
+  std::size_t facesRefined = 0;
+  double proximitySeconds = 0;
+  VolumeMeshResult vr;
+  for (;;) {
+    vin.surface = &sr.mesh;
+    vin.stopWhenThin = rounds < kMaxProximityRounds;
+    const auto tr = Clock::now();
+    vr = meshVolumes(vin);
+    if (vr.thin.empty() || !vin.stopWhenThin) break;
+    const std::vector<SizingSource> sources = thinSources(vr.thin, args.options.sizing.hminFor(topo.diagonal()));
+    sizing.sources.insert(sizing.sources.end(), sources.begin(), sources.end());
+    sin.user = &sizing;
+    SurfaceMeshResult finer = meshSurfaces(sin);
+    proximitySeconds += seconds(tr, Clock::now());
+    ++rounds;
+    if (!finer.ok()) {  // keep the surface that meshed: the volume as it is
+      rounds = kMaxProximityRounds;
+      continue;
+    }
+    facesRefined += sources.size();
+    sr = std::move(finer);
+    fillSurfaceReport(sr, report);
+  }
+  report.extra["proximity"] = {{"rounds", rounds},
+                               {"faces_refined", facesRefined},
+                               {"thin_triangles_left", vr.thin.size()},
+                               {"seconds", proximitySeconds}};
   for (const auto& p : vr.times) report.times.push_back(p);
   fillVolumeReport(topo, vr, report);
   if (!vr.ok()) {
@@ -206,7 +242,7 @@ int runMesh(const MeshArgs& given) {
   io::WriteOptions wopt;
   wopt.binary = args.binary;
   wopt.mshVersion = args.mshVersion;
-  if (dim == 3) return runVolume(args, topo, sr.mesh, user, report, wopt, t0);
+  if (dim == 3) return runVolume(args, topo, sin, std::move(sr), user, report, wopt, t0);
   if (args.options.order == 2) elevateForOutput(topo, sr.mesh, report);
   const auto tw = Clock::now();
   io::writeSurfaceMesh(topo, sr.mesh, args.output, wopt);

@@ -1,0 +1,95 @@
+#include "mesher/volume/ThinBoundary.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <map>
+
+namespace aniso {
+
+namespace {
+std::array<int, 3> sorted(int a, int b, int c) {
+  std::array<int, 3> t{a, b, c};
+  std::sort(t.begin(), t.end());
+  return t;
+}
+}  // namespace
+
+std::vector<ThinSpot> findThinBoundary(const SolidTetMesh& s, const std::vector<std::array<int, 3>>& triangles,
+                                       const std::vector<int>& triangleFace) {
+  const del3d::TetMesh& m = s.mesh;
+  std::map<std::array<int, 3>, int> faceOf;
+  for (std::size_t k = 0; k < triangles.size(); ++k)
+    faceOf[sorted(triangles[k][0], triangles[k][1], triangles[k][2])] = triangleFace[k];
+  // Outward (area-weighted) normals at the surface nodes, from the hull faces.
+  std::vector<Vec3> normal(m.numVertices(), Vec3::Zero());
+  const auto outward = [&](del3d::TetId t, int i) {
+    const Vec3 a = m.point(m.vertex(t, del3d::kFaceVertex[i][0])), b = m.point(m.vertex(t, del3d::kFaceVertex[i][1])),
+               c = m.point(m.vertex(t, del3d::kFaceVertex[i][2]));
+    const Vec3 n = (b - a).cross(c - a);  // kFaceVertex: oriented towards vertex i's side
+    return Vec3(n.dot(m.point(m.vertex(t, i)) - a) > 0 ? -n : n);
+  };
+  for (std::uint32_t k = 0; k < m.tetSlots(); ++k) {
+    const del3d::TetId t(k);
+    if (!m.isAlive(t)) continue;
+    for (int i = 0; i < 4; ++i)
+      if (!m.neighbour(t, i).valid()) {
+        const Vec3 n = outward(t, i);
+        for (int j = 0; j < 3; ++j) normal[m.vertex(t, del3d::kFaceVertex[i][j]).index] += n;
+      }
+  }
+  std::vector<ThinSpot> out;
+  for (std::uint32_t k = 0; k < m.tetSlots(); ++k) {
+    const del3d::TetId t(k);
+    if (!m.isAlive(t)) continue;
+    for (int i = 0; i < 4; ++i) {
+      if (m.neighbour(t, i).valid()) continue;
+      const del3d::VertexId x = m.vertex(t, i);
+      if (!s.isFixed(x) || !(normal[x.index].norm() > 0)) continue;
+      Vec3 p[3];
+      int node[3];
+      for (int j = 0; j < 3; ++j) {
+        const del3d::VertexId v = m.vertex(t, del3d::kFaceVertex[i][j]);
+        p[j] = m.point(v);
+        node[j] = s.node[v.index];
+      }
+      const Vec3 n = outward(t, i).normalized();
+      if (n.dot(normal[x.index].normalized()) > kOppositeNormalCos) continue;
+      const Vec3 c = (p[0] + p[1] + p[2]) / 3;
+      const double height = -n.dot(m.point(x) - c);
+      const double size = ((p[1] - p[0]).norm() + (p[2] - p[1]).norm() + (p[0] - p[2]).norm()) / 3;
+      if (!(height > 0) || height >= kThinRatio * size) continue;
+      const auto f = faceOf.find(sorted(node[0], node[1], node[2]));
+      if (f == faceOf.end()) continue;
+      out.push_back({f->second, c, size, height});
+    }
+  }
+  return out;
+}
+
+std::vector<SizingSource> thinSources(const std::vector<ThinSpot>& spots, double hmin) {
+  struct Acc {
+    Box3 box;
+    double grow = 0, size = 1e300;
+  };
+  std::map<int, Acc> byFace;
+  for (const ThinSpot& s : spots) {
+    const double target = std::max(s.thickness, hmin);
+    if (target >= kThinRatio * s.size) continue;  // as fine as hmin allows already
+    Acc& a = byFace[s.face];
+    a.box.add(s.centroid);
+    a.grow = std::max(a.grow, s.size);
+    a.size = std::min(a.size, target);
+  }
+  std::vector<SizingSource> out;
+  for (const auto& [face, a] : byFace) {
+    SizingSource src;
+    src.kind = SizingSource::Kind::Box;
+    src.a = a.box.lo - Vec3::Constant(a.grow);
+    src.b = a.box.hi + Vec3::Constant(a.grow);
+    src.metric = Metric3d::isotropic(a.size);
+    out.push_back(src);
+  }
+  return out;
+}
+
+}  // namespace aniso

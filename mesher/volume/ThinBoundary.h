@@ -1,0 +1,47 @@
+#pragma once
+// Thin parts of a solid found after the triangulation of its boundary nodes (thesis
+// 3.5.2, alg. 3.3: "update ACS_v with proximity of boundary faces"): where the solid is
+// thinner than its surface mesh is coarse, every tet reaches from one side to the other
+// and no interior point fits in between (periodic_u_cst: 87 % of the tets had their four
+// nodes on the surface). After boundary recovery and carving, the tet on each boundary
+// triangle T has an apex x; T is thin when x is a surface node on the opposite side —
+// the outward normals at T and at x point against each other (cosine below
+// kOppositeNormalCos), x lies on T's inner side — and the height of x over T's plane is
+// below kThinRatio times T's mean edge length (a regular tet's apex stands at 0.816 of its
+// edge). Folds and corners of the surface (the apex on a neighbouring patch) have normals
+// that do not oppose, so they are not reported.
+//
+// thinSources() turns the spots into sizing sources for the surface (and volume) control
+// spaces: per CAD face, a box around its thin triangles (grown by the largest of them),
+// with the isotropic size of the smallest thickness found there (not below hmin), so the
+// surface mesher makes triangles about as large as the part is thick; spots whose
+// triangles hmin would not make smaller (the size at most kThinRatio below them) are left.
+#include <vector>
+
+#include "mesher/sizing/UserSizing.h"
+#include "mesher/volume/SolidTetMesh.h"
+
+namespace aniso {
+
+/// A thin apex stands lower than this times the boundary triangle's mean edge length.
+inline constexpr double kThinRatio = 0.8;
+/// The outward normals at the triangle and at the apex oppose below this cosine.
+inline constexpr double kOppositeNormalCos = -0.5;
+
+struct ThinSpot {
+  int face = -1;       ///< 0-based model face of the boundary triangle
+  Vec3 centroid;       ///< of the triangle
+  double size = 0;     ///< its mean edge length
+  double thickness = 0;  ///< height of the apex across the solid
+};
+
+/// The thin boundary triangles of s (after carving: the hull is the boundary).
+/// `triangles`/`triangleFace`: the solid's boundary triangles (surface node triples,
+/// outward) and their faces (BoundaryMesh).
+std::vector<ThinSpot> findThinBoundary(const SolidTetMesh& s, const std::vector<std::array<int, 3>>& triangles,
+                                       const std::vector<int>& triangleFace);
+
+/// One box source per face with thin spots (see above), faces in increasing order.
+std::vector<SizingSource> thinSources(const std::vector<ThinSpot>& spots, double hmin);
+
+}  // namespace aniso

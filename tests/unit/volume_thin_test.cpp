@@ -1,0 +1,64 @@
+// Tests of the proximity check of alg. 3.3 (mesher/volume/ThinBoundary.h) on hand-made
+// solids: a slab thinner than its surface triangles, and a cube that is not.
+#include <gtest/gtest.h>
+
+#include "mesher/volume/ThinBoundary.h"
+#include "volume_refine_fixture.h"
+
+using namespace aniso;
+using namespace aniso::testing;
+
+namespace {
+
+/// The unit square times `thickness` (cubeSolid mapped, Delaunay in space as the volume
+/// mesher's isotropic triangulation of the boundary nodes), n×n points per face.
+SolidTetMesh slab(int n, double thickness, std::set<Triple>& boundary) {
+  Mat3 map = Mat3::Identity();
+  map(2, 2) = thickness;
+  return cubeSolid(n, boundary, 7, map, false);
+}
+
+std::vector<ThinSpot> thinSpots(const SolidTetMesh& s, const std::set<Triple>& boundary) {
+  const CubeSurface c = cubeSurface(s, boundary);
+  return findThinBoundary(s, c.surface.triangles, c.surface.triangleFace);
+}
+
+TEST(ThinBoundary, ASlabThinnerThanItsTrianglesIsFound) {
+  std::set<Triple> boundary;
+  const SolidTetMesh s = slab(8, 0.04, boundary);  // triangles ~0.14 across, 0.04 thick
+  const std::vector<ThinSpot> spots = thinSpots(s, boundary);
+  ASSERT_FALSE(spots.empty());
+  std::set<int> faces;
+  for (const ThinSpot& t : spots) {
+    faces.insert(t.face);
+    EXPECT_LE(t.thickness, 0.04 + 1e-12);
+    EXPECT_GT(t.thickness, 0.0);
+    EXPECT_LT(t.thickness, kThinRatio * t.size);
+  }
+  EXPECT_EQ(faces, (std::set<int>{4, 5}));  // the two big faces (normal along z), nothing on the rims
+  const std::vector<SizingSource> sources = thinSources(spots, 1e-3);
+  ASSERT_EQ(sources.size(), 2u);
+  for (const SizingSource& src : sources) {
+    EXPECT_EQ(src.kind, SizingSource::Kind::Box);
+    EXPECT_NEAR(src.metric.axes().lengths.maxCoeff(), 0.04, 0.04 * 0.5);
+    EXPECT_TRUE(src.contains(Vec3(0.5, 0.5, 0.02)));
+  }
+}
+
+TEST(ThinBoundary, HminBoundsTheSourcesAndStopsTheLoop) {
+  std::set<Triple> boundary;
+  const SolidTetMesh s = slab(8, 0.04, boundary);
+  const std::vector<ThinSpot> spots = thinSpots(s, boundary);
+  // hmin 0.06: sources at 0.06 (the triangles are larger than 0.06 / kThinRatio)
+  for (const SizingSource& src : thinSources(spots, 0.06)) EXPECT_NEAR(src.metric.axes().lengths.minCoeff(), 0.06, 1e-12);
+  // hmin as large as the triangles: nothing left to refine
+  EXPECT_TRUE(thinSources(spots, 1.0).empty());
+}
+
+TEST(ThinBoundary, ACubeIsNotThin) {
+  std::set<Triple> boundary;
+  const SolidTetMesh s = cubeSolid(8, boundary);
+  EXPECT_TRUE(thinSpots(s, boundary).empty());
+}
+
+}  // namespace
