@@ -63,6 +63,7 @@ std::vector<ThinSpot> findThinBoundary(const SolidTetMesh& s, const std::vector<
       out.push_back({f->second, c, size, height});
     }
   }
+  if (static_cast<double>(out.size()) < kThinFraction * static_cast<double>(triangles.size())) out.clear();
   return out;
 }
 

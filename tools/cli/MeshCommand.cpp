@@ -125,26 +125,39 @@ constexpr int kMaxProximityRounds = 2;
 /// when a solid fails (exit 3). Alg. 3.3: while a solid is thinner than its boundary
 /// triangles (at most kMaxProximityRounds times), those faces get sizing sources and the
 /// whole surface is meshed again (shared edges stay consistent), then the volume; the
-/// report's "proximity" block gives the rounds and the faces refined.
+/// report's "proximity" block gives the rounds and the faces refined. When the volume of
+/// the finer surface fails, the first surface is meshed instead (without the loop).
 static int runVolume(const MeshArgs& args, const Model& topo, SurfaceMesherInput sin, SurfaceMeshResult sr,
                      const UserSizing& user, io::Report& report, const io::WriteOptions& wopt,
                      std::chrono::steady_clock::time_point t0) {
   using Clock = std::chrono::steady_clock;
   auto seconds = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
-  UserSizing sizing = user;
+  UserSizing sizing = user;  // the user's and the proximity sources, for the surface
   VolumeMesherInput vin;
   vin.model = &topo;
   vin.options = args.options;
-  vin.user = &sizing;
+  vin.user = &user;  // the volume follows the finer surface (eq. 3.3) without box sources
+  const SurfaceMeshResult first = sr;
   int rounds = 0;
   std::size_t facesRefined = 0;
   double proximitySeconds = 0;
+  bool loop = true;
   VolumeMeshResult vr;
   for (;;) {
     vin.surface = &sr.mesh;
-    vin.stopWhenThin = rounds < kMaxProximityRounds;
+    vin.stopWhenThin = loop && rounds < kMaxProximityRounds;
     const auto tr = Clock::now();
     vr = meshVolumes(vin);
+    if (!vin.stopWhenThin && rounds > 0 && !vr.ok()) {
+      // the finer surface could not be meshed: the volume of the first surface instead
+      sr = first;
+      fillSurfaceReport(sr, report);
+      rounds = 0;
+      facesRefined = 0;
+      loop = false;
+      proximitySeconds += seconds(tr, Clock::now());
+      continue;
+    }
     if (vr.thin.empty() || !vin.stopWhenThin) break;
     const std::vector<SizingSource> sources = thinSources(vr.thin, args.options.sizing.hminFor(topo.diagonal()));
     sizing.sources.insert(sizing.sources.end(), sources.begin(), sources.end());
@@ -153,7 +166,7 @@ static int runVolume(const MeshArgs& args, const Model& topo, SurfaceMesherInput
     proximitySeconds += seconds(tr, Clock::now());
     ++rounds;
     if (!finer.ok()) {  // keep the surface that meshed: the volume as it is
-      rounds = kMaxProximityRounds;
+      loop = false;
       continue;
     }
     facesRefined += sources.size();
