@@ -2,7 +2,8 @@
 """Volume meshing regression (issue 5): every public model with solids meshes in 3D with
 status ok, judged by the independent referee (shared/tools/meshq.py): no inverted
 tetrahedron, mesh volume within 1% of the CAD volume (MANIFEST.json), the report's counts
-equal to the file's, one region per solid; the slow tier adds the quality bars (mean ratio
+equal to the file's, one region per solid, the proximity loop (alg. 3.3) reported with at
+most 2 rounds; the slow tier adds the quality bars (mean ratio
 average >= 0.80, smallest dihedral angle >= 2 degrees). The fast tier also meshes a
 multi-solid model with 1 and 2 threads and compares the files byte for byte.
 usage: volume_mesh_test.py CLI SHARED_DIR [--tier fast|slow]
@@ -64,6 +65,8 @@ for extra in runs:
             if abs(rel) > 0.01: why.append(f"volume off by {rel:.2%}")
             if r["counts"]["tetrahedra"] != q["tets"]: why.append("report and file disagree on the tetrahedron count")
             if regions(out) != m["solids"]: why.append(f"{regions(out)} regions for {m['solids']} solids")
+            px = r.get("proximity", {})
+            if not 0 <= px.get("rounds", -1) <= 2: why.append(f"proximity block missing or rounds out of 0..2: {px}")
             if tier == "slow" and q["eta_avg"] < 0.80: why.append(f"mean ratio average {q['eta_avg']}")
             if tier == "slow" and q["dihedral_min"] < 2.0: why.append(f"smallest dihedral {q['dihedral_min']}")
         if why: failed.append(f"{name}: " + "; ".join(why))
@@ -72,7 +75,8 @@ for extra in runs:
             rc = r.get("recovery", {})
             print(f"ok {name}: {q['tets']} tets, volume err {rel:.1e}, eta avg {q['eta_avg']}, dihedral min "
                   f"{q['dihedral_min']}, missing edges/faces {rc.get('missing_edges')}/{rc.get('missing_faces')}, "
-                  f"steiner {rc.get('steiner_points_inside')}", flush=True)
+                  f"steiner {rc.get('steiner_points_inside')}, proximity rounds {px.get('rounds')} "
+                  f"(faces {px.get('faces_refined')})", flush=True)
 
 if tier == "fast":  # same output for any number of threads
     files = []
