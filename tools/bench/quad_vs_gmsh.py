@@ -12,7 +12,7 @@ Prints one table row per model, then the means. --gmsh-cache keeps Gmsh's figure
 FILE.json (read when present, written after each Gmsh run): Gmsh's side does not change between
 runs of ours (--ours-cache does the same for ours, e.g. to print the table of two separate
 runs; keep one file per --quad-method). The last line compares the means over the models both
-mesh. Needs Debian's python3-gmsh/meshio/numpy."""
+mesh (Gmsh with at least one quad). Needs Debian's python3-gmsh/meshio/numpy."""
 import json, os, subprocess, sys, tempfile
 import numpy as np, meshio
 
@@ -99,7 +99,7 @@ for m in man:
             json.dump(cache, open(cache_file, "w"))
     if a: ours.append(a)
     if g: theirs.append(g)
-    if a and g: both.append((a, g))
+    if a and g and g["quads"] > 0: both.append((a, g))  # a Gmsh mesh without quads is no recombination
     print(f"{m['file']:<36} {cell(a, wa):>40} | {cell(g, wg):>44}", flush=True)
 mean = lambda rows, k: np.mean([r[k] for r in rows]) if rows else float("nan")
 print(f"{'mean (meshed models)':<36} {100 * mean(ours, 'frac'):6.1f} {min([r['sj_min'] for r in ours] or [0]):6.3f} {mean(ours, 'sj_avg'):6.3f}"
