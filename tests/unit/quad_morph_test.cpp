@@ -152,7 +152,9 @@ void checkConversion(QuadMethod method) {
   EXPECT_EQ(count(m, 3) % 2, 0);
   EXPECT_LT(count(m, 3), 0.2 * count(m, 4));
   for (int e = 0; e < m.numElements(); ++e)
-    if (m.isQuad(e)) EXPECT_GE(elementQuality(m, metrics, m.corners[e]), o.minQuality);
+    if (m.isQuad(e)) {
+      EXPECT_GE(elementQuality(m, metrics, m.corners[e]), o.minQuality);
+    }
   QuadMesh2d again = QuadMesh2d::fromFaceMesh(p.fm);
   VertexMetrics metrics2(again, *p.cs);
   mergeFront(again, metrics2, o);
@@ -194,7 +196,9 @@ TEST(QuadChain, TwoTrianglesAcrossTwoQuadsBecomeThreeQuads) {
   EXPECT_EQ(count(m, 4), 3);
   EXPECT_EQ(count(m, 3), 2);
   for (int e = 0; e < m.numElements(); ++e)
-    if (m.isQuad(e)) EXPECT_GT(elementQuality(m, metrics, m.corners[e]), 0.44);  // the best worst: sin 26.6° at (3, 1)
+    if (m.isQuad(e)) {
+      EXPECT_GT(elementQuality(m, metrics, m.corners[e]), 0.44);  // the best worst: sin 26.6° at (3, 1)
+    }
 }
 
 TEST(QuadChain, RefusesAChainThroughATriangle) {
