@@ -93,4 +93,18 @@ std::vector<SizingSource> thinSources(const std::vector<ThinSpot>& spots, double
   return out;
 }
 
+double predictedTriangles(const SurfaceMesh& surface, const std::vector<SizingSource>& sources) {
+  double n = 0;
+  for (const auto& t : surface.triangles) {
+    const Vec3 p[3] = {surface.nodes[t[0]], surface.nodes[t[1]], surface.nodes[t[2]]};
+    const Vec3 c = (p[0] + p[1] + p[2]) / 3;
+    double target = 1e300;
+    for (const SizingSource& src : sources)
+      if (src.contains(c)) target = std::min(target, src.metric.axes().lengths.minCoeff());
+    const double size = ((p[1] - p[0]).norm() + (p[2] - p[1]).norm() + (p[0] - p[2]).norm()) / 3;
+    n += std::max(1.0, (size / target) * (size / target));
+  }
+  return n;
+}
+
 }  // namespace aniso

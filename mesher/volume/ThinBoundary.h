@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "mesher/sizing/UserSizing.h"
+#include "mesher/surface/SurfaceMesh.h"
 #include "mesher/volume/SolidTetMesh.h"
 
 namespace aniso {
@@ -50,5 +51,10 @@ std::vector<ThinSpot> findThinBoundary(const SolidTetMesh& s, const std::vector<
 
 /// One box source per face with thin spots (see above), faces in increasing order.
 std::vector<SizingSource> thinSources(const std::vector<ThinSpot>& spots, double hmin);
+
+/// Triangles the surface mesh would have with the sources: each triangle whose centroid
+/// lies in a source counts (mean edge / the smallest size of those sources)² when that is
+/// above 1, every other one 1 (for the caller's budget).
+double predictedTriangles(const SurfaceMesh& surface, const std::vector<SizingSource>& sources);
 
 }  // namespace aniso
