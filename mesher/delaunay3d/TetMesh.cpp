@@ -2,6 +2,8 @@
 
 #include "mesher/core/Error.h"
 
+#include <algorithm>
+
 namespace aniso::del3d {
 
 VertexId TetMesh::addVertex(const Vec3& p) {
@@ -67,6 +69,65 @@ void TetMesh::reserve(std::size_t vertices, std::size_t tets) {
   tv_.reserve(4 * tets);
   tn_.reserve(4 * tets);
   tf_.reserve(tets);
+}
+
+void TetMesh::renumber(const std::vector<std::uint32_t>& newVertex, const std::vector<std::uint32_t>& newTet) {
+  const std::size_t nv = numVertices(), slots = tetSlots();
+  if (newVertex.size() != nv || newTet.size() != slots) throw MeshingError("TetMesh::renumber: sizes do not match");
+  {
+    std::vector<std::uint8_t> hit(std::max(nv, live_), 0);
+    for (const std::uint32_t v : newVertex) {
+      if (v >= nv || hit[v]) throw MeshingError("TetMesh::renumber: not a vertex permutation");
+      hit[v] = 1;
+    }
+    std::fill(hit.begin(), hit.end(), 0);
+    for (std::size_t t = 0; t < slots; ++t) {
+      const bool alive = tv_[4 * t] != kFreeMark;
+      if (alive != (newTet[t] != kNone) || (alive && (newTet[t] >= live_ || hit[newTet[t]])))
+        throw MeshingError("TetMesh::renumber: not a permutation of the live tets");
+      if (alive) hit[newTet[t]] = 1;
+    }
+  }
+  // Relabel the records where they are, then move each to its place by swaps along the
+  // cycles of the permutation (free slots sent past the live ones, then cut off).
+  std::vector<std::uint32_t> to(newTet);
+  std::uint32_t nextFreePlace = static_cast<std::uint32_t>(live_);
+  for (std::size_t t = 0; t < slots; ++t) {
+    if (to[t] == kNone) {
+      to[t] = nextFreePlace++;
+      continue;
+    }
+    for (int i = 0; i < 4; ++i) {
+      std::uint32_t& v = tv_[4 * t + i];
+      v = newVertex[v];
+      std::uint32_t& c = tn_[4 * t + i];
+      if (c != kNone) c = 4 * newTet[c >> 2] + (c & 3u);
+    }
+  }
+  for (std::size_t t = 0; t < slots; ++t) {
+    while (to[t] != t) {
+      const std::size_t u = to[t];
+      for (int i = 0; i < 4; ++i) {
+        std::swap(tv_[4 * t + i], tv_[4 * u + i]);
+        std::swap(tn_[4 * t + i], tn_[4 * u + i]);
+      }
+      std::swap(tf_[t], tf_[u]);
+      std::swap(to[t], to[u]);
+    }
+  }
+  tv_.resize(4 * live_);
+  tn_.resize(4 * live_);
+  tf_.resize(live_);
+  freeHead_ = kNone;
+  std::vector<double> xyz(xyz_.size());
+  std::vector<std::uint32_t> vtet(nv);
+  for (std::size_t v = 0; v < nv; ++v) {
+    const std::size_t w = newVertex[v];
+    for (int k = 0; k < 3; ++k) xyz[3 * w + k] = xyz_[3 * v + k];
+    vtet[w] = vtet_[v] == kNone ? kNone : newTet[vtet_[v]];
+  }
+  xyz_.swap(xyz);
+  vtet_.swap(vtet);
 }
 
 void TetMesh::clear() {

@@ -104,6 +104,13 @@ class TetMesh {
 
   // ---- whole mesh ----
   void reserve(std::size_t vertices, std::size_t tets);
+  /// Renumbers vertices and tets in place (memory locality for the phases that walk stars,
+  /// rings and tets in index order). newVertex[v]: the new number of vertex v, a permutation
+  /// of 0..numVertices()−1; newTet[t]: the new number of the live tet in slot t, a
+  /// permutation onto 0..numTets()−1 (kNone for free slots). Geometry, adjacency,
+  /// constrained faces and the certified flag are unchanged; the free slots are dropped (no
+  /// free list afterwards). Throws MeshingError, before any change, on a bad permutation.
+  void renumber(const std::vector<std::uint32_t>& newVertex, const std::vector<std::uint32_t>& newTet);
   void clear();
   /// Bytes held by the arrays (capacities, not sizes): the memory cost of the kernel.
   std::size_t memoryBytes() const;

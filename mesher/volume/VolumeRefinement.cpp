@@ -335,8 +335,46 @@ double predictTetCount(std::size_t currentTets, double worstQuality, double qual
 }
 
 VolumeRefineStats refineVolume(SolidTetMesh& s, const ControlSpace3d& cs, const VolumeRefineOptions& o) {
-  Refiner r(s, cs, o);
-  return r.run();
+  const std::size_t before = s.mesh.numVertices();
+  VolumeRefineStats st;
+  {
+    Refiner r(s, cs, o);
+    st = r.run();
+  }
+  if (o.renumber) renumberSpatially(s, before);
+  return st;
+}
+
+void renumberSpatially(SolidTetMesh& s, std::size_t firstVertex) {
+  del3d::TetMesh& mesh = s.mesh;
+  const std::size_t nv = mesh.numVertices();
+  if (firstVertex > nv) firstVertex = nv;
+  std::vector<Vec3> at;
+  at.reserve(nv - firstVertex);
+  for (std::size_t v = firstVertex; v < nv; ++v) at.push_back(mesh.point(VertexId(static_cast<std::uint32_t>(v))));
+  std::vector<std::uint32_t> newVertex(nv);
+  for (std::size_t v = 0; v < firstVertex; ++v) newVertex[v] = static_cast<std::uint32_t>(v);
+  {
+    const std::vector<std::uint32_t> order = del3d::hilbertOrder(at);
+    for (std::size_t k = 0; k < order.size(); ++k)
+      newVertex[firstVertex + order[k]] = static_cast<std::uint32_t>(firstVertex + k);
+  }
+  std::vector<int> node(nv, -1);
+  for (std::size_t v = 0; v < nv && v < s.node.size(); ++v) node[newVertex[v]] = s.node[v];
+  // Tets by their highest new vertex number (counting sort, stable in the old slot order).
+  std::vector<std::uint32_t> first(nv + 1, 0);
+  auto key = [&](std::uint32_t t) {
+    const std::uint32_t* tv = mesh.tetVertices(TetId(t));
+    return std::max({newVertex[tv[0]], newVertex[tv[1]], newVertex[tv[2]], newVertex[tv[3]]});
+  };
+  for (std::uint32_t t = 0; t < mesh.tetSlots(); ++t)
+    if (mesh.isAlive(TetId(t))) ++first[key(t) + 1];
+  for (std::size_t v = 0; v < nv; ++v) first[v + 1] += first[v];
+  std::vector<std::uint32_t> newTet(mesh.tetSlots(), del3d::kNone);
+  for (std::uint32_t t = 0; t < mesh.tetSlots(); ++t)
+    if (mesh.isAlive(TetId(t))) newTet[t] = first[key(t)]++;
+  mesh.renumber(newVertex, newTet);
+  s.node = std::move(node);
 }
 
 }  // namespace aniso

@@ -78,6 +78,8 @@ struct VolumeRefineOptions {
   double budgetFactor = 2.0;              ///< vertex budget relative to the eq. 6.2 tet count
   std::size_t batchDivisor = 4;           ///< batch = queue size / batchDivisor (see above)
   std::size_t maxBatch = 1 << 16;
+  /// Afterwards, renumberSpatially(s, vertices before the refinement).
+  bool renumber = true;
   /// Called about every progressInterval insertions (may be empty).
   std::function<void(const VolumeRefineProgress&)> progress;
   std::size_t progressInterval = 10000;
@@ -95,6 +97,12 @@ struct VolumeRefineStats {
 };
 
 VolumeRefineStats refineVolume(SolidTetMesh& s, const ControlSpace3d& cs, const VolumeRefineOptions& o = {});
+
+/// Memory locality for the phases after the refinement (TetMesh::renumber): the vertices from
+/// firstVertex on are renumbered along a Hilbert curve (those before keep their numbers),
+/// `node` follows them, and the tets are renumbered by their highest vertex number (free
+/// slots dropped, so tet ids from before are not kept). Deterministic.
+void renumberSpatially(SolidTetMesh& s, std::size_t firstVertex);
 
 /// q(K) of eq. 5.2 for the tet (a, b, c, d) in the metric m (without the edge check).
 double refinementQuality(const Metric3d& m, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
