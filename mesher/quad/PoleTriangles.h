@@ -17,7 +17,11 @@ namespace aniso::quad {
 /// the neighbours' links across them become kNone. The mesh stays valid (validate()).
 std::vector<Corners> detachPoleTriangles(QuadMesh2d& mesh);
 
-/// Appends the detached triangles again as elements without links.
-void reattachPoleTriangles(QuadMesh2d& mesh, const std::vector<Corners>& triangles);
+/// Removes live triangle e (appending its corners to `out`): its corners become boundary
+/// vertices, the neighbours' links across it kNone. Shared by the set-aside operators.
+void detachTriangle(QuadMesh2d& mesh, int e, std::vector<Corners>& out);
+
+/// Appends detached triangles (of any set-aside operator) again as elements without links.
+void reattachTriangles(QuadMesh2d& mesh, const std::vector<Corners>& triangles);
 
 }  // namespace aniso::quad

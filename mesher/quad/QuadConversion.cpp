@@ -6,6 +6,7 @@
 
 #include "mesher/core/Log.h"
 #include "mesher/quad/PoleTriangles.h"
+#include "mesher/quad/SharpCornerTriangles.h"
 
 namespace aniso::quad {
 namespace {
@@ -32,6 +33,7 @@ QuadStats convertToQuads(FaceMesh& fm, const ControlSpace2d& cs, const Parametri
   QuadStats st;
   QuadMesh2d mesh = QuadMesh2d::fromFaceMesh(fm);
   const std::vector<Corners> poles = detachPoleTriangles(mesh);
+  const std::vector<Corners> sharp = detachSharpCornerTriangles(mesh, nodes);
   VertexMetrics metrics(mesh, cs, surface, nodes);
   st.merge = mergeFront(mesh, metrics, o.merge);
   auto pairUp = [&] {
@@ -52,7 +54,8 @@ QuadStats convertToQuads(FaceMesh& fm, const ControlSpace2d& cs, const Parametri
   if (st.paired > 0) st.smoothed += smoothQuadMesh(mesh, metrics, o.smooth).moved;
   mesh.compact();
   measure(mesh, metrics, st);
-  reattachPoleTriangles(mesh, poles);
+  reattachTriangles(mesh, poles);
+  reattachTriangles(mesh, sharp);
   mesh.dropUnusedVertices();
   mesh.toFaceMesh(fm);
   st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

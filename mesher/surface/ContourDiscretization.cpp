@@ -29,6 +29,7 @@
 #include <tuple>
 
 #include "mesher/core/Error.h"
+#include "mesher/surface/contour/CornerParity.h"
 #include "mesher/surface/contour/MetricArcLength.h"
 #include "mesher/surface/contour/PeriodicUv.h"
 
@@ -228,9 +229,11 @@ std::vector<int> segmentCounts(const Model& model, const std::vector<const Contr
     if (used[e]) n[e] = basicCount(model.edges[e], static_cast<int>(e), length[e], options);
   separateParallelEdges(model, used, length, n);
   fillShortLoops(model, spaces, length, n);
-  if (options.evenSegments)
+  if (options.evenSegments) {
     for (int& k : n)
       if (k % 2) ++k;
+    contour::makeCornerParity(model, spaces, used, n);
+  }
   return n;
 }
 

@@ -20,7 +20,9 @@
 // (contour/MetricArcLength.h); n = max(1, round(∫ρ)) segments, then raised where needed for
 // a valid boundary: a closed edge gets at least max(3, minSegmentsClosedEdge); of several
 // single-segment edges joining the same two vertices only the shortest stays single; every
-// loop of a meshed face gets at least 3 segments; with evenSegments odd counts get one more.
+// loop of a meshed face gets at least 3 segments; with evenSegments odd counts get one more,
+// then faces with an odd number of corners too sharp for a quad get an odd boundary count
+// (contour/CornerParity.h).
 // The nodes are at equal metric arc length. Deterministic.
 #include <vector>
 

@@ -8,6 +8,7 @@
 #include "contour_test_models.h"
 #include "mesher/core/Error.h"
 #include "mesher/surface/ContourDiscretization.h"
+#include "mesher/surface/contour/CornerParity.h"
 
 using namespace aniso;
 using namespace aniso::test;
@@ -260,5 +261,71 @@ TEST(ContourDiscretization, ErrorsNameTheEdge) {
     FAIL() << "empty range";
   } catch (const MeshingError& e) {
     EXPECT_NE(std::string(e.what()).find("edge 2"), std::string::npos) << e.what();
+  }
+}
+
+namespace {
+
+/// A triangle of the plane z = 0 with a corner of `angleDeg` at the origin: (0,0), (10,0),
+/// (10, 10 tan a); with `square`, the rectangle [10, 10 + h] × [0, h] (h = 10 tan a) shares
+/// its vertical edge (face 1).
+Model sharpTriangle(double angleDeg, bool square = false, bool reversed = false) {
+  ModelBuilder b;
+  const double h = 10 * std::tan(angleDeg * kPi / 180);
+  const int f = b.face(xyPlane(-1, 30, -1, 30), box(0, 0, 10, h), reversed);
+  std::vector<int> vs = {b.vertex({0, 0, 0}), b.vertex({10, 0, 0}), b.vertex({10, h, 0})};
+  if (reversed) std::reverse(vs.begin(), vs.end());
+  const std::vector<int> edges = polygonLoop(b, f, vs, true);
+  if (square) {
+    const int g = b.face(xyPlane(-1, 30, -1, 30), box(10, 0, 10 + h, h));
+    const int v20 = b.vertex({10 + h, 0, 0}), v21 = b.vertex({10 + h, h, 0});
+    const int shared = edges[1];  // (10,0) -> (10,h)
+    const auto lineOn = [&](int e) {
+      const Vec3 p = b.m.vertices[b.m.edges[e].v0].p, q = b.m.vertices[b.m.edges[e].v1].p;
+      return b.pcurve(e, g, std::make_shared<Line2d>(Vec2(p.x(), p.y()), Vec2(q.x(), q.y())));
+    };
+    const int e0 = b.line(vs[1], v20), e1 = b.line(v20, v21), e2 = b.line(v21, vs[2]);
+    const int k0 = lineOn(e0), k1 = lineOn(e1), k2 = lineOn(e2), ks = lineOn(shared);
+    b.loop(g, {{e0, false, k0}, {e1, false, k1}, {e2, false, k2}, {shared, true, ks}}, true);
+  }
+  return b.m;
+}
+
+int faceSegments(const Model& m, const Discretized& r, int f) {
+  int n = 0;
+  for (const Loop& loop : m.faces[f].loops)
+    for (const EdgeUse& u : loop.uses) n += segments(r.edges[u.edge]);
+  return n;
+}
+
+}  // namespace
+
+TEST(CornerParity, SharpCornersCountedOnTheFaceSide) {
+  EXPECT_EQ(contour::sharpCorners(sharpTriangle(3), 0), 1);
+  EXPECT_EQ(contour::sharpCorners(sharpTriangle(3, false, true), 0), 1);  // reversed face, clockwise loop
+  EXPECT_EQ(contour::sharpCorners(sharpTriangle(10), 0), 0);
+  EXPECT_EQ(contour::sharpCorners(unitSquare(), 0), 0);
+  // A reflex corner of nearly 360° is not sharp: the square's loop walked backwards puts
+  // the face outside, every corner at 270°.
+  EXPECT_EQ(contour::sharpCorners(unitSquare(true), 0), 0);
+}
+
+TEST(CornerParity, BoundaryCountParityFollowsTheSharpCorners) {
+  ContourOptions o;
+  o.evenSegments = true;
+  for (const double h : {0.3, 1.0, 3.0}) {
+    // One face with one sharp corner: an odd boundary count (a free edge takes the odd count).
+    const Model one = sharpTriangle(3);
+    const Discretized r1(one, {isotropic(h)}, o);
+    EXPECT_EQ(faceSegments(one, r1, 0) % 2, 1) << h;
+    const Model blunt = sharpTriangle(10);
+    const Discretized rb(blunt, {isotropic(h)}, o);
+    EXPECT_EQ(faceSegments(blunt, rb, 0) % 2, 0) << h;
+    // With a neighbour that has no sharp corner, the neighbour stays even: the odd count goes
+    // on a free edge of the triangle, not on the shared one.
+    const Model two = sharpTriangle(3, true);
+    const Discretized r2(two, {isotropic(h)}, o);
+    EXPECT_EQ(faceSegments(two, r2, 0) % 2, 1) << h;
+    EXPECT_EQ(faceSegments(two, r2, 1) % 2, 0) << h;
   }
 }

@@ -228,7 +228,7 @@ TEST(QuadPole, PoleTrianglesAreSetAsideAndPutBack) {
   EXPECT_EQ(facetest::joined(m.validate()), "");
   EXPECT_EQ(count(m, 3), 4);
   EXPECT_TRUE(m.boundary[6]);
-  reattachPoleTriangles(m, poles);
+  reattachTriangles(m, poles);
   EXPECT_EQ(count(m, 3), 6);
 }
 
