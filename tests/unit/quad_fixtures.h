@@ -107,4 +107,12 @@ inline int count(const QuadMesh2d& m, int sides) {
   return n;
 }
 
+/// The 2×1 plate with a round hole meshed isotropically at h = 0.05: the common test face.
+struct HolePlate {
+  std::vector<facetest::Polygon> loops{facetest::rectangle(0, 0, 2, 1), facetest::circle(aniso::Vec2(0.7, 0.5), 0.25, 40, true)};
+  double h = 0.05;
+  aniso::FaceMesh fm = triangleMesh(loops, h);
+  std::shared_ptr<aniso::CSAnalytic2d> cs = facetest::isotropicSpace(Box2Of(loops), h);
+};
+
 }  // namespace quadtest

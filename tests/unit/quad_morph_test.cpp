@@ -21,12 +21,7 @@ using namespace aniso;
 using namespace aniso::quad;
 using quadtest::count;
 
-struct Plate {
-  std::vector<facetest::Polygon> loops{facetest::rectangle(0, 0, 2, 1), facetest::circle(Vec2(0.7, 0.5), 0.25, 40, true)};
-  double h = 0.05;
-  FaceMesh fm = quadtest::triangleMesh(loops, h);
-  std::shared_ptr<CSAnalytic2d> cs = facetest::isotropicSpace(quadtest::Box2Of(loops), h);
-};
+using Plate = quadtest::HolePlate;
 
 /// The first front edge (triangle, edge) on the face boundary whose left end is a boundary
 /// vertex with a straight (≈ π) region angle.

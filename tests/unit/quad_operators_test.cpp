@@ -18,12 +18,7 @@ using namespace aniso;
 using namespace aniso::quad;
 using quadtest::count;
 
-struct Fixture {
-  std::vector<facetest::Polygon> loops{facetest::rectangle(0, 0, 2, 1), facetest::circle(Vec2(0.7, 0.5), 0.25, 40, true)};
-  double h = 0.05;
-  FaceMesh fm = quadtest::triangleMesh(loops, h);
-  std::shared_ptr<CSAnalytic2d> cs = facetest::isotropicSpace(quadtest::Box2Of(loops), h);
-};
+using Fixture = quadtest::HolePlate;
 
 /// Applies `split` to the first 20 triangle pairs that accept it, then validates.
 template <class Split>
