@@ -13,6 +13,9 @@ tier = sys.argv[4] if len(sys.argv) > 4 and sys.argv[3] == "--tier" else "fast"
 sys.path.insert(0, os.path.join(shared, "tools"))
 import meshq  # the referee
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from mesh_each import mesh_each
+
 models = os.path.join(shared, "models")
 manifest = [m for m in json.load(open(os.path.join(models, "MANIFEST.json"))) if "error" not in m]
 FAST = {"box.brep", "cylinder.brep", "cylinder2.brep", "rod.brep", "part.step", "component8.step",
@@ -25,39 +28,27 @@ if tier == "fast":
     manifest = [m for m in manifest if m["file"] in FAST]
 t = tempfile.mkdtemp()
 passed, failed = 0, []
-for extra in runs:
-    for m in manifest:
-        out, rep = os.path.join(t, "out.msh"), os.path.join(t, "rep.json")
-        for x in (out, rep):
-            if os.path.exists(x): os.remove(x)
-        name = f"{m['file']} {' '.join(extra) or 'defaults'}"
-        cmd = [cli, "mesh", os.path.join(models, m["file"]), "-o", out, "--dim", "2", "--report", rep] + extra
-        try:
-            p = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
-        except subprocess.TimeoutExpired:
-            failed.append(f"{name}: timeout"); continue
-        if p.returncode != 0:
-            failed.append(f"{name}: exit {p.returncode}: {p.stderr.strip()[-200:]}"); continue
-        r = json.load(open(rep))
-        # The CAD area of the faces we mesh, each face once, as OCCT integrates it (the
-        # manifest's area counts a face as often as the file lists it: full_sphere.brep
-        # lists its two faces twice).
-        cad_area = r["model"]["unique_face_area"]
-        q = meshq.stats(out)
-        why = []
-        if r["status"] != "ok": why.append(f"status {r['status']}")
-        if not q.get("tris"): why.append("no triangles")
-        else:
-            if m["solids"] > 0 and q["edges_open"]: why.append(f"{q['edges_open']} open edges")
-            if q["edges_nonmanifold"] and m["solids"] <= 1: why.append(f"{q['edges_nonmanifold']} non-manifold edges")
-            rel = (q["tri_area"] - cad_area) / cad_area
-            if abs(rel) > 0.01: why.append(f"area off by {rel:.2%}")
-            if q["tri_eta_min"] <= 0: why.append(f"degenerate triangle (eta_min {q['tri_eta_min']})")
-        if r["counts"]["triangles"] != q.get("tris"): why.append("report and file disagree on the triangle count")
-        if why: failed.append(f"{name}: " + "; ".join(why))
-        else:
-            passed += 1
-            print(f"ok {name}: {q['tris']} triangles, eta avg {q['tri_eta_avg']}, area err {rel:.2e}", flush=True)
+for m, name, out, rep in mesh_each(cli, models, manifest, runs, 2, 600, t, failed):
+    r = json.load(open(rep))
+    # The CAD area of the faces we mesh, each face once, as OCCT integrates it (the
+    # manifest's area counts a face as often as the file lists it: full_sphere.brep
+    # lists its two faces twice).
+    cad_area = r["model"]["unique_face_area"]
+    q = meshq.stats(out)
+    why = []
+    if r["status"] != "ok": why.append(f"status {r['status']}")
+    if not q.get("tris"): why.append("no triangles")
+    else:
+        if m["solids"] > 0 and q["edges_open"]: why.append(f"{q['edges_open']} open edges")
+        if q["edges_nonmanifold"] and m["solids"] <= 1: why.append(f"{q['edges_nonmanifold']} non-manifold edges")
+        rel = (q["tri_area"] - cad_area) / cad_area
+        if abs(rel) > 0.01: why.append(f"area off by {rel:.2%}")
+        if q["tri_eta_min"] <= 0: why.append(f"degenerate triangle (eta_min {q['tri_eta_min']})")
+    if r["counts"]["triangles"] != q.get("tris"): why.append("report and file disagree on the triangle count")
+    if why: failed.append(f"{name}: " + "; ".join(why))
+    else:
+        passed += 1
+        print(f"ok {name}: {q['tris']} triangles, eta avg {q['tri_eta_avg']}, area err {rel:.2e}", flush=True)
 
 # Gmsh reads the MSH file with one named physical group per face; determinism.
 box = os.path.join(models, "box.brep")

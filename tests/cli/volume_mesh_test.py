@@ -19,6 +19,9 @@ tier = sys.argv[4] if len(sys.argv) > 4 and sys.argv[3] == "--tier" else "fast"
 sys.path.insert(0, os.path.join(shared, "tools"))
 import meshq  # the referee
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from mesh_each import mesh_each
+
 models = os.path.join(shared, "models")
 manifest = [m for m in json.load(open(os.path.join(models, "MANIFEST.json"))) if "error" not in m and m["solids"] > 0]
 FAST = {"box.brep", "cylinder.brep", "rod.brep", "screw.step", "part.step", "full_sphere.brep",
@@ -40,43 +43,30 @@ def regions(path):
     return len(tags)
 
 
-for extra in runs:
-    for m in manifest:
-        out, rep = os.path.join(t, "out.msh"), os.path.join(t, "rep.json")
-        for x in (out, rep):
-            if os.path.exists(x): os.remove(x)
-        name = f"{m['file']} {' '.join(extra) or 'defaults'}"
-        cmd = [cli, "mesh", os.path.join(models, m["file"]), "-o", out, "--dim", "3", "--report", rep] + extra
-        try:
-            p = subprocess.run(cmd, capture_output=True, text=True, timeout=1800)
-        except subprocess.TimeoutExpired:
-            failed.append(f"{name}: timeout"); continue
-        if p.returncode != 0:
-            if os.path.exists(out): failed.append(f"{name}: output file left behind by a failure")
-            failed.append(f"{name}: exit {p.returncode}: {p.stderr.strip()[-200:]}"); continue
-        r = json.load(open(rep))
-        q = meshq.stats(out)
-        why = []
-        if r["status"] != "ok": why.append(f"status {r['status']}")
-        if not q.get("tets"): why.append("no tetrahedra")
-        else:
-            if q["inverted"]: why.append(f"{q['inverted']} inverted tetrahedra")
-            rel = (q["volume"] - m["volume"]) / m["volume"]
-            if abs(rel) > 0.01: why.append(f"volume off by {rel:.2%}")
-            if r["counts"]["tetrahedra"] != q["tets"]: why.append("report and file disagree on the tetrahedron count")
-            if regions(out) != m["solids"]: why.append(f"{regions(out)} regions for {m['solids']} solids")
-            px = r.get("proximity", {})
-            if not 0 <= px.get("rounds", -1) <= 2: why.append(f"proximity block missing or rounds out of 0..2: {px}")
-            if tier == "slow" and q["eta_avg"] < 0.80: why.append(f"mean ratio average {q['eta_avg']}")
-            if tier == "slow" and q["dihedral_min"] < 2.0: why.append(f"smallest dihedral {q['dihedral_min']}")
-        if why: failed.append(f"{name}: " + "; ".join(why))
-        else:
-            passed += 1
-            rc = r.get("recovery", {})
-            print(f"ok {name}: {q['tets']} tets, volume err {rel:.1e}, eta avg {q['eta_avg']}, dihedral min "
-                  f"{q['dihedral_min']}, missing edges/faces {rc.get('missing_edges')}/{rc.get('missing_faces')}, "
-                  f"steiner {rc.get('steiner_points_inside')}, proximity rounds {px.get('rounds')} "
-                  f"(faces {px.get('faces_refined')})", flush=True)
+for m, name, out, rep in mesh_each(cli, models, manifest, runs, 3, 1800, t, failed):
+    r = json.load(open(rep))
+    q = meshq.stats(out)
+    why = []
+    if r["status"] != "ok": why.append(f"status {r['status']}")
+    if not q.get("tets"): why.append("no tetrahedra")
+    else:
+        if q["inverted"]: why.append(f"{q['inverted']} inverted tetrahedra")
+        rel = (q["volume"] - m["volume"]) / m["volume"]
+        if abs(rel) > 0.01: why.append(f"volume off by {rel:.2%}")
+        if r["counts"]["tetrahedra"] != q["tets"]: why.append("report and file disagree on the tetrahedron count")
+        if regions(out) != m["solids"]: why.append(f"{regions(out)} regions for {m['solids']} solids")
+        px = r.get("proximity", {})
+        if not 0 <= px.get("rounds", -1) <= 2: why.append(f"proximity block missing or rounds out of 0..2: {px}")
+        if tier == "slow" and q["eta_avg"] < 0.80: why.append(f"mean ratio average {q['eta_avg']}")
+        if tier == "slow" and q["dihedral_min"] < 2.0: why.append(f"smallest dihedral {q['dihedral_min']}")
+    if why: failed.append(f"{name}: " + "; ".join(why))
+    else:
+        passed += 1
+        rc = r.get("recovery", {})
+        print(f"ok {name}: {q['tets']} tets, volume err {rel:.1e}, eta avg {q['eta_avg']}, dihedral min "
+              f"{q['dihedral_min']}, missing edges/faces {rc.get('missing_edges')}/{rc.get('missing_faces')}, "
+              f"steiner {rc.get('steiner_points_inside')}, proximity rounds {px.get('rounds')} "
+              f"(faces {px.get('faces_refined')})", flush=True)
 
 if tier == "fast":  # same output for any number of threads
     files = []
