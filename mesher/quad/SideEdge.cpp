@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "mesher/quad/TriangleFlip.h"
+
 namespace aniso::quad {
 namespace {
 
@@ -13,23 +15,9 @@ double rayAngle(const QuadMesh2d& mesh, const Mat2& s, int v, int x, int y) {
   return std::abs(std::atan2(p.x() * q.y() - p.y() * q.x(), p.dot(q)));
 }
 
-/// Swaps the edge (x, y) of triangle f, shared with triangle g: (v, x, y) + (y, x, w) →
-/// (v, x, w) + (v, w, y) when both are strictly convex and counter-clockwise. Returns w, or kNone.
-int swapOpposite(QuadMesh2d& mesh, int f, int v) {
-  const int i = mesh.cornerIndex(f, v);
-  const Corners& c = mesh.corners[f];
-  const int x = c[(i + 1) % 3], y = c[(i + 2) % 3];
-  const int g = mesh.adj[f][(i + 1) % 3];
-  if (g == kNone || !mesh.isTriangle(g)) return kNone;
-  const int j = mesh.edgeIndex(g, y, x);
-  if (j == kNone) return kNone;
-  const int w = mesh.corners[g][(j + 2) % 3];
-  const std::array<Corners, 2> added{Corners{v, x, w, kNone}, Corners{v, w, y, kNone}};
-  if (!convexCCW(mesh, added[0]) || !convexCCW(mesh, added[1])) return kNone;
-  const std::array<int, 2> removed{f, g};
-  mesh.replacePatch(removed, added);
-  return w;
-}
+/// Swaps the edge (x, y) of triangle f = (v, x, y) opposite v (TriangleFlip.h). Returns the
+/// new corner w, or kNone.
+int swapOpposite(QuadMesh2d& mesh, int f, int v) { return flipTriangleEdge(mesh, f, (mesh.cornerIndex(f, v) + 1) % 3); }
 
 /// Splits the inner edge (v, x) of the region at its midpoint: its two triangles become
 /// four (always strictly convex: halves of valid triangles). Returns the midpoint, or kNone.

@@ -3,6 +3,7 @@
 #include <array>
 
 #include "mesher/predicates/Predicates.h"
+#include "mesher/quad/TriangleFlip.h"
 
 namespace aniso::quad {
 namespace {
@@ -55,22 +56,6 @@ std::vector<Crossing> crossings(const QuadMesh2d& mesh, int c, int d, int hint, 
   return {};
 }
 
-/// Swaps the edge k of triangle f with its neighbour when the two make a strictly convex
-/// quadrilateral.
-bool swapEdge(QuadMesh2d& mesh, int f, int k) {
-  const int g = mesh.adj[f][k];
-  if (g == kNone || !mesh.isTriangle(g)) return false;
-  const int x = mesh.corners[f][k], y = mesh.corners[f][(k + 1) % 3], p = mesh.corners[f][(k + 2) % 3];
-  const int j = mesh.edgeIndex(g, y, x);
-  if (j == kNone) return false;
-  const int w = mesh.corners[g][(j + 2) % 3];
-  const std::array<Corners, 2> added{Corners{p, x, w, kNone}, Corners{p, w, y, kNone}};
-  if (!convexCCW(mesh, added[0]) || !convexCCW(mesh, added[1])) return false;
-  const std::array<int, 2> removed{f, g};
-  mesh.replacePatch(removed, added);
-  return true;
-}
-
 }  // namespace
 
 int elementAt(const QuadMesh2d& mesh, int v, int hint) {
@@ -105,7 +90,7 @@ bool recoverTopEdge(QuadMesh2d& mesh, int c, int d, int hintAtC, int maxSwaps) {
       // The triangle at c keeps a live id if it is not the one swapped; else the new one at c.
       const int other = mesh.adj[x.f][x.k];
       const bool touchesHint = x.f == hintAtC || other == hintAtC;
-      if (!swapEdge(mesh, x.f, x.k)) continue;
+      if (flipTriangleEdge(mesh, x.f, x.k) == kNone) continue;
       if (touchesHint) hintAtC = mesh.numElements() - 2;  // the first new triangle has corner p = c when f was at c
       swapped = true;
       break;

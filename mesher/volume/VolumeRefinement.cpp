@@ -38,15 +38,6 @@ constexpr double kTetsPerVertex = 5.5;
 /// Volume of the unit regular tet, V_M(K_I) of eq. 6.2.
 constexpr double kIdealVolume = 0.11785113019775793;  // 1 / (6√2)
 
-/// Relative off-isotropy below which M(P) is taken as s·I for the in-sphere test.
-constexpr double kIsotropicTolerance = 1e-12;
-
-bool isIsotropic(const Metric3d& m) {
-  const Mat3& a = m.matrix();
-  const double s = a.trace() / 3;
-  return (a - s * Mat3::Identity()).norm() <= kIsotropicTolerance * s;
-}
-
 struct TetPoints {
   std::array<Vec3, 4> p;
   Vec3 centroid() const { return 0.25 * (p[0] + p[1] + p[2] + p[3]); }
@@ -192,7 +183,7 @@ Refiner::Outcome Refiner::tryInsert(const Vec3& p, TetId k, bool mle) {
   del3d::InsertOptions io;
   io.start = loc.tet;
   // An isotropic M(P) = I/h gives the same in-sphere signs as the identity, exactly.
-  io.transform = isIsotropic(mp) ? nullptr : &mp.matrix();
+  io.transform = isotropicScale(mp.matrix()) > 0 ? nullptr : &mp.matrix();
   io.mustRemove = k;
   const del3d::InsertResult r = inserter_.insert(p, io);
   switch (r.status) {

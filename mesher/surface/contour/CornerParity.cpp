@@ -70,18 +70,18 @@ int makeCornerParity(const Model& model, const std::vector<const ControlSpace2d*
   struct Link {
     int edge, to;
   };
+  // One pass over the loops: per edge, its uses by meshed faces (in face order).
+  std::vector<std::map<int, int>> usesOf(model.edges.size());
+  for (int f = 0; f < nf; ++f) {
+    if (!spaces[f]) continue;
+    for (const Loop& loop : model.faces[f].loops)
+      for (const EdgeUse& u : loop.uses) ++usesOf[u.edge][f];
+  }
   std::vector<std::vector<Link>> adj(nf + 1);
   for (int e = 0; e < static_cast<int>(model.edges.size()); ++e) {
     if (!used[e] || model.edges[e].degenerate) continue;
-    std::map<int, int> uses;
-    for (int f = 0; f < nf; ++f) {
-      if (!spaces[f]) continue;
-      for (const Loop& loop : model.faces[f].loops)
-        for (const EdgeUse& u : loop.uses)
-          if (u.edge == e) ++uses[f];
-    }
     std::vector<int> odd;
-    for (const auto& [f, k] : uses)
+    for (const auto& [f, k] : usesOf[e])
       if (k % 2) odd.push_back(f);
     if (odd.size() == 1) odd.push_back(freeNode);
     if (odd.size() != 2) continue;

@@ -24,8 +24,7 @@ double meanRatioCubed(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3
 
 void VertexMetrics::setMetric(std::size_t v, const Mat3& m) {
   m_[v] = m;
-  const double s = (m(0, 0) + m(1, 1) + m(2, 2)) / 3;
-  iso_[v] = (m - s * Mat3::Identity()).norm() <= kIsotropicTolerance * s;
+  iso_[v] = isotropicScale(m) > 0;
 }
 
 void VertexMetrics::sync() {

@@ -16,11 +16,9 @@
 
 #include "mesher/control/ControlSpace3d.h"
 #include "mesher/delaunay3d/TetMesh.h"
+#include "mesher/metric/IsotropicTensor.h"
 
 namespace aniso::improve3d {
-
-/// Relative off-isotropy (|M − s·I| / s) below which a vertex tensor counts as isotropic.
-inline constexpr double kIsotropicTolerance = 1e-12;
 
 class VertexMetrics {
  public:

@@ -3,8 +3,8 @@
 namespace aniso::refine3d {
 
 void VertexTensors::store(std::size_t v, const Mat3& m) {
-  const double s = m.trace() / 3;
-  if (s > 0 && (m - s * Mat3::Identity()).norm() <= kIsotropicTolerance * s) {
+  const double s = isotropicScale(m);
+  if (s > 0) {
     scale_[v] = s;
     return;
   }

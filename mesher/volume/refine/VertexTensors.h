@@ -12,11 +12,9 @@
 
 #include "mesher/control/ControlSpace3d.h"
 #include "mesher/delaunay3d/TetMesh.h"
+#include "mesher/metric/IsotropicTensor.h"
 
 namespace aniso::refine3d {
-
-/// Relative off-isotropy (|M − s·I| / s) below which a tensor is stored as s·I.
-inline constexpr double kIsotropicTolerance = 1e-12;
 
 class VertexTensors {
  public:
