@@ -5,6 +5,7 @@
 #include <deque>
 
 #include "mesher/quad/ChainQuadrangulation.h"
+#include "mesher/quad/HexagonSplit.h"
 #include "mesher/quad/PairSplit.h"
 
 namespace aniso::quad {
@@ -177,11 +178,17 @@ class Transport {
     return false;
   }
 
-  /// The last resort for two adjacent triangles (PairSplit.h).
+  /// The last resorts for two adjacent triangles: five quads (PairSplit.h), else four
+  /// with a quad next to them (HexagonSplit.h).
   bool splitPair(int a, int b) {
-    if (!splitPairIntoQuads(mesh_, metrics_, a, b, o_.minQuality)) return false;
+    if (splitPairIntoQuads(mesh_, metrics_, a, b, o_.minQuality)) {
+      ++stats_.splitPairs;
+    } else if (splitPairWithQuad(mesh_, metrics_, a, b, o_.minQuality)) {
+      ++stats_.hexagonSplits;
+    } else {
+      return false;
+    }
     ++stats_.paired;
-    ++stats_.splitPairs;
     return true;
   }
 

@@ -9,7 +9,8 @@
 // the pentagon (triangle ∪ quad) is cut into a quad and a triangle (five ways), the legal
 // cut bringing the triangle's centroid nearest to the goal taken, and only if it comes
 // nearer (so the walk ends) — until the two share an edge, and then they are merged, or,
-// when that quad would be poor, split into five quads (PairSplit.h).
+// when that quad would be poor, split into five quads (PairSplit.h) or, with a quad next to
+// them, into four (HexagonSplit.h: a flat boundary vertex or a sharp corner in the pair).
 // Check, then change: every cut and the final merge must give strictly convex,
 // counter-clockwise elements with quads of scaled Jacobian ≥ minQuality (QuadShape.h);
 // when the walk cannot be completed its moves are undone and the next partner is tried.
@@ -27,6 +28,7 @@ struct TransportOptions {
 struct TransportStats {
   int paired = 0;   ///< pairs merged into quads
   int splitPairs = 0;  ///< of which split into five quads (PairSplit.h)
+  int hexagonSplits = 0;  ///< of which split into four quads with a quad next to them (HexagonSplit.h)
   int chains = 0;      ///< of which by re-quadrangulating the chain between them (ChainQuadrangulation.h)
   int moves = 0;    ///< pentagon cuts
   int triangles = 0;  ///< live triangles left

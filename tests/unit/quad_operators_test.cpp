@@ -3,6 +3,7 @@
 // odd-cycle splits, triangle transport, topological transformations, smoothing.
 #include <gtest/gtest.h>
 
+#include "mesher/quad/HexagonSplit.h"
 #include "mesher/quad/MergeConversion.h"
 #include "mesher/quad/OddSplit.h"
 #include "mesher/quad/PairSplit.h"
@@ -151,6 +152,51 @@ TEST(QuadPairSplit, TwoTrianglesBecomeFiveQuads) {
   quadtest::expectValid(m, snap);
   EXPECT_EQ(quadtest::count(m, 4), 5);
   EXPECT_EQ(quadtest::count(m, 3), 0);
+}
+
+TEST(QuadHexagonSplit, PairAtFlatBoundaryVertexAndSharpCornerBecomesQuads) {
+  // A 10° wedge, one element wide: the tip triangle (0, 1, 5) and the triangle (1, 4, 5)
+  // meet at vertex 5, a straight-boundary vertex, and the quad (1, 2, 3, 4) is next to
+  // them. Merging the pair gives a flat corner at 5; the five-quad split halves the 10°
+  // corner (scaled Jacobian sin 5° < 0.1). The hexagon 0..5 takes four quads.
+  const double a = 10.0 * 3.14159265358979323846 / 180.0;
+  const auto upper = [&](double r) { return aniso::Vec2(r * std::cos(a), r * std::sin(a)); };
+  aniso::FaceMesh fm;
+  fm.uv = {aniso::Vec2(0, 0), aniso::Vec2(0.8, 0), aniso::Vec2(1.6, 0), upper(1.8), upper(1.2), upper(0.6)};
+  fm.node = {0, 1, 2, 3, 4, 5};
+  fm.triangles = {{0, 1, 5}, {1, 4, 5}};
+  fm.quads = {{1, 2, 3, 4}};
+  aniso::quad::QuadMesh2d m = aniso::quad::QuadMesh2d::fromFaceMesh(fm);
+  ASSERT_EQ(facetest::joined(m.validate()), "");
+  const auto snap = quadtest::snapshot(m);
+  const auto cs = facetest::isotropicSpace(quadtest::Box2Of({facetest::rectangle(0, 0, 2, 1)}), 1.0);
+  aniso::quad::VertexMetrics metrics(m, *cs);
+  const int t1 = 0, t2 = 1;  // fromFaceMesh keeps the order: triangles first
+  ASSERT_TRUE(m.isTriangle(t1) && m.isTriangle(t2));
+  EXPECT_FALSE(aniso::quad::splitPairIntoQuads(m, metrics, t1, t2, 0.1));
+  ASSERT_TRUE(aniso::quad::splitPairWithQuad(m, metrics, t1, t2, 0.1));
+  quadtest::expectValid(m, snap);
+  EXPECT_EQ(quadtest::count(m, 4), 4);
+  EXPECT_EQ(quadtest::count(m, 3), 0);
+  EXPECT_EQ(m.numVertices(), 8);
+  for (int e = 0; e < m.numElements(); ++e) {
+    if (m.isQuad(e)) {
+      EXPECT_GE(aniso::quad::elementQuality(m, metrics, m.corners[e]), 0.1);
+    }
+  }
+}
+
+TEST(QuadHexagonSplit, NoQuadNextToThePairLeavesTheMeshUnchanged) {
+  aniso::FaceMesh fm;
+  fm.uv = {aniso::Vec2(0, 0), aniso::Vec2(1, 0.2), aniso::Vec2(2, 0), aniso::Vec2(1, 1)};
+  fm.node = {0, 1, 2, 3};
+  fm.triangles = {{0, 1, 3}, {1, 2, 3}};
+  aniso::quad::QuadMesh2d m = aniso::quad::QuadMesh2d::fromFaceMesh(fm);
+  const auto cs = facetest::isotropicSpace(quadtest::Box2Of({facetest::rectangle(0, 0, 2, 1)}), 1.0);
+  aniso::quad::VertexMetrics metrics(m, *cs);
+  EXPECT_FALSE(aniso::quad::splitPairWithQuad(m, metrics, 0, 1, 0.1));
+  EXPECT_EQ(quadtest::count(m, 3), 2);
+  EXPECT_EQ(m.numVertices(), 4);
 }
 
 }  // namespace
