@@ -10,8 +10,9 @@
 // all segments). A degenerate edge (pole) is measured along its pcurve moved one mesh size
 // into the face (see poleDensity), so the pole gets a ring of pieces for the face mesher
 // to fan from, instead of the single piece its g_min-guarded length gives.
-// Node creation order: vertex nodes (vertex order), then the inner nodes of every edge
-// (edge order, increasing t).
+// With evenSegments (quad meshes) the nodes near a face's sharp corners are matched across
+// the sliver there (contour/CuspNodes.h). Node creation order: vertex nodes (vertex
+// order), then the inner nodes of every edge (edge order, increasing t).
 //
 // Segment-count rules, each needed for a valid boundary:
 //  - a closed edge (v0 == v1) gets at least max(3, minSegmentsClosedEdge) segments (fewer
@@ -30,6 +31,7 @@
 
 #include "mesher/core/Error.h"
 #include "mesher/surface/contour/CornerParity.h"
+#include "mesher/surface/contour/CuspNodes.h"
 #include "mesher/surface/contour/MetricArcLength.h"
 #include "mesher/surface/contour/PeriodicUv.h"
 
@@ -242,12 +244,13 @@ void checkVertex(const Model& model, int v, int e) {
     throw MeshingError(edgeName(e) + ": vertex reference out of range");
 }
 
-/// The parameters and nodes of edge e split into n pieces along `arc`.
-EdgeDiscretization placeNodes(const Model& model, int e, const contour::MetricArcLength& arc, int n,
-                              const std::vector<int>& vertexNodes, SurfaceMesh& mesh) {
+/// The nodes of edge e at parameters t (n + 1 of them, ends included).
+EdgeDiscretization placeNodes(const Model& model, int e, std::vector<double> t, const std::vector<int>& vertexNodes,
+                              SurfaceMesh& mesh) {
   const ModelEdge& ed = model.edges[e];
+  const int n = static_cast<int>(t.size()) - 1;
   EdgeDiscretization d;
-  d.t = arc.equalSpacing(n);
+  d.t = std::move(t);
   for (std::size_t i = 1; i < d.t.size(); ++i)
     if (!(d.t[i] > d.t[i - 1]))
       throw MeshingError(edgeName(e) + ": the metric arc length cannot be inverted (parameters do not increase)");
@@ -310,9 +313,13 @@ std::vector<EdgeDiscretization> discretizeEdges(const Model& model,
     vertexNodes[v] = mesh.addNode(model.vertices[v].p, on);
   }
 
+  std::vector<std::vector<double>> params(ne);
+  for (int e = 0; e < ne; ++e)
+    if (used[e]) params[e] = arcs[arcOf[e]].equalSpacing(n[e]);
+  if (options.evenSegments) contour::matchCuspNodes(model, faceSpaces, params);
   std::vector<EdgeDiscretization> out(ne);
   for (int e = 0; e < ne; ++e)
-    if (used[e]) out[e] = placeNodes(model, e, arcs[arcOf[e]], n[e], vertexNodes, mesh);
+    if (used[e]) out[e] = placeNodes(model, e, std::move(params[e]), vertexNodes, mesh);
   return out;
 }
 

@@ -28,19 +28,26 @@ Vec3 chord(const ModelEdge& e, const EdgeUse& u, bool leaving) {
 
 }  // namespace
 
-int sharpCorners(const Model& model, int f) {
+std::vector<LoopCorner> sharpCornerList(const Model& model, int f) {
   const ModelFace& face = model.faces[f];
-  int count = 0;
-  for (const Loop& loop : face.loops) {
+  std::vector<LoopCorner> out;
+  for (std::size_t l = 0; l < face.loops.size(); ++l) {
+    const Loop& loop = face.loops[l];
     const std::size_t m = loop.uses.size();
-    for (std::size_t i = 0; i < m; ++i) {
+    for (std::size_t j = 0; j < m; ++j) {
+      // The corner before use j: from the last use before it that is not degenerate (a
+      // pole between two edges makes one corner of them, often a tangential cusp).
+      std::size_t i = (j + m - 1) % m;
+      while (i != j && model.edges[loop.uses[i].edge].degenerate) i = (i + m - 1) % m;
       const EdgeUse& a = loop.uses[i];
-      const EdgeUse& b = loop.uses[(i + 1) % m];
+      const EdgeUse& b = loop.uses[j];
       const ModelEdge& ea = model.edges[a.edge];
       const ModelEdge& eb = model.edges[b.edge];
-      if (ea.degenerate || eb.degenerate || !ea.curve || !eb.curve || b.pcurve < 0) continue;
+      if (i == j || ea.degenerate || eb.degenerate || !ea.curve || !eb.curve || b.pcurve < 0) continue;
+      // The normal a chord's length into b: at a pole the surface has none.
       const PCurve& pc = eb.pcurves[b.pcurve];
-      const Vec2 uv = pc.curve->point(b.reversed ? pc.t1 : pc.t0);
+      const double dt = kChordFraction * (pc.t1 - pc.t0);
+      const Vec2 uv = pc.curve->point(b.reversed ? pc.t1 - dt : pc.t0 + dt);
       Vec3 nrm = face.surface->normal(uv);
       if (face.reversed) nrm = -nrm;
       Vec3 tin = chord(ea, a, false), tout = chord(eb, b, true);
@@ -49,10 +56,11 @@ int sharpCorners(const Model& model, int f) {
       if (!(tin.norm() > 0) || !(tout.norm() > 0) || !tin.allFinite() || !tout.allFinite()) continue;
       // Left turn from the arriving to the leaving direction; interior = π − turn.
       const double turn = std::atan2(nrm.dot(tin.cross(tout)), tin.dot(tout));
-      if (std::numbers::pi - turn < kQuadCornerAngle) ++count;
+      if (std::numbers::pi - turn < kQuadCornerAngle)
+        out.push_back({static_cast<int>(l), static_cast<int>(i), static_cast<int>(j)});
     }
   }
-  return count;
+  return out;
 }
 
 int makeCornerParity(const Model& model, const std::vector<const ControlSpace2d*>& spaces,

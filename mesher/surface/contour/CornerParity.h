@@ -27,8 +27,16 @@ namespace aniso::contour {
 /// Interior angle (radians) below which a quad corner cannot reach scaled Jacobian 0.1.
 inline constexpr double kQuadCornerAngle = 0.100167421161559796;  // asin(0.1)
 
+/// A loop corner of a face: loops[loop].uses[in] arrives at the vertex, uses[out] leaves it.
+struct LoopCorner {
+  int loop, in, out;
+};
+
+/// The loop corners of face f with an interior angle below kQuadCornerAngle, in loop order.
+std::vector<LoopCorner> sharpCornerList(const Model& model, int f);
+
 /// The number of loop corners of face f with an interior angle below kQuadCornerAngle.
-int sharpCorners(const Model& model, int f);
+inline int sharpCorners(const Model& model, int f) { return static_cast<int>(sharpCornerList(model, f).size()); }
 
 /// Raises n[e] by one on the T-join's edges (see above); faces with spaces[f] == nullptr
 /// are not meshed and ignored. Returns how many counts were raised.
