@@ -4,6 +4,8 @@
 #include <array>
 #include <vector>
 
+#include "mesher/quad/PairSplit.h"
+
 namespace aniso::quad {
 namespace {
 
@@ -66,19 +68,10 @@ Best search(QuadMesh2d& mesh, VertexMetrics& metrics, const Hexagon& h, int x1, 
 }  // namespace
 
 bool splitPairWithQuad(QuadMesh2d& mesh, VertexMetrics& metrics, int a, int b, double minQuality) {
-  if (!mesh.isTriangle(a) || !mesh.isTriangle(b)) return false;
-  int k = kNone;
-  for (int x = 0; x < 3; ++x)
-    if (mesh.adj[a][x] == b) k = x;
-  if (k == kNone) return false;
-  const Corners& c = mesh.corners[a];
-  const int u = c[k], v = c[(k + 1) % 3], w = c[(k + 2) % 3];
-  const int i = mesh.edgeIndex(b, v, u);
-  if (i == kNone) return false;
-  // The pair's outline p0..p3 (counter-clockwise) and the element outside each edge.
-  const std::array<int, 4> p{u, mesh.corners[b][(i + 2) % 3], v, w};
-  const std::array<int, 4> outside{mesh.adj[b][(i + 1) % 3], mesh.adj[b][(i + 2) % 3], mesh.adj[a][(k + 1) % 3],
-                                   mesh.adj[a][(k + 2) % 3]};
+  const std::optional<PairOutline> outline = pairOutline(mesh, a, b);
+  if (!outline) return false;
+  const std::array<int, 4>& p = outline->p;
+  const std::array<int, 4>& outside = outline->outside;
   for (int j = 0; j < 4; ++j) {
     const int q = outside[j];
     if (q == kNone || !mesh.isQuad(q)) continue;

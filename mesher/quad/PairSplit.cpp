@@ -5,17 +5,25 @@
 
 namespace aniso::quad {
 
-bool splitPairIntoQuads(QuadMesh2d& mesh, VertexMetrics& metrics, int a, int b, double minQuality) {
-  if (!mesh.isTriangle(a) || !mesh.isTriangle(b)) return false;
+std::optional<PairOutline> pairOutline(const QuadMesh2d& mesh, int a, int b) {
+  if (!mesh.isTriangle(a) || !mesh.isTriangle(b)) return std::nullopt;
   int k = kNone;
   for (int x = 0; x < 3; ++x)
     if (mesh.adj[a][x] == b) k = x;
-  if (k == kNone) return false;
+  if (k == kNone) return std::nullopt;
   const Corners& c = mesh.corners[a];
-  const int u = c[k], v = c[(k + 1) % 3], x = c[(k + 2) % 3];
+  const int u = c[k], v = c[(k + 1) % 3], w = c[(k + 2) % 3];
   const int i = mesh.edgeIndex(b, v, u);
-  if (i == kNone) return false;
-  const std::array<int, 4> p{u, mesh.corners[b][(i + 2) % 3], v, x};
+  if (i == kNone) return std::nullopt;
+  return PairOutline{{u, mesh.corners[b][(i + 2) % 3], v, w},
+                     {mesh.adj[b][(i + 1) % 3], mesh.adj[b][(i + 2) % 3], mesh.adj[a][(k + 1) % 3], mesh.adj[a][(k + 2) % 3]}};
+}
+
+bool splitPairIntoQuads(QuadMesh2d& mesh, VertexMetrics& metrics, int a, int b, double minQuality) {
+  const std::optional<PairOutline> outline = pairOutline(mesh, a, b);
+  if (!outline) return false;
+  const std::array<int, 4>& p = outline->p;
+  const int u = p[0], v = p[2];
   const Vec2 centre = 0.5 * (mesh.uv[u] + mesh.uv[v]);
   // Metric lengths of the rays from the centre to the corners (star-shaped: inside).
   const Mat2 s = 0.5 * (metrics.at(u) + metrics.at(v));
