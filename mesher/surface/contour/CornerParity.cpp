@@ -44,6 +44,9 @@ std::vector<LoopCorner> sharpCornerList(const Model& model, int f) {
       const ModelEdge& ea = model.edges[a.edge];
       const ModelEdge& eb = model.edges[b.edge];
       if (i == j || ea.degenerate || eb.degenerate || !ea.curve || !eb.curve || b.pcurve < 0) continue;
+      // A seam edge back to itself around a pole (a full sphere's loop) turns all the way
+      // round the pole: no corner.
+      if (a.edge == b.edge && i != (j + m - 1) % m) continue;
       // The normal a chord's length into b: at a pole the surface has none.
       const PCurve& pc = eb.pcurves[b.pcurve];
       const double dt = kChordFraction * (pc.t1 - pc.t0);
