@@ -47,6 +47,7 @@ QuadStats convertToQuads(FaceMesh& fm, const ControlSpace2d& cs, const Parametri
   for (int pass = 0; pass < o.improvementPasses; ++pass) {
     const TopologyStats t = improveTopology(mesh, metrics, o.topology);
     st.doublets += t.doublets;
+    st.collapses += t.collapses;
     st.swaps += t.swaps;
     st.smoothed += smoothQuadMesh(mesh, metrics, o.smooth).moved;
     pairUp();
@@ -68,7 +69,7 @@ QuadStats convertToQuads(FaceMesh& fm, const ControlSpace2d& cs, const Parametri
            ", forced " + std::to_string(st.merge.forcedOdd) + ", rejected " + std::to_string(st.merge.rejected) + "), left " + std::to_string(st.merge.triangles) +
            ", paired " + std::to_string(st.paired) + " in " + std::to_string(st.moves) + " moves (failed: " + std::to_string(st.failedCuts) + " cuts, " +
            std::to_string(st.failedPairs) + " pairs), swaps " +
-           std::to_string(st.swaps) + ", doublets " + std::to_string(st.doublets) + " -> " +
+           std::to_string(st.swaps) + ", doublets " + std::to_string(st.doublets) + ", collapses " + std::to_string(st.collapses) + " -> " +
            std::to_string(st.quads) + " quads, " + std::to_string(st.triangles) + " triangles");
   return st;
 }

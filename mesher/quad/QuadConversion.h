@@ -32,7 +32,7 @@ struct QuadOptions {
 
 struct QuadStats {
   MergeStats merge;
-  int paired = 0, moves = 0, failedCuts = 0, failedPairs = 0, doublets = 0, swaps = 0;
+  int paired = 0, moves = 0, failedCuts = 0, failedPairs = 0, doublets = 0, swaps = 0, collapses = 0;
   long long smoothed = 0;
   int quads = 0, triangles = 0;
   QualityStats mu;            ///< μ_M: metric length of every edge of the result (eq. 2.49)

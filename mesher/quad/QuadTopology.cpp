@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "mesher/quad/DiagonalCollapse.h"
 #include "mesher/quad/QuadSmoothing.h"
 
 namespace aniso::quad {
@@ -18,11 +19,12 @@ class Topology {
     for (int sweep = 0; sweep < o_.sweeps; ++sweep) {
       const TopologyStats before = st_;
       removeDoublets();
+      st_.collapses += collapseDiagonals(mesh_, metrics_, o_.minQuality);
       countValences();
       const int n = mesh_.numElements();
       for (int e = 0; e < n; ++e)
         for (int k = 0; k < 4 && mesh_.isQuad(e); ++k) trySwap(e, k);
-      if (st_.doublets == before.doublets && st_.swaps == before.swaps) break;
+      if (st_.doublets == before.doublets && st_.swaps == before.swaps && st_.collapses == before.collapses) break;
     }
     return st_;
   }

@@ -3,6 +3,7 @@
 // first and guarded by the metric shape:
 //   - doublet removal: an inner vertex shared by exactly two quads (a, b, c, v) and
 //     (c, d, a, v) is removed and the two become (a, b, c, d);
+//   - diagonal collapse of a quad between two valence-3 inner vertices (DiagonalCollapse.h);
 //   - diagonal swap: two quads sharing an inner edge form a hexagon H0..H5 split by its
 //     diagonal (H0, H3); the edge is turned to (H1, H4) or (H2, H5) when that lowers
 //     Σ (valence − ideal)² over the six vertices (ideal 4 inside, round(θ/90°) + 1 on the
@@ -21,7 +22,7 @@ struct TopologyOptions {
 };
 
 struct TopologyStats {
-  int doublets = 0, swaps = 0;
+  int doublets = 0, swaps = 0, collapses = 0;
 };
 
 TopologyStats improveTopology(QuadMesh2d& mesh, VertexMetrics& metrics, const TopologyOptions& options = {});

@@ -3,6 +3,7 @@
 // odd-cycle splits, triangle transport, topological transformations, smoothing.
 #include <gtest/gtest.h>
 
+#include "mesher/quad/DiagonalCollapse.h"
 #include "mesher/quad/HexagonSplit.h"
 #include "mesher/quad/MergeConversion.h"
 #include "mesher/quad/OddSplit.h"
@@ -94,7 +95,7 @@ TEST(QuadTopology, SwapsAndDoubletsStayValid) {
   const int quads = count(m, 4), tris = count(m, 3);
   const TopologyStats st = improveTopology(m, metrics);
   quadtest::expectValid(m, snap);
-  EXPECT_EQ(count(m, 4), quads - st.doublets);
+  EXPECT_EQ(count(m, 4), quads - st.doublets - st.collapses);
   EXPECT_EQ(count(m, 3), tris);
 }
 
@@ -197,6 +198,28 @@ TEST(QuadHexagonSplit, NoQuadNextToThePairLeavesTheMeshUnchanged) {
   EXPECT_FALSE(aniso::quad::splitPairWithQuad(m, metrics, 0, 1, 0.1));
   EXPECT_EQ(quadtest::count(m, 3), 2);
   EXPECT_EQ(m.numVertices(), 4);
+}
+
+TEST(QuadDiagonalCollapse, AQuadBetweenTwoValenceThreeVerticesIsRemoved) {
+  // Quad (0, 1, 2, 3) with inner corners 0 and 2 of three quads each, 1 and 3 on the
+  // boundary: 0 and 2 merge at their midpoint, the four other quads remain.
+  aniso::FaceMesh fm;
+  fm.uv = {aniso::Vec2(-0.5, 0), aniso::Vec2(0, -0.4), aniso::Vec2(0.5, 0), aniso::Vec2(0, 0.4), aniso::Vec2(-1.5, 0),
+           aniso::Vec2(-1, 1),   aniso::Vec2(-1, -1),  aniso::Vec2(1.5, 0), aniso::Vec2(1, 1),   aniso::Vec2(1, -1)};
+  fm.node = {-1, 1, -1, 3, 4, 5, 6, 7, 8, 9};
+  fm.quads = {{0, 1, 2, 3}, {0, 3, 5, 4}, {0, 4, 6, 1}, {2, 7, 8, 3}, {2, 1, 9, 7}};
+  aniso::quad::QuadMesh2d m = aniso::quad::QuadMesh2d::fromFaceMesh(fm);
+  ASSERT_EQ(facetest::joined(m.validate()), "");
+  ASSERT_EQ(facetest::joined(aniso::quad::validateGeometry(m)), "");
+  const auto snap = quadtest::snapshot(m);
+  const auto cs = facetest::isotropicSpace(quadtest::Box2Of({facetest::rectangle(-2, -2, 2, 2)}), 1.0);
+  aniso::quad::VertexMetrics metrics(m, *cs);
+  EXPECT_EQ(aniso::quad::collapseDiagonals(m, metrics, 0.3), 1);
+  quadtest::expectValid(m, snap);
+  EXPECT_EQ(quadtest::count(m, 4), 4);
+  EXPECT_EQ(m.uv[0], aniso::Vec2(0, 0));
+  // Nothing left to collapse: the merged vertex has four quads.
+  EXPECT_EQ(aniso::quad::collapseDiagonals(m, metrics, 0.3), 0);
 }
 
 }  // namespace
