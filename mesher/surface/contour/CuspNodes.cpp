@@ -37,11 +37,14 @@ double paramAt(const Side& s, int k, const Vec3& v, double r) {
     found = f(hi) > 0;
   }
   if (!found || !(f(lo) < 0)) return std::nan("");
+  const double from = lo, to = hi;
   for (int i = 0; i < kBisections; ++i) {
     const double mid = 0.5 * (lo + hi);
     (f(mid) < 0 ? lo : hi) = mid;
   }
-  return 0.5 * (lo + hi);
+  const double t = 0.5 * (lo + hi);
+  // Strictly inside the bracket, so the parameters stay strictly increasing.
+  return t > std::min(from, to) && t < std::max(from, to) ? t : std::nan("");
 }
 
 /// After nodes 1..k of s were moved (node k from parameter oldK), maps nodes k+1 .. mid − 1
