@@ -139,13 +139,18 @@ TEST(QuadSmoothing, ImprovesWorstAndStaysValid) {
 
 namespace {
 
-TEST(QuadPairSplit, TwoTrianglesBecomeFiveQuads) {
-  // A non-convex union (reflex at vertex 1): merging would give an invalid quad.
+/// Two triangles with a non-convex union (reflex at vertex 1): merging would give an
+/// invalid quad.
+aniso::quad::QuadMesh2d reflexPair() {
   aniso::FaceMesh fm;
   fm.uv = {aniso::Vec2(0, 0), aniso::Vec2(1, 0.2), aniso::Vec2(2, 0), aniso::Vec2(1, 1)};
   fm.node = {0, 1, 2, 3};
   fm.triangles = {{0, 1, 3}, {1, 2, 3}};
-  aniso::quad::QuadMesh2d m = aniso::quad::QuadMesh2d::fromFaceMesh(fm);
+  return aniso::quad::QuadMesh2d::fromFaceMesh(fm);
+}
+
+TEST(QuadPairSplit, TwoTrianglesBecomeFiveQuads) {
+  aniso::quad::QuadMesh2d m = reflexPair();
   const auto snap = quadtest::snapshot(m);
   const auto cs = facetest::isotropicSpace(quadtest::Box2Of({facetest::rectangle(0, 0, 2, 1)}), 1.0);
   aniso::quad::VertexMetrics metrics(m, *cs);
@@ -188,11 +193,7 @@ TEST(QuadHexagonSplit, PairAtFlatBoundaryVertexAndSharpCornerBecomesQuads) {
 }
 
 TEST(QuadHexagonSplit, NoQuadNextToThePairLeavesTheMeshUnchanged) {
-  aniso::FaceMesh fm;
-  fm.uv = {aniso::Vec2(0, 0), aniso::Vec2(1, 0.2), aniso::Vec2(2, 0), aniso::Vec2(1, 1)};
-  fm.node = {0, 1, 2, 3};
-  fm.triangles = {{0, 1, 3}, {1, 2, 3}};
-  aniso::quad::QuadMesh2d m = aniso::quad::QuadMesh2d::fromFaceMesh(fm);
+  aniso::quad::QuadMesh2d m = reflexPair();
   const auto cs = facetest::isotropicSpace(quadtest::Box2Of({facetest::rectangle(0, 0, 2, 1)}), 1.0);
   aniso::quad::VertexMetrics metrics(m, *cs);
   EXPECT_FALSE(aniso::quad::splitPairWithQuad(m, metrics, 0, 1, 0.1));
