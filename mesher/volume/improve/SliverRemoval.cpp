@@ -20,6 +20,9 @@ namespace {
 using del3d::TetId;
 using del3d::VertexId;
 
+/// Relocation steps (VertexMover::relocate, each a local search) of a new Steiner point.
+constexpr int kSteinerRelocations = 4;
+
 class SliverRemover {
  public:
   SliverRemover(SolidTetMesh& s, const ControlSpace3d& cs, VertexMetrics& vm, double angle, double euclidean,
@@ -157,7 +160,8 @@ bool SliverRemover::steinerPoint(TetId t) {
   const VertexId v = insertSteinerPointAtSliver(s_, vm_, t, created_);
   if (!v.valid()) return false;
   ++stats.steinerPoints;
-  if (mover_.relocate(v)) ++stats.moves;
+  // the point was chosen among a few candidates: a few relocation steps refine it
+  for (int k = 0; k < kSteinerRelocations && mover_.relocate(v); ++k) ++stats.moves;
   vertexStar(s_.mesh, v, star_);
   for (const TetId u : std::vector<TetId>(star_))
     if (isSliver(u)) flipAway(u);

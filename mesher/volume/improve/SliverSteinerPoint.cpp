@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cmath>
 
 #include "mesher/delaunay3d/EdgeRing.h"
 #include "mesher/delaunay3d/LocalRetriangulation.h"
@@ -23,6 +24,7 @@ struct Region {
 };
 
 constexpr std::uint32_t kNewVertex = 0xFFFFFFFFu;
+constexpr int kEdge[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 
 /// Builds the region of the given tets; false when its boundary has more faces than
 /// kMaxLocalTets or a vertex of it would vanish.
@@ -83,6 +85,17 @@ double coneScore(const SolidTetMesh& s, const VertexMetrics& vm, const Region& r
   return worst;
 }
 
+/// Unit normal of face f of t towards vertex f (into the solid when f is a hull face);
+/// zero for a degenerate face.
+Vec3 hullInwardNormal(const del3d::TetMesh& m, TetId t, int f) {
+  const Vec3 a = m.point(m.vertex(t, del3d::kFaceVertex[f][0])), b = m.point(m.vertex(t, del3d::kFaceVertex[f][1])),
+             c = m.point(m.vertex(t, del3d::kFaceVertex[f][2]));
+  Vec3 n = (b - a).cross(c - a);
+  if (!(n.norm() > 0)) return Vec3::Zero();
+  if (n.dot(m.point(m.vertex(t, f)) - a) < 0) n = -n;
+  return n.normalized();
+}
+
 void candidatePoints(const SolidTetMesh& s, TetId t, const Region& r, std::vector<Vec3>& out) {
   const del3d::TetMesh& m = s.mesh;
   out.clear();
@@ -94,15 +107,41 @@ void candidatePoints(const SolidTetMesh& s, TetId t, const Region& r, std::vecto
   out.push_back(ct);
   out.push_back(cr);
   out.push_back(0.5 * (ct + cr));
+  // A sliver at a short edge (a short boundary edge among long ones: every tet with that
+  // edge and a far vertex is flat): points off the edge's midpoint towards the region, at
+  // distances around the geometric mean of the shortest and the longest edge — near enough
+  // for the edge to subtend a large angle, far enough for the new short edges.
+  int shortest = 0;
+  double lo = 1e300, hi = 0;
+  for (int e = 0; e < 6; ++e) {
+    const double len = (m.point(m.vertex(t, kEdge[e][0])) - m.point(m.vertex(t, kEdge[e][1]))).norm();
+    if (len < lo) lo = len, shortest = e;
+    hi = std::max(hi, len);
+  }
+  if (hi > kShortEdgeRatio * lo) {
+    const Vec3 mid = 0.5 * (m.point(m.vertex(t, kEdge[shortest][0])) + m.point(m.vertex(t, kEdge[shortest][1])));
+    std::vector<Vec3> towards = {cr - mid, ct - mid};
+    Vec3 inward = Vec3::Zero();
+    for (int f = 0; f < 4; ++f)
+      if (!m.neighbour(t, f).valid()) {
+        const Vec3 n = hullInwardNormal(m, t, f);
+        towards.push_back(n);
+        inward += n;
+      }
+    if (towards.size() > 3) towards.push_back(inward);
+    for (const Vec3& d : towards) {
+      if (!(d.norm() > 0)) continue;
+      for (const double k : kShortEdgeDistances) out.push_back(mid + k * std::sqrt(lo * hi) * d.normalized());
+    }
+  }
   for (int f = 0; f < 4; ++f) {
     if (m.neighbour(t, f).valid()) continue;  // a hull face: the solid lies on vertex f's side
     const Vec3 a = m.point(m.vertex(t, del3d::kFaceVertex[f][0])), b = m.point(m.vertex(t, del3d::kFaceVertex[f][1])),
                c = m.point(m.vertex(t, del3d::kFaceVertex[f][2]));
-    Vec3 n = (b - a).cross(c - a);
-    if (!(n.norm() > 0)) continue;
-    if (n.dot(m.point(m.vertex(t, f)) - a) < 0) n = -n;
+    const Vec3 n = hullInwardNormal(m, t, f);
+    if (n == Vec3::Zero()) continue;
     const double len = ((b - a).norm() + (c - b).norm() + (a - c).norm()) / 3;
-    for (const double h : kApexHeights) out.push_back((a + b + c) / 3 + h * len * n.normalized());
+    for (const double h : kApexHeights) out.push_back((a + b + c) / 3 + h * len * n);
   }
 }
 
@@ -145,7 +184,6 @@ VertexId insertSteinerPointAtSliver(SolidTetMesh& s, VertexMetrics& vm, TetId t,
     }
   // (b) the ring of an interior edge of t (the edge split at p): the midpoint, and points
   // between it and the centroid of the ring
-  static constexpr int kEdge[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
   del3d::EdgeRing ring;
   for (const auto& e : kEdge) {
     del3d::edgeRing(s.mesh, t, e[0], e[1], ring);

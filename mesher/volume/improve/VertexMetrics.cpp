@@ -20,7 +20,39 @@ double meanRatioCubed(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3
   return std::copysign(1728.0 * 9 * volume * volume / (sum * sum * sum), volume);
 }
 
+/// Signed (min_e sin θ_e / sin θ_regular)³ over the six dihedral angles θ_e (sin θ_e =
+/// 3 V |e| / (2 A_1 A_2), A_1, A_2 the areas of the two faces at e): small for a sliver,
+/// a cap or a wedge (an angle near 0° or 180°), not for a needle with a short edge.
+double dihedralSineCubed(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4) {
+  const Vec3 p[4] = {p1, p2, p3, p4};
+  double area[4];  // twice the area of the face opposite vertex k
+  for (int k = 0; k < 4; ++k) {
+    const Vec3& a = p[(k + 1) % 4];
+    area[k] = (p[(k + 2) % 4] - a).cross(p[(k + 3) % 4] - a).norm();
+  }
+  const double volume6 = (p2 - p1).dot((p3 - p1).cross(p4 - p1));
+  double smallest = 1e300;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) {
+      int k = 0;
+      while (k == i || k == j) ++k;
+      int l = k + 1;
+      while (l == i || l == j) ++l;
+      const double denominator = area[k] * area[l];
+      if (!(denominator > 0)) return 0.0;
+      smallest = std::min(smallest, (p[j] - p[i]).norm() / denominator);
+    }
+  // sin θ_e = 3 V |e| / (2 A_k A_l) = (V6 / 2) |e| / (area_k area_l / 2) = V6 |e| / (area_k area_l)
+  const double sine = std::min(1.0, std::abs(volume6) * smallest / kRegularDihedralSine);
+  return std::copysign(sine * sine * sine, volume6);
+}
+
 }  // namespace
+
+double VertexMetrics::guarded(double metric, const Vec3* p) const {
+  if (!guardEuclidean_) return metric;
+  return std::min({metric, meanRatioCubed(p[0], p[1], p[2], p[3]), dihedralSineCubed(p[0], p[1], p[2], p[3])});
+}
 
 void VertexMetrics::setMetric(std::size_t v, const Mat3& m) {
   m_[v] = m;
@@ -42,28 +74,22 @@ void VertexMetrics::refresh(del3d::VertexId v) { setMetric(v.index, cs_.getMetri
 double VertexMetrics::score(const std::uint32_t* v) const {
   const Vec3 p[4] = {mesh_.point(del3d::VertexId(v[0])), mesh_.point(del3d::VertexId(v[1])),
                      mesh_.point(del3d::VertexId(v[2])), mesh_.point(del3d::VertexId(v[3]))};
-  const double e = meanRatioCubed(p[0], p[1], p[2], p[3]);
-  if (isotropic(v)) return e;
+  if (isotropic(v)) return guarded(meanRatioCubed(p[0], p[1], p[2], p[3]), p);
   const Mat3 m = tetMetric(v);
-  const double metric = meanRatioCubed(m * p[0], m * p[1], m * p[2], m * p[3]);
-  return guardEuclidean_ ? std::min(metric, e) : metric;
+  return guarded(meanRatioCubed(m * p[0], m * p[1], m * p[2], m * p[3]), p);
 }
 
 double VertexMetrics::scorePoints(const Vec3* p, const Mat3& m, bool isotropicTensor) const {
-  const double e = meanRatioCubed(p[0], p[1], p[2], p[3]);
-  if (isotropicTensor) return e;
-  const double metric = meanRatioCubed(m * p[0], m * p[1], m * p[2], m * p[3]);
-  return guardEuclidean_ ? std::min(metric, e) : metric;
+  if (isotropicTensor) return guarded(meanRatioCubed(p[0], p[1], p[2], p[3]), p);
+  return guarded(meanRatioCubed(m * p[0], m * p[1], m * p[2], m * p[3]), p);
 }
 
 double VertexMetrics::scoreWith(const std::uint32_t* v, std::uint32_t moved, const Vec3& p) const {
   Vec3 q[4];
   for (int i = 0; i < 4; ++i) q[i] = v[i] == moved ? p : mesh_.point(del3d::VertexId(v[i]));
-  const double e = meanRatioCubed(q[0], q[1], q[2], q[3]);
-  if (isotropic(v)) return e;
+  if (isotropic(v)) return guarded(meanRatioCubed(q[0], q[1], q[2], q[3]), q);
   const Mat3 m = tetMetric(v);
-  const double metric = meanRatioCubed(m * q[0], m * q[1], m * q[2], m * q[3]);
-  return guardEuclidean_ ? std::min(metric, e) : metric;
+  return guarded(meanRatioCubed(m * q[0], m * q[1], m * q[2], m * q[3]), q);
 }
 
 bool VertexMetrics::isSliver(del3d::TetId t, double metricAngle, double euclideanAngle) const {
