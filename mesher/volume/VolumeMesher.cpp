@@ -23,6 +23,7 @@
 #include "mesher/volume/SplitSurfaceEdges.h"
 #include "mesher/volume/UnfoldSurface.h"
 #include "mesher/volume/VolumeControlSpace.h"
+#include "mesher/volume/SurfaceSlivers.h"
 #include "mesher/volume/VolumeImprovement.h"
 #include "mesher/volume/VolumeRefinement.h"
 
@@ -230,6 +231,18 @@ std::vector<int> mendFolds(SurfaceMesh& surface, VolumeMeshResult& r) {
   return u.facesChanged;
 }
 
+/// Caps and sub-tolerance edges force flat tets (SurfaceSlivers.h): mended first, within
+/// kSurfaceSliverTolerance times h_min (the smallest element size asked for: shorter edges
+/// and flatter caps come from the CAD, not from the sizing).
+void mendSlivers(const Model& model, const MeshOptions& options, SurfaceMesh& surface, VolumeMeshResult& r) {
+  const SurfaceSliverStats s = mendSurfaceSlivers(surface, kSurfaceSliverTolerance * options.sizing.hminFor(model.diagonal()));
+  r.surfaceNodesMerged += s.nodesMerged;
+  r.surfaceCapsFlipped += s.capsFlipped;
+  if (s.nodesMerged + s.capsFlipped > 0)
+    logDebug("volume: surface slivers: " + std::to_string(s.nodesMerged) + " nodes merged, " +
+             std::to_string(s.capsFlipped) + " caps flipped on " + std::to_string(s.facesChanged.size()) + " faces");
+}
+
 }  // namespace
 
 bool VolumeMeshResult::ok() const {
@@ -246,6 +259,7 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
   VolumeMesherInput in = input;
   in.surface = &surface;
   VolumeMeshResult r;
+  mendSlivers(model, in.options, surface, r);
   mendFolds(surface, r);
   std::map<std::string, double> timeSum;
   std::vector<std::string> timeOrder;

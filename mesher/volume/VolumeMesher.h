@@ -1,6 +1,7 @@
 #pragma once
 // VolumeMesher — the whole volume meshing process of a model (thesis 3.5.2, ch. 5), after
-// the surface mesh, whose folds are mended first (UnfoldSurface.h: a folded surface
+// the surface mesh, whose caps and sub-tolerance edges (SurfaceSlivers.h: they force flat
+// tetrahedra) and folds are mended first (UnfoldSurface.h: a folded surface
 // overlaps itself, so no tetrahedralization contains it): for every solid, independently,
 //   1 its outward boundary mesh, validated closed and oriented (BoundaryMesh.h);
 //   2 the Delaunay triangulation of its boundary nodes (BoundaryTriangulation.h, 5.3);
@@ -63,6 +64,9 @@ struct VolumeMesherInput {
   bool stopWhenThin = false;
 };
 
+/// Geometric tolerance of the surface sliver mending (SurfaceSlivers.h), times h_min.
+inline constexpr double kSurfaceSliverTolerance = 0.1;
+
 struct VolumeProblem {
   std::string entity;  ///< "solid 3", "face 12"
   std::string what;
@@ -87,6 +91,8 @@ struct VolumeMeshResult {
   int boundarySplits = 0;  ///< surface edges split by the last resort of recovery (mesh.surface has them)
   int splitRounds = 0;     ///< rounds of splitting and meshing again
   int foldsRepaired = 0;   ///< folded surface edges mended before meshing (UnfoldSurface.h)
+  int surfaceNodesMerged = 0;  ///< surface nodes merged before meshing (SurfaceSlivers.h)
+  int surfaceCapsFlipped = 0;  ///< surface caps flipped away before meshing (SurfaceSlivers.h)
   /// Boundary triangles thinner than their size across the solid (ThinBoundary.h), solid
   /// by solid; with stopWhenThin the solids having some were not meshed further.
   std::vector<ThinSpot> thin;

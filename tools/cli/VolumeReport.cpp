@@ -47,6 +47,8 @@ void fillVolumeReport(const Model& model, const VolumeMeshResult& vr, io::Report
   report.extra["recovery"]["steiner_points_boundary"] = vr.boundarySplits;
   report.extra["recovery"]["split_rounds"] = vr.splitRounds;
   report.extra["recovery"]["surface_folds_repaired"] = vr.foldsRepaired;
+  report.extra["recovery"]["surface_nodes_merged"] = vr.surfaceNodesMerged;
+  report.extra["recovery"]["surface_caps_flipped"] = vr.surfaceCapsFlipped;
   report.quality["volume"] = qualityJson(vr.quality);
   report.extra["volume"] = vr.quality.volume;
   nlohmann::ordered_json solids = nlohmann::ordered_json::array();

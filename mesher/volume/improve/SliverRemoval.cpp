@@ -237,6 +237,18 @@ SliverStats removeSlivers(SolidTetMesh& s, const ControlSpace3d& cs, VertexMetri
     if (left.size() >= slivers.size()) break;
     slivers = std::move(left);
   }
+  // The referee's slivers last: the operators on the metric slivers above make new tets,
+  // some flat in space, after their slots were visited; rounds over the Euclidean slivers
+  // alone (a few) while they go down.
+  SliverRemover e(s, cs, vm, 0.0, euclideanDeg, insertion);
+  slivers = liveSlivers(s, vm, 0.0, euclideanDeg);
+  for (int i = 0; i < rounds && !slivers.empty(); ++i) {
+    e.round(slivers);
+    std::vector<TetId> left = liveSlivers(s, vm, 0.0, euclideanDeg);
+    if (left.size() >= slivers.size()) break;
+    slivers = std::move(left);
+  }
+  r.stats.merge(e.stats);
   vm.setGuardEuclidean(false);
   r.stats.after = countSlivers(s, vm, angleDeg, euclideanDeg);
   return r.stats;

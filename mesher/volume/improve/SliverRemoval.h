@@ -25,7 +25,8 @@
 //     star.
 // Every round visits every sliver of the mesh (in slot order; the operators make new tets,
 // some of them slivers); rounds stop when one does not lower the number of slivers or
-// after `rounds`.
+// after `rounds`. Then the same rounds over the Euclidean slivers alone (the referee's:
+// the operators on the others leave a few behind after their slots were visited).
 #include <cstddef>
 #include <vector>
 
@@ -43,6 +44,11 @@ struct SliverStats {
   std::size_t before = 0, after = 0;
   std::size_t flips = 0, moves = 0, insertions = 0;
   std::size_t edgeRemovals = 0, steinerPoints = 0;
+  /// Adds o's operation counts (not before / after).
+  void merge(const SliverStats& o) {
+    flips += o.flips, moves += o.moves, insertions += o.insertions;
+    edgeRemovals += o.edgeRemovals, steinerPoints += o.steinerPoints;
+  }
 };
 
 /// The live slivers of s in slot order (VertexMetrics::isSliver).

@@ -1,0 +1,252 @@
+#include "mesher/volume/SurfaceSlivers.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <unordered_map>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "mesher/volume/FoldRegion.h"
+
+namespace aniso {
+namespace {
+
+using Tri = std::array<int, 3>;
+
+const double kCapCosine = std::cos(kCapAngleDeg * std::numbers::pi / 180);
+const double kTurnCosine = std::cos(kCapFlipTurnDeg * std::numbers::pi / 180);
+
+std::uint64_t edgeKey(int a, int b) {
+  const auto [lo, hi] = std::minmax(a, b);
+  return (static_cast<std::uint64_t>(lo) << 32) | static_cast<std::uint32_t>(hi);
+}
+
+/// 0 for a CAD vertex node, 1 for an edge node, 2 for a face node: the lower is kept.
+int rank(const NodeOn& on) {
+  return on.kind == NodeOn::Kind::Vertex ? 0 : on.kind == NodeOn::Kind::Edge ? 1 : 2;
+}
+
+class SliverPass {
+ public:
+  SliverPass(SurfaceMesh& m, double tolerance, SurfaceSliverStats& stats)
+      : m_(m), tol_(tolerance), stats_(stats), nodeTris_(m.nodes.size()), dirty_(m.nodes.size(), 0) {
+    for (int t = 0; t < static_cast<int>(m.triangles.size()); ++t)
+      for (int k = 0; k < 3; ++k) {
+        edgeTris_[edgeKey(m.triangles[t][k], m.triangles[t][(k + 1) % 3])].push_back(t);
+        nodeTris_[m.triangles[t][k]].push_back(t);
+      }
+    removed_.assign(m.triangles.size(), 0);
+  }
+
+  /// One pass over the triangles; true when something changed (the mesh is compacted).
+  bool run() {
+    bool changed = false;
+    for (int t = 0; t < static_cast<int>(m_.triangles.size()); ++t) {
+      if (removed_[t]) continue;
+      for (int k = 0; k < 3 && !removed_[t]; ++k) {
+        const int a = m_.triangles[t][k], c = m_.triangles[t][(k + 1) % 3];
+        if ((m_.nodes[a] - m_.nodes[c]).norm() <= tol_ && merge(a, c)) changed = true;
+      }
+      if (removed_[t]) continue;
+      const int k = capVertex(m_.triangles[t]);
+      if (k >= 0 && flip(t, k)) changed = true;
+    }
+    if (changed) compact();
+    return changed;
+  }
+
+ private:
+  Vec3 normal(const Tri& t) const {
+    return (m_.nodes[t[1]] - m_.nodes[t[0]]).cross(m_.nodes[t[2]] - m_.nodes[t[0]]);
+  }
+
+  /// The corner of t with an angle above kCapAngleDeg, or -1.
+  int capVertex(const Tri& t) const {
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 u = m_.nodes[t[(k + 1) % 3]] - m_.nodes[t[k]], v = m_.nodes[t[(k + 2) % 3]] - m_.nodes[t[k]];
+      const double nu = u.norm(), nv = v.norm();
+      if (nu > 0 && nv > 0 && u.dot(v) < kCapCosine * nu * nv) return k;
+    }
+    return -1;
+  }
+
+  double minAngle(const Tri& t) const {
+    double best = 1e300;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 u = m_.nodes[t[(k + 1) % 3]] - m_.nodes[t[k]], v = m_.nodes[t[(k + 2) % 3]] - m_.nodes[t[k]];
+      best = std::min(best, std::atan2(u.cross(v).norm(), u.dot(v)));
+    }
+    return best;
+  }
+
+  const std::vector<int>* uses(int a, int b) const {
+    const auto it = edgeTris_.find(edgeKey(a, b));
+    return it == edgeTris_.end() ? nullptr : &it->second;
+  }
+
+  /// The other triangle on the manifold edge (a, b), or -1.
+  int across(int t, int a, int b) const {
+    const std::vector<int>* u = uses(a, b);
+    if (!u || u->size() != 2) return -1;
+    return (*u)[0] == t ? (*u)[1] : (*u)[0];
+  }
+
+  bool clean(const Tri& t) const { return !dirty_[t[0]] && !dirty_[t[1]] && !dirty_[t[2]]; }
+
+  void touch(int t) {
+    for (const int v : m_.triangles[t]) dirty_[v] = 1;
+    stats_.facesChanged.push_back(m_.triangleFace[t]);
+  }
+
+  bool merge(int a, int c);
+  bool flip(int t, int k);
+  void compact();
+
+  SurfaceMesh& m_;
+  double tol_;
+  SurfaceSliverStats& stats_;
+  std::unordered_map<std::uint64_t, std::vector<int>> edgeTris_;
+  std::vector<std::vector<int>> nodeTris_;
+  std::vector<std::uint8_t> dirty_;  ///< per node: in a triangle changed in this pass
+  std::vector<std::uint8_t> removed_;
+};
+
+// Collapse of (a, c) into the more constrained node (header, operation 1).
+bool SliverPass::merge(int a, int c) {
+  if (rank(m_.nodeOn[c]) < rank(m_.nodeOn[a]) || (rank(m_.nodeOn[c]) == rank(m_.nodeOn[a]) && c < a)) std::swap(a, c);
+  if (m_.nodeOn[c].kind == NodeOn::Kind::Vertex) return false;
+  const std::vector<int>* ac = uses(a, c);
+  if (!ac || ac->size() != 2) return false;
+  for (const int v : {a, c})
+    for (const int t : nodeTris_[v])
+      if (!clean(m_.triangles[t])) return false;
+  // link condition: a and c share exactly the two opposite nodes of (a, c)
+  std::vector<int> opposite, linkA, linkC;
+  for (const int t : *ac)
+    for (const int v : m_.triangles[t])
+      if (v != a && v != c) opposite.push_back(v);
+  for (const auto& [v, link] : {std::pair<int, std::vector<int>*>{a, &linkA}, {c, &linkC}})
+    for (const int t : nodeTris_[v])
+      for (const int w : m_.triangles[t])
+        if (w != a && w != c) link->push_back(w);
+  for (auto* l : {&linkA, &linkC, &opposite}) {
+    std::sort(l->begin(), l->end());
+    l->erase(std::unique(l->begin(), l->end()), l->end());
+  }
+  std::vector<int> shared;
+  std::set_intersection(linkA.begin(), linkA.end(), linkC.begin(), linkC.end(), std::back_inserter(shared));
+  if (shared != opposite || opposite.size() != 2) return false;
+  // every edge at c manifold; moved triangles keep a non-zero area and their side
+  for (const int t : nodeTris_[c]) {
+    const Tri& tri = m_.triangles[t];
+    for (int k = 0; k < 3; ++k)
+      if (tri[k] == c || tri[(k + 1) % 3] == c) {
+        const std::vector<int>* u = uses(tri[k], tri[(k + 1) % 3]);
+        if (!u || u->size() != 2) return false;
+      }
+    if (std::find(ac->begin(), ac->end(), t) != ac->end()) continue;
+    Tri moved = tri;
+    std::replace(moved.begin(), moved.end(), c, a);
+    const Vec3 before = normal(tri), after = normal(moved);
+    if (!(after.norm() > 0) || !(after.dot(before) > 0)) return false;
+  }
+  for (const int t : nodeTris_[a]) touch(t);
+  for (const int t : nodeTris_[c]) {
+    touch(t);
+    if (std::find(ac->begin(), ac->end(), t) != ac->end())
+      removed_[t] = 1;
+    else
+      std::replace(m_.triangles[t].begin(), m_.triangles[t].end(), c, a);
+  }
+  ++stats_.nodesMerged;
+  return true;
+}
+
+// Flip of the edge opposite the cap's corner k (header, operation 2).
+bool SliverPass::flip(int t, int k) {
+  const Tri T = m_.triangles[t];
+  const int c = T[k], a = T[(k + 1) % 3], b = T[(k + 2) % 3];
+  const int u = across(t, a, b);
+  if (u < 0 || !clean(T) || !clean(m_.triangles[u])) return false;
+  const Tri U = m_.triangles[u];
+  int d = -1;
+  for (const int v : U)
+    if (v != a && v != b) d = v;
+  if (d < 0 || d == c || uses(c, d)) return false;
+  // c within the tolerance of the plane of (a, b, d)
+  const Vec3 nu = normal(U);
+  if (!(nu.norm() > 0) || std::abs(nu.dot(m_.nodes[c] - m_.nodes[a])) > tol_ * nu.norm()) return false;
+  // T = (c, a, b), U = (b, a, d): the quad c, a, d, b; its other diagonal (c, d)
+  const Tri n1 = {c, a, d}, n2 = {c, d, b};
+  for (const Tri& n : {n1, n2}) {
+    const Vec3 nn = normal(n);
+    if (!(nn.norm() > 0) || nn.dot(nu) < kTurnCosine * nn.norm() * nu.norm()) return false;
+  }
+  // no fold against the outer neighbours (a cap's normal says nothing)
+  struct Outer {
+    int x, y, from;
+    const Tri* now;
+  };
+  const Outer outer[4] = {{c, a, t, &n1}, {a, d, u, &n1}, {d, b, u, &n2}, {b, c, t, &n2}};
+  for (const Outer& e : outer) {
+    const int o = across(e.from, e.x, e.y);
+    if (o < 0 || capVertex(m_.triangles[o]) >= 0) continue;
+    const Vec3 nn = normal(*e.now), no = normal(m_.triangles[o]);
+    if (nn.dot(no) < kFoldCosine * nn.norm() * no.norm()) return false;
+  }
+  if (!(std::min(minAngle(n1), minAngle(n2)) > std::min(minAngle(T), minAngle(U)))) return false;
+  touch(t);
+  touch(u);
+  m_.triangles[t] = n1;
+  m_.triangles[u] = n2;
+  m_.triangleFace[t] = m_.triangleFace[u];
+  touch(t);
+  ++stats_.capsFlipped;
+  return true;
+}
+
+void SliverPass::compact() {
+  std::size_t n = 0;
+  for (std::size_t t = 0; t < m_.triangles.size(); ++t)
+    if (!removed_[t]) {
+      m_.triangles[n] = m_.triangles[t];
+      m_.triangleFace[n] = m_.triangleFace[t];
+      ++n;
+    }
+  m_.triangles.resize(n);
+  m_.triangleFace.resize(n);
+}
+
+}  // namespace
+
+SurfaceSliverStats mendSurfaceSlivers(SurfaceMesh& mesh, double tolerance) {
+  SurfaceSliverStats stats;
+  if (!mesh.quads.empty() || !mesh.triangleMid.empty() || !(tolerance > 0)) return stats;
+  for (int pass = 0; pass < kMaxSliverPasses; ++pass) {
+    SliverPass p(mesh, tolerance, stats);
+    if (!p.run()) break;
+  }
+  std::sort(stats.facesChanged.begin(), stats.facesChanged.end());
+  stats.facesChanged.erase(std::unique(stats.facesChanged.begin(), stats.facesChanged.end()), stats.facesChanged.end());
+  return stats;
+}
+
+int countSurfaceCaps(const SurfaceMesh& mesh) {
+  int n = 0;
+  for (const Tri& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 u = mesh.nodes[t[(k + 1) % 3]] - mesh.nodes[t[k]], v = mesh.nodes[t[(k + 2) % 3]] - mesh.nodes[t[k]];
+      const double nu = u.norm(), nv = v.norm();
+      if (nu > 0 && nv > 0 && u.dot(v) < kCapCosine * nu * nv) {
+        ++n;
+        break;
+      }
+    }
+  return n;
+}
+
+}  // namespace aniso

@@ -1,0 +1,60 @@
+#pragma once
+// mendSurfaceSlivers — removes the surface triangles that force flat tetrahedra, before
+// the volume is meshed (issue 5: smallest dihedral angle >= 2 degrees "where the boundary
+// allows it").
+//
+// Every tet on a cap (a boundary triangle with an angle near 180 degrees) has a dihedral
+// angle near 180 degrees, and every tet holding a boundary edge much shorter than its
+// other edges has a dihedral angle near 0 (the short edge subtends a small angle from the
+// opposite edge): no volume operator removes them. Both come from the CAD, where the
+// surface mesher must follow it: at the tip of a fillet two CAD edges run together
+// (U_Joint_2: two edges 1e-6 apart over 0.1 mm), and the strip of the face between them is
+// meshed with caps (a node of one edge between two nodes of the other) and with node pairs
+// a few micrometres apart.
+//
+// Two operations, each checked before the change, within `tolerance` (a geometric
+// tolerance: the surface moves by at most that much):
+//  1 merge: an edge (a, c) shorter than `tolerance` is collapsed — c's triangles take a,
+//    the two triangles on (a, c) vanish. The node kept is the more constrained one (CAD
+//    vertex, then edge, then face node; then the lower index); a CAD vertex node is never
+//    removed. Legal when every edge at c is used by exactly two triangles (no assembly
+//    interface or open rim there), the link condition holds (a and c share exactly the
+//    two opposite nodes of (a, c)), and every moved triangle keeps a non-zero area and the
+//    side its normal points to.
+//  2 cap flip: a triangle (a, b, c) with an angle above kCapAngleDeg at c, whose edge
+//    (a, b) is used by exactly one other triangle (a, b, d), is replaced with (a, b, d) by
+//    (a, c, d) and (c, b, d), both on d's face — the edge flip of the quad; across a CAD
+//    edge this moves the cap's node c onto the edge's discretisation. Legal when c lies
+//    within `tolerance` of the plane of (a, b, d) (the surface does not move by more),
+//    the edge (c, d) is not in the mesh, both new triangles turn the normal of (a, b, d)
+//    by less than kCapFlipTurnDeg, and neither folds against its outer neighbour (unless
+//    that neighbour is a cap itself).
+// The removed area is that of caps and of triangles on sub-tolerance edges: the closed,
+// oriented surface stays closed and oriented and conforming; nodes left in no triangle
+// stay in the node array. Passes over the triangles in index order until nothing changes
+// (at most kMaxSliverPasses); deterministic. The mesh must be linear triangles (no quads,
+// no mid nodes).
+#include <vector>
+
+#include "mesher/surface/SurfaceMesh.h"
+
+namespace aniso {
+
+/// Angle (degrees) above which a triangle is a cap.
+inline constexpr double kCapAngleDeg = 150.0;
+/// A cap flip may turn the normal of the triangle it splits by at most this (degrees).
+inline constexpr double kCapFlipTurnDeg = 30.0;
+inline constexpr int kMaxSliverPasses = 32;
+
+struct SurfaceSliverStats {
+  int nodesMerged = 0;
+  int capsFlipped = 0;
+  std::vector<int> facesChanged;  ///< 0-based model faces whose triangles changed, ascending
+};
+
+SurfaceSliverStats mendSurfaceSlivers(SurfaceMesh& mesh, double tolerance);
+
+/// Number of caps (an angle above kCapAngleDeg) among the mesh's triangles.
+int countSurfaceCaps(const SurfaceMesh& mesh);
+
+}  // namespace aniso
