@@ -5,11 +5,13 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
 #include <Eigen/Geometry>
 
+#include "mesher/highorder/MidEdgeGeometry.h"
 #include "mesher/volume/FoldRegion.h"
 
 namespace aniso {
@@ -32,8 +34,8 @@ int rank(const NodeOn& on) {
 
 class SliverPass {
  public:
-  SliverPass(SurfaceMesh& m, double tolerance, SurfaceSliverStats& stats)
-      : m_(m), tol_(tolerance), stats_(stats), nodeTris_(m.nodes.size()), dirty_(m.nodes.size(), 0) {
+  SliverPass(SurfaceMesh& m, double tolerance, const MidEdgeGeometry* geo, SurfaceSliverStats& stats)
+      : m_(m), tol_(tolerance), geo_(geo), stats_(stats), nodeTris_(m.nodes.size()), dirty_(m.nodes.size(), 0) {
     for (int t = 0; t < static_cast<int>(m.triangles.size()); ++t)
       for (int k = 0; k < 3; ++k) {
         edgeTris_[edgeKey(m.triangles[t][k], m.triangles[t][(k + 1) % 3])].push_back(t);
@@ -95,6 +97,12 @@ class SliverPass {
     return (*u)[0] == t ? (*u)[1] : (*u)[0];
   }
 
+  /// Distance of the mesh edge (a, b) of face f from the CAD (its midpoint from the
+  /// mid node MidEdgeGeometry places).
+  double deviation(int a, int b, int f) const {
+    return (geo_->place(a, b, f).p - 0.5 * (m_.nodes[a] + m_.nodes[b])).norm();
+  }
+
   bool clean(const Tri& t) const { return !dirty_[t[0]] && !dirty_[t[1]] && !dirty_[t[2]]; }
 
   void touch(int t) {
@@ -108,6 +116,7 @@ class SliverPass {
 
   SurfaceMesh& m_;
   double tol_;
+  const MidEdgeGeometry* geo_;
   SurfaceSliverStats& stats_;
   std::unordered_map<std::uint64_t, std::vector<int>> edgeTris_;
   std::vector<std::vector<int>> nodeTris_;
@@ -177,9 +186,14 @@ bool SliverPass::flip(int t, int k) {
   for (const int v : U)
     if (v != a && v != b) d = v;
   if (d < 0 || d == c || uses(c, d)) return false;
-  // c within the tolerance of the plane of (a, b, d)
+  // c within the tolerance of the plane of (a, b, d), or (inside one face) the new edge
+  // nearer the CAD surface than the old one
   const Vec3 nu = normal(U);
-  if (!(nu.norm() > 0) || std::abs(nu.dot(m_.nodes[c] - m_.nodes[a])) > tol_ * nu.norm()) return false;
+  if (!(nu.norm() > 0)) return false;
+  if (std::abs(nu.dot(m_.nodes[c] - m_.nodes[a])) > tol_ * nu.norm()) {
+    const int f = m_.triangleFace[u];
+    if (!geo_ || m_.triangleFace[t] != f || !(deviation(c, d, f) < deviation(a, b, f))) return false;
+  }
   // T = (c, a, b), U = (b, a, d): the quad c, a, d, b; its other diagonal (c, d)
   const Tri n1 = {c, a, d}, n2 = {c, d, b};
   for (const Tri& n : {n1, n2}) {
@@ -223,11 +237,15 @@ void SliverPass::compact() {
 
 }  // namespace
 
-SurfaceSliverStats mendSurfaceSlivers(SurfaceMesh& mesh, double tolerance) {
+SurfaceSliverStats mendSurfaceSlivers(SurfaceMesh& mesh, double tolerance, const Model* model) {
   SurfaceSliverStats stats;
   if (!mesh.quads.empty() || !mesh.triangleMid.empty() || !(tolerance > 0)) return stats;
+  // the model edges' discretisations it indexes keep their nodes (merged nodes stay in
+  // the node array)
+  std::optional<MidEdgeGeometry> geo;
+  if (model) geo.emplace(*model, mesh);
   for (int pass = 0; pass < kMaxSliverPasses; ++pass) {
-    SliverPass p(mesh, tolerance, stats);
+    SliverPass p(mesh, tolerance, geo ? &*geo : nullptr, stats);
     if (!p.run()) break;
   }
   std::sort(stats.facesChanged.begin(), stats.facesChanged.end());

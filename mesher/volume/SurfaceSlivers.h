@@ -25,7 +25,11 @@
 //    (a, b) is used by exactly one other triangle (a, b, d), is replaced with (a, b, d) by
 //    (a, c, d) and (c, b, d), both on d's face — the edge flip of the quad; across a CAD
 //    edge this moves the cap's node c onto the edge's discretisation. Legal when c lies
-//    within `tolerance` of the plane of (a, b, d) (the surface does not move by more),
+//    within `tolerance` of the plane of (a, b, d) (the surface does not move by more) or,
+//    with a model and both triangles on one face, when the new edge (c, d) lies nearer the
+//    CAD surface than (a, b) (their midpoints against MidEdgeGeometry's mid nodes: a cap
+//    spanning a pole chord across the face — wing_fuselage's nose, a face triangle lying in
+//    the symmetry plane on the other face's triangles — is flipped onto the surface),
 //    the edge (c, d) is not in the mesh, both new triangles turn the normal of (a, b, d)
 //    by less than kCapFlipTurnDeg, and neither folds against its outer neighbour (unless
 //    that neighbour is a cap itself).
@@ -36,6 +40,7 @@
 // no mid nodes).
 #include <vector>
 
+#include "mesher/model/Model.h"
 #include "mesher/surface/SurfaceMesh.h"
 
 namespace aniso {
@@ -52,7 +57,8 @@ struct SurfaceSliverStats {
   std::vector<int> facesChanged;  ///< 0-based model faces whose triangles changed, ascending
 };
 
-SurfaceSliverStats mendSurfaceSlivers(SurfaceMesh& mesh, double tolerance);
+/// `model` (optional) gives the CAD surfaces for the fidelity test of cap flips inside a face.
+SurfaceSliverStats mendSurfaceSlivers(SurfaceMesh& mesh, double tolerance, const Model* model = nullptr);
 
 /// Number of caps (an angle above kCapAngleDeg) among the mesh's triangles.
 int countSurfaceCaps(const SurfaceMesh& mesh);

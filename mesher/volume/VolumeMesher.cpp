@@ -235,7 +235,7 @@ std::vector<int> mendFolds(SurfaceMesh& surface, VolumeMeshResult& r) {
 /// kSurfaceSliverTolerance times h_min (the smallest element size asked for: shorter edges
 /// and flatter caps come from the CAD, not from the sizing).
 void mendSlivers(const Model& model, const MeshOptions& options, SurfaceMesh& surface, VolumeMeshResult& r) {
-  const SurfaceSliverStats s = mendSurfaceSlivers(surface, kSurfaceSliverTolerance * options.sizing.hminFor(model.diagonal()));
+  const SurfaceSliverStats s = mendSurfaceSlivers(surface, kSurfaceSliverTolerance * options.sizing.hminFor(model.diagonal()), &model);
   r.surfaceNodesMerged += s.nodesMerged;
   r.surfaceCapsFlipped += s.capsFlipped;
   if (s.nodesMerged + s.capsFlipped > 0)
