@@ -20,6 +20,9 @@ namespace {
 using Tri = std::array<int, 3>;
 
 const double kCapCosine = std::cos(kCapAngleDeg * std::numbers::pi / 180);
+/// Cosine margin of the fold test of a cap flip (the new triangles turn by up to
+/// kCapFlipTurnDeg from (a, b, d)).
+constexpr double kFoldSlack = 0.15;
 const double kTurnCosine = std::cos(kCapFlipTurnDeg * std::numbers::pi / 180);
 
 std::uint64_t edgeKey(int a, int b) {
@@ -200,7 +203,9 @@ bool SliverPass::flip(int t, int k) {
     const Vec3 nn = normal(n);
     if (!(nn.norm() > 0) || nn.dot(nu) < kTurnCosine * nn.norm() * nu.norm()) return false;
   }
-  // no fold against the outer neighbours (a cap's normal says nothing)
+  // no new fold against the outer neighbours: each new triangle meets them no sharper than
+  // (a, b, d) did, or than kFoldCosine (a cap's normal says nothing: neither the old
+  // triangle's nor a neighbour cap's counts)
   struct Outer {
     int x, y, from;
     const Tri* now;
@@ -210,7 +215,8 @@ bool SliverPass::flip(int t, int k) {
     const int o = across(e.from, e.x, e.y);
     if (o < 0 || capVertex(m_.triangles[o]) >= 0) continue;
     const Vec3 nn = normal(*e.now), no = normal(m_.triangles[o]);
-    if (nn.dot(no) < kFoldCosine * nn.norm() * no.norm()) return false;
+    const double before = nu.dot(no) / (nu.norm() * no.norm());
+    if (nn.dot(no) < (std::min(before, kFoldCosine) - kFoldSlack) * nn.norm() * no.norm()) return false;
   }
   if (!(std::min(minAngle(n1), minAngle(n2)) > std::min(minAngle(T), minAngle(U)))) return false;
   touch(t);

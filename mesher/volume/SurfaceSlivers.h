@@ -31,8 +31,8 @@
 //    spanning a pole chord across the face — wing_fuselage's nose, a face triangle lying in
 //    the symmetry plane on the other face's triangles — is flipped onto the surface),
 //    the edge (c, d) is not in the mesh, both new triangles turn the normal of (a, b, d)
-//    by less than kCapFlipTurnDeg, and neither folds against its outer neighbour (unless
-//    that neighbour is a cap itself).
+//    by less than kCapFlipTurnDeg, and neither meets its outer neighbour much sharper
+//    than (a, b, d) did (a fold; a cap neighbour's normal does not count).
 // The removed area is that of caps and of triangles on sub-tolerance edges: the closed,
 // oriented surface stays closed and oriented and conforming; nodes left in no triangle
 // stay in the node array. Passes over the triangles in index order until nothing changes

@@ -169,3 +169,30 @@ TEST(SliverSteinerPoint, LeavesAGoodTetAlone) {
 }
 
 }  // namespace
+
+// The sliver phase's score (VertexMetrics with the Euclidean guard) ranks a flat sliver
+// (dihedral 1.6 deg, mean ratio 0.088) below a spire (three close vertices, every dihedral
+// angle >= 60 deg, mean ratio 0.042), though the mean ratio alone ranks them the other way
+// round: operators maximising the worst score then stop trading spires for slivers.
+TEST(VertexMetrics, GuardRanksASliverBelowASpire) {
+  const del3d::TetMesh empty;
+  improve3d::VertexMetrics vm(empty, unitSpace());
+  const double s = 0.05, h = 0.02;
+  const Vec3 spire[4] = {Vec3(0, 0, 0), Vec3(s, 0, 0), Vec3(s / 2, s * std::sqrt(3.0) / 2, 0),
+                         Vec3(s / 2, s * std::sqrt(3.0) / 6, 1)};
+  const Vec3 sliver[4] = {Vec3(-1, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, h), Vec3(0, -1, h)};
+  const Mat3 id = Mat3::Identity();
+  const auto positive = [&](const Vec3* p) { return (p[1] - p[0]).dot((p[2] - p[0]).cross(p[3] - p[0])) > 0; };
+  ASSERT_TRUE(positive(spire));
+  ASSERT_TRUE(positive(sliver));
+  EXPECT_LT(vm.scorePoints(spire, id, true), vm.scorePoints(sliver, id, true));
+  vm.setGuardEuclidean(true);
+  EXPECT_GT(vm.scorePoints(spire, id, true), vm.scorePoints(sliver, id, true));
+  // the guard never raises a score, and a regular tet keeps its score of 1
+  const Vec3 regular[4] = {Vec3(1, 1, 1), Vec3(1, -1, -1), Vec3(-1, 1, -1), Vec3(-1, -1, 1)};
+  const Vec3* reg = positive(regular) ? regular : nullptr;
+  const Vec3 flipped[4] = {regular[1], regular[0], regular[2], regular[3]};
+  EXPECT_NEAR(vm.scorePoints(reg ? reg : flipped, id, true), 1.0, 1e-9);
+  vm.setGuardEuclidean(false);
+  EXPECT_NEAR(vm.scorePoints(reg ? reg : flipped, id, true), 1.0, 1e-9);
+}
