@@ -11,6 +11,7 @@
 
 #include <Eigen/Geometry>
 
+#include "mesher/core/Error.h"
 #include "mesher/highorder/MidEdgeGeometry.h"
 #include "mesher/volume/FoldRegion.h"
 
@@ -249,7 +250,13 @@ SurfaceSliverStats mendSurfaceSlivers(SurfaceMesh& mesh, double tolerance, const
   // the model edges' discretisations it indexes keep their nodes (merged nodes stay in
   // the node array)
   std::optional<MidEdgeGeometry> geo;
-  if (model) geo.emplace(*model, mesh);
+  if (model) {
+    try {
+      geo.emplace(*model, mesh);
+    } catch (const MeshingError&) {
+      geo.reset();  // nodes on entities the model lacks (hand-made meshes): no CAD test
+    }
+  }
   for (int pass = 0; pass < kMaxSliverPasses; ++pass) {
     SliverPass p(mesh, tolerance, geo ? &*geo : nullptr, stats);
     if (!p.run()) break;

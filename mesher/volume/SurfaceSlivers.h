@@ -57,7 +57,8 @@ struct SurfaceSliverStats {
   std::vector<int> facesChanged;  ///< 0-based model faces whose triangles changed, ascending
 };
 
-/// `model` (optional) gives the CAD surfaces for the fidelity test of cap flips inside a face.
+/// `model` (optional) gives the CAD surfaces for the fidelity test of cap flips inside a face
+/// (left out when the mesh's nodes name entities the model lacks).
 SurfaceSliverStats mendSurfaceSlivers(SurfaceMesh& mesh, double tolerance, const Model* model = nullptr);
 
 /// Number of caps (an angle above kCapAngleDeg) among the mesh's triangles.
