@@ -178,18 +178,26 @@ class Transport {
     return false;
   }
 
-  /// The last resorts for two adjacent triangles: five quads (PairSplit.h), else four
-  /// with a quad next to them (HexagonSplit.h).
+  /// The last resort for two adjacent triangles (PairSplit.h).
   bool splitPair(int a, int b) {
-    if (splitPairIntoQuads(mesh_, metrics_, a, b, o_.minQuality)) {
-      ++stats_.splitPairs;
-    } else if (splitPairWithQuad(mesh_, metrics_, a, b, o_.minQuality)) {
-      ++stats_.hexagonSplits;
-    } else {
-      return false;
-    }
+    if (!splitPairIntoQuads(mesh_, metrics_, a, b, o_.minQuality)) return false;
     ++stats_.paired;
+    ++stats_.splitPairs;
     return true;
+  }
+
+  /// After the rounds, each triangle still next to another is split with them and a quad
+  /// next to them (HexagonSplit.h): taken only where no partner could be reached otherwise,
+  /// since it adds three elements where a pairing adds none.
+  void splitLeftPairs() {
+    const int n = mesh_.numElements();
+    for (int t = 0; t < n; ++t)
+      for (int k = 0; k < 3 && mesh_.isTriangle(t); ++k) {
+        const int u = mesh_.adj[t][k];
+        if (u == kNone || !mesh_.isTriangle(u) || !splitPairWithQuad(mesh_, metrics_, t, u, o_.minQuality)) continue;
+        ++stats_.paired;
+        ++stats_.hexagonSplits;
+      }
   }
 
   TransportStats run() {
@@ -214,6 +222,7 @@ class Transport {
       }
       if (stats_.paired == before) break;
     }
+    splitLeftPairs();
     for (int e = 0; e < mesh_.numElements(); ++e) stats_.triangles += mesh_.isTriangle(e);
     return stats_;
   }

@@ -9,8 +9,9 @@
 // the pentagon (triangle ∪ quad) is cut into a quad and a triangle (five ways), the legal
 // cut bringing the triangle's centroid nearest to the goal taken, and only if it comes
 // nearer (so the walk ends) — until the two share an edge, and then they are merged, or,
-// when that quad would be poor, split into five quads (PairSplit.h) or, with a quad next to
-// them, into four (HexagonSplit.h: a flat boundary vertex or a sharp corner in the pair).
+// when that quad would be poor, split into five quads (PairSplit.h). After the rounds, two
+// adjacent triangles still left are split with a quad next to them into four quads
+// (HexagonSplit.h: a flat boundary vertex or a sharp corner in the pair).
 // Check, then change: every cut and the final merge must give strictly convex,
 // counter-clockwise elements with quads of scaled Jacobian ≥ minQuality (QuadShape.h);
 // when the walk cannot be completed its moves are undone and the next partner is tried.
