@@ -145,12 +145,14 @@ TriId triangleAroundInteriorVertex(const Triangulation2d& tri, Workspace2d& ws, 
 
 /// Star-shape pruning: until every boundary edge sees p strictly on its left and no
 /// vertex is strictly inside. False when the root itself would have to go.
-bool makeStarShaped(Triangulation2d& tri, Workspace2d& ws, const Vec2& p, TriId root, std::size_t& pruned) {
+bool makeStarShaped(Triangulation2d& tri, Workspace2d& ws, const Vec2& p, TriId root, std::size_t& pruned,
+                    const NewTriangleTest* extra) {
   for (;;) {
     collectBoundary(tri, ws);
     TriId drop;
     for (const CavityEdge& e : ws.boundary)
-      if (predicates::orient2d(tri.coords(e.a), tri.coords(e.b), p.data()) <= 0) {
+      if (predicates::orient2d(tri.coords(e.a), tri.coords(e.b), p.data()) <= 0 ||
+          (extra && !extra->accept(tri, e.a, e.b))) {
         drop = e.owner;
         break;
       }
@@ -165,7 +167,8 @@ bool makeStarShaped(Triangulation2d& tri, Workspace2d& ws, const Vec2& p, TriId 
 }
 
 template <class Test>
-InsertPlan makePlan(Triangulation2d& tri, const Vec2& p, const Test& test, TriId start) {
+InsertPlan makePlan(Triangulation2d& tri, const Vec2& p, const Test& test, TriId start,
+                    const NewTriangleTest* extra) {
   InsertPlan plan;
   plan.point = p;
   plan.revision = tri.revision();
@@ -196,7 +199,7 @@ InsertPlan makePlan(Triangulation2d& tri, const Vec2& p, const Test& test, TriId
     }
   }
   growCavity(tri, ws, test, plan.incircleTests);
-  const bool ok = makeStarShaped(tri, ws, p, loc.tri, plan.pruned);
+  const bool ok = makeStarShaped(tri, ws, p, loc.tri, plan.pruned, extra);
   clearMarks(tri, ws);
   if (!ok) {
     plan.reason = RefuseReason::NotStarShaped;
@@ -208,7 +211,8 @@ InsertPlan makePlan(Triangulation2d& tri, const Vec2& p, const Test& test, TriId
 
 }  // namespace
 
-InsertPlan planInsertion(Triangulation2d& tri, const Vec2& p, const Mat2& m, TriId start) {
+InsertPlan planInsertion(Triangulation2d& tri, const Vec2& p, const Mat2& m, TriId start,
+                         const NewTriangleTest* extra) {
   InsertPlan refused;
   refused.point = p;
   if (!p.allFinite()) {
@@ -220,17 +224,18 @@ InsertPlan planInsertion(Triangulation2d& tri, const Vec2& p, const Mat2& m, Tri
     refused.reason = RefuseReason::BadTransform;
     return refused;
   }
-  return makePlan(tri, p, MetricConflict(tr, p), start);
+  return makePlan(tri, p, MetricConflict(tr, p), start, extra);
 }
 
-InsertPlan planInsertion(Triangulation2d& tri, const Vec2& p, const ConflictTest& test, TriId start) {
+InsertPlan planInsertion(Triangulation2d& tri, const Vec2& p, const ConflictTest& test, TriId start,
+                         const NewTriangleTest* extra) {
   if (!p.allFinite()) {
     InsertPlan refused;
     refused.point = p;
     refused.reason = RefuseReason::NotFinite;
     return refused;
   }
-  return makePlan<ConflictTest>(tri, p, test, start);
+  return makePlan<ConflictTest>(tri, p, test, start, extra);
 }
 
 InsertResult applyInsertion(Triangulation2d& tri, const InsertPlan& plan) {

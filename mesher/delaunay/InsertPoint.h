@@ -92,14 +92,25 @@ class ConflictTest {
   virtual bool inConflict(const Triangulation2d& tri, TriId t) const = 0;
 };
 
+/// An extra condition on the triangles (p, a, b) an insertion would make over the cavity
+/// boundary edges a → b, enforced by the star-shape pruning exactly like orient2d > 0: a
+/// cavity triangle owning an edge that fails it is dropped, and the plan is Refused
+/// (NotStarShaped) when that is the containing triangle. E.g. the face mesher's fold guard
+/// (surface/face/SurfaceLift.h): the new triangles must not be turned over on the surface.
+class NewTriangleTest {
+ public:
+  virtual ~NewTriangleTest() = default;
+  virtual bool accept(const Triangulation2d& tri, VertexId a, VertexId b) const = 0;
+};
+
 /// Check: plans the insertion of p with the transformation m, starting the walk at
 /// `start` (invalid → seeding quadtree). The triangulation is unchanged.
 InsertPlan planInsertion(Triangulation2d& tri, const Vec2& p, const Mat2& m = Mat2::Identity(),
-                         TriId start = TriId());
+                         TriId start = TriId(), const NewTriangleTest* extra = nullptr);
 /// Check, general form: the cavity grows through the triangles for which `test` is true
 /// (then star-shape pruning as above). A non-singular m is not needed here.
 InsertPlan planInsertion(Triangulation2d& tri, const Vec2& p, const ConflictTest& test,
-                         TriId start = TriId());
+                         TriId start = TriId(), const NewTriangleTest* extra = nullptr);
 
 /// Change: applies a plan made by planInsertion on the same, unchanged triangulation.
 /// Plans that are not Inserted-ready return their status without changes. Throws

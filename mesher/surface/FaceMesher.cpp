@@ -9,6 +9,7 @@
 #include "mesher/surface/face/DomainRemoval.h"
 #include "mesher/surface/face/EdgeRecovery.h"
 #include "mesher/surface/face/Refinement.h"
+#include "mesher/surface/face/UnfoldFace.h"
 #include "mesher/surface/improve/ImproveFace.h"
 
 namespace aniso {
@@ -70,20 +71,27 @@ void runPipeline(const face::FlatBoundary& flat, const ControlSpace2d& cs, const
   ro.mleToCcsQuality = options.mleToCcsQuality;
   ro.innerAngles = options.innerAnglesCriterion;
   ro.onPrediction = options.onPrediction;
+  const face::SurfaceLift lift(options.surface);
+  ro.lift = &lift;
   const face::RefineStats rs = face::refineFace(tri, cs, ro);
   res.stats.insertedInner = static_cast<int>(rs.inserted);
   res.stats.cancelledInsertions = static_cast<int>(rs.cancelled);
   res.stats.predictedTriangles = static_cast<int>(std::min(rs.predictedTriangles, 2e9));
   res.stats.insertionLimitReached = rs.limitReached;
   // 5: improvement; the boundary vertices (and the unused box corners) stay fixed.
+  std::vector<std::uint8_t> fixed(tri.numVertices(), 0);
+  for (const VertexId v : bt.vertexOf) fixed[v.index] = 1;
+  for (const VertexId v : tri.corners()) fixed[v.index] = 1;
   if (options.improvementPasses > 0) {
-    std::vector<std::uint8_t> fixed(tri.numVertices(), 0);
-    for (const VertexId v : bt.vertexOf) fixed[v.index] = 1;
-    for (const VertexId v : tri.corners()) fixed[v.index] = 1;
     ImproveOptions io;
     io.passes = options.improvementPasses;
+    io.lift = &lift;
     improveFaceMesh(tri, cs, fixed, io);
   }
+  // 6: folds the guarded operators could not avoid.
+  const face::UnfoldFaceStats uf = face::unfoldFace(tri, lift, fixed);
+  res.stats.foldsRepaired = uf.foldedBefore - uf.foldedAfter;
+  res.stats.foldsLeft = uf.foldedAfter;
   res.mesh = extractMesh(tri, flat, bt.vertexOf);
 }
 

@@ -15,7 +15,10 @@
 //     of edges with l_M > 1.5; MLE then CCS insertion (mixed), with the cancellation rules
 //     (point outside the face, too close to an existing vertex or to a contour in metric,
 //     metric jump), at most 4 NT_p + 1000 insertions (eq. 6.2);
-//   5 improvement (4.6, improveFaceMesh): smoothing and swaps, N_imp passes.
+//   5 improvement (4.6, improveFaceMesh): smoothing and swaps, N_imp passes;
+//   6 unfolding (face/UnfoldFace.h) of what steps 1–3 left turned over on the surface.
+// With the face's surface given (FaceMesherOptions::surface), steps 4 and 5 make no
+// triangle that is turned over in 3D (face/SurfaceLift.h: the fold guard).
 // Boundary vertices never move and boundary edges are never flipped or split: the face
 // mesh conforms exactly to the given boundary, so neighbouring faces stay conforming.
 #include <functional>
@@ -23,6 +26,7 @@
 #include <vector>
 
 #include "mesher/control/ControlSpace2d.h"
+#include "mesher/geometry/ParametricSurface.h"
 #include "mesher/surface/FaceBoundary.h"
 
 namespace aniso {
@@ -36,6 +40,10 @@ struct FaceMesherOptions {
   unsigned seed = 12345;            ///< randomised boundary insertion order (deterministic)
   /// Predicted final triangle count while refining (face::RefineOptions::onPrediction).
   std::function<void(double)> onPrediction;
+  /// The face's surface, in the (u, v) of the boundary (null for a planar analytic face
+  /// whose (u, v) is its plane). When given, no operator may turn a triangle over in 3D
+  /// (face/SurfaceOrientation.h), which a (u, v) test cannot see at singular points.
+  const ParametricSurface* surface = nullptr;
 };
 
 struct FaceMeshStats {
@@ -47,6 +55,9 @@ struct FaceMeshStats {
   /// Refinement stopped at its bound of 4 NT_p + 1000 insertions (the mesh is valid but may
   /// be coarser than the metric asks somewhere).
   bool insertionLimitReached = false;
+  /// Triangles turned over on the surface (face/SurfaceLift.h) after refinement and
+  /// improvement, mended by face::unfoldFace, and left (0 unless the face is degenerate).
+  int foldsRepaired = 0, foldsLeft = 0;
   double seconds = 0;
 };
 

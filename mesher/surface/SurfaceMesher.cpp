@@ -166,6 +166,7 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
   parallelFor(nf, in.options.threads, [&](int f) {
     if (!cs[f]) return;
     FaceMesherOptions fo = in.face;
+    fo.surface = model.faces[f].surface.get();
     fo.onPrediction = [&predicted, &faceProgress, f](double n) {
       predicted.post(f, n);
       faceProgress.tick();

@@ -14,6 +14,7 @@
 #include "mesher/metric/QualityStats.h"
 #include "mesher/surface/ContourDiscretization.h"
 #include "mesher/surface/FaceMesher.h"
+#include "mesher/surface/face/SurfaceOrientation.h"
 #include "mesher/surface/face/ValidateFaceMesh.h"
 #include "tests/unit/contour_test_models.h"
 
@@ -32,6 +33,8 @@ struct Meshed {
   std::vector<FaceMeshResult> faces;
 };
 
+/// Meshes every face with the fold guard (FaceMesherOptions::surface) and checks each face
+/// mesh with the (u, v) validator and the fold validator.
 Meshed meshModel(const Model& m, double h, double gMin) {
   std::vector<std::unique_ptr<CSAnalytic2d>> spaces;
   std::vector<const ControlSpace2d*> ptrs;
@@ -43,10 +46,14 @@ Meshed meshModel(const Model& m, double h, double gMin) {
   const std::vector<EdgeDiscretization> edges = discretizeEdges(m, ptrs, {}, out.mesh);
   for (std::size_t f = 0; f < m.faces.size(); ++f) {
     const FaceBoundary b = faceBoundary(m, static_cast<int>(f), edges, out.mesh);
-    FaceMeshResult r = meshFace(b, *ptrs[f]);
+    FaceMesherOptions options;
+    options.surface = m.faces[f].surface.get();
+    FaceMeshResult r = meshFace(b, *ptrs[f], options);
     EXPECT_TRUE(r.ok()) << joined(r.problems);
     const auto problems = face::validateFaceMesh(r.mesh, b);
     EXPECT_TRUE(problems.empty()) << joined(problems);
+    EXPECT_TRUE(face::foldedTriangles(r.mesh, *m.faces[f].surface).empty()) << "face " << f;
+    EXPECT_EQ(r.stats.foldsLeft, 0) << "face " << f;
     if (r.ok()) addFaceMesh(m, static_cast<int>(f), r.mesh, out.mesh);
     out.faces.push_back(std::move(r));
   }
@@ -107,6 +114,16 @@ TEST(FaceMesherSurface, SingularParameterizationAtThePoles) {
   const Meshed r = meshModel(test::sphere(1.0), 0.2, 0);
   ASSERT_FALSE(r.mesh.triangles.empty());
   expectClosed(r.mesh);
+}
+
+TEST(FaceMesherSurface, NoFoldsAtThePolesOverSizes) {
+  // Coarse to fine sizes around the poles of a sphere: every triangle upright on the
+  // surface (checked in meshModel), the surface closed.
+  for (const double h : {0.45, 0.3, 0.17, 0.09, 0.05}) {
+    const Meshed r = meshModel(test::sphere(1.0), h, 1e-4);
+    ASSERT_FALSE(r.mesh.triangles.empty()) << h;
+    expectClosed(r.mesh);
+  }
 }
 
 TEST(FaceMesherSurface, ControlSpaceFailureIsAProblemNotAnException) {

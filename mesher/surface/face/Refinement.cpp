@@ -20,6 +20,22 @@ using namespace del2d;
 
 namespace {
 
+/// The fold guard as the insertion's new-triangle test: (p, a, b) upright on the surface.
+class UprightFan final : public NewTriangleTest {
+ public:
+  UprightFan(const SurfaceLift* lift, const Vec2& p) : lift_(lift) {
+    if (lift_) p_ = lift_->lift(p);
+  }
+  bool accept(const Triangulation2d& tri, VertexId a, VertexId b) const override {
+    return SurfaceLift::upright(p_, lift_->at(tri, a), lift_->at(tri, b));
+  }
+  const LiftedPoint& point() const { return p_; }
+
+ private:
+  const SurfaceLift* lift_;
+  LiftedPoint p_;
+};
+
 struct HeapEntry {
   double q;
   std::uint32_t tri;
@@ -156,6 +172,7 @@ class Refiner {
     const Mat2 m = metricAt(cs_, (a + b + c) / 3.0);
     triMetric_[t] = m;
     double q = triangleQuality(m, a, b, c);
+    if (opt_.lift && !opt_.lift->upright(tri_, t)) q = 0;  // turned over on the surface
     quality_[t] = q;
     area_[t] = metricArea(m, a, b, c);
     if (q < opt_.qualityThreshold) return q;
@@ -246,8 +263,22 @@ class Refiner {
   /// or cancelled.
   bool insertAt(TriId k, const Vec2& p, TriId start) {
     const Mat2 mp = metricAt(cs_, p);
-    const InsertPlan plan = opt_.innerAngles ? planInsertion(tri_, p, innerAnglesConflict(), start)
-                                             : planInsertion(tri_, p, mp, start);
+    const bool guarded = opt_.lift && opt_.lift->active();
+    const UprightFan fan(guarded ? opt_.lift : nullptr, p);
+    const auto plan_ = [&](const NewTriangleTest* extra) {
+      return opt_.innerAngles ? planInsertion(tri_, p, innerAnglesConflict(), start, extra)
+                              : planInsertion(tri_, p, mp, start, extra);
+    };
+    InsertPlan plan = plan_(nullptr);
+    // The fold guard: where the cavity is properly upright, the new triangles must be too
+    // (re-planned with the guard as part of the star-shape pruning). A cavity holding a
+    // folded or untested triangle (a placeholder of the coarse triangulation: around a pole
+    // no single point splits it into upright triangles) may be replaced as it is: its
+    // folded triangles are refined first (q = 0) until the region is upright.
+    if (guarded && plan.status == InsertStatus::Inserted && !fanUpright(fan) && cavityUpright()) {
+      plan = plan_(&fan);
+      if (plan.status != InsertStatus::Inserted) ++stats_.cancelFold;
+    }
     if (plan.status != InsertStatus::Inserted) {
       ++stats_.cancelRefused;
       return false;
@@ -255,6 +286,7 @@ class Refiner {
     if (!acceptCavity(k, p, mp)) return false;
     for (const TriId t : tri_.workspace().cavity) uncount(t);
     const InsertResult r = applyInsertion(tri_, plan);
+    if (guarded) opt_.lift->remember(r.vertex, fan.point());
     vertexMetric_[r.vertex] = mp;
     ++stats_.inserted;
     const std::vector<TriId>& created = tri_.workspace().created;
@@ -302,6 +334,20 @@ class Refiner {
         if (n.valid() && !isAccepted(n) && !isQueued(n)) push(n, quality_[n]);
       }
     }
+  }
+
+  /// Every triangle (p, a, b) over the planned cavity's boundary is upright.
+  bool fanUpright(const UprightFan& fan) const {
+    for (const CavityEdge& e : tri_.workspace().boundary)
+      if (!fan.accept(tri_, e.a, e.b)) return false;
+    return true;
+  }
+
+  /// Every triangle of the planned cavity is tested and upright.
+  bool cavityUpright() const {
+    for (const TriId t : tri_.workspace().cavity)
+      if (opt_.lift->pose(tri_, t) != SurfaceLift::Pose::Upright) return false;
+    return true;
   }
 
   /// The middle of the longest edge of K in m; false when that edge is constrained.

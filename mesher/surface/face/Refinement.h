@@ -44,6 +44,7 @@
 
 #include "mesher/control/ControlSpace2d.h"
 #include "mesher/delaunay/Triangulation2d.h"
+#include "mesher/surface/face/SurfaceLift.h"
 
 namespace aniso::face {
 
@@ -72,6 +73,10 @@ struct RefineOptions {
   /// predictionInterval heap pops while refining. May be empty.
   std::function<void(double)> onPrediction;
   std::size_t predictionInterval = 4096;
+  /// The face's surface (may be null or inactive): an insertion whose new triangles would
+  /// not all be upright on the surface (SurfaceLift.h) is cancelled, and a triangle that is
+  /// not upright counts as the worst (q = 0), so it is refined first.
+  const SurfaceLift* lift = nullptr;
 };
 
 struct RefineStats {
@@ -82,6 +87,9 @@ struct RefineStats {
   /// Cancellations by rule.
   std::size_t cancelBoundaryEdge = 0, cancelRefused = 0, cancelMetricJump = 0, cancelNearVertex = 0,
               cancelNearContour = 0;
+  /// Insertions refused with the fold guard on (RefineOptions::lift): the cavity could not
+  /// be pruned to new triangles that are upright on the surface and star-shaped.
+  std::size_t cancelFold = 0;
   double predictedTriangles = 0;  ///< NT_p (eq. 6.2)
   std::size_t insertionLimit = 0;
   bool limitReached = false;

@@ -79,7 +79,7 @@ GeometricSwapStats geometricSwap(Triangulation2d& tri, const VertexMetricCache& 
         ++st.checked;
         if (!violatesSwapCriterion(tri, metrics, t, i, options.angleTolerance)) continue;
         const del2d::FlipPlan plan = del2d::canFlip(tri, t, i);
-        if (!plan.legal) continue;
+        if (!plan.legal || !metrics.flipUpright(tri, plan)) continue;
         if (static_cast<double>(st.flipped) >= budget) {
           st.limitReached = true;
           return st;

@@ -21,6 +21,7 @@ ImproveStats improveFaceMesh(del2d::Triangulation2d& tri, const ControlSpace2d& 
     throw MeshingError("improveFaceMesh: fewer fixed flags than vertices");
   ImproveStats st;
   improve::VertexMetricCache metrics;
+  metrics.setLift(options.lift);
   improve::SmoothingOptions smoothing;
   smoothing.iterations = options.smoothingIterations;
   smoothing.lowGradation = options.lowGradation;

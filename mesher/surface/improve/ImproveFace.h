@@ -33,6 +33,7 @@
 
 #include "mesher/control/ControlSpace2d.h"
 #include "mesher/delaunay/Triangulation2d.h"
+#include "mesher/surface/face/SurfaceLift.h"
 
 namespace aniso {
 
@@ -61,6 +62,9 @@ struct ImproveOptions {
   /// Postprocessing threshold: triangles with η_M below it are improved locally. Measured
   /// on random-point meshes: 0.4 → mean min η_M 0.38, 0.6 → 0.50, at no measurable cost.
   double badQuality = 0.6;
+  /// The fold guard (face/SurfaceLift.h), may be null: no operator turns a triangle over
+  /// on the surface.
+  const face::SurfaceLift* lift = nullptr;
 };
 
 struct ImproveStats {

@@ -88,7 +88,7 @@ void smoothVertex(Triangulation2d& tri, const VertexMetricCache& metrics, Vertex
     const StarQuality after = starQuality(star, p);
     const bool better = poor ? after.worst > before.worst
                              : after.worst >= options.qualityFloor && after.mean >= before.mean;
-    if (!better || !starValid(star, p)) continue;
+    if (!better || !starValid(star, p) || !metrics.fanUpright(tri, p, star.ring)) continue;
     moveVertex(tri, v, p);
     ++st.moved;
     st.halved += step < 1.0;

@@ -20,7 +20,7 @@ using del2d::kPrev;
 bool qualityFlip(Triangulation2d& tri, const VertexMetricCache& metrics, TriId t, int i) {
   if (metrics.edgeFrozen(tri, t, i)) return false;
   const del2d::FlipPlan plan = del2d::canFlip(tri, t, i);
-  if (!plan.legal) return false;
+  if (!plan.legal || !metrics.flipUpright(tri, plan)) return false;
   const VertexId q[4] = {plan.a, plan.b, plan.c, plan.d};
   const Mat2 m = metrics.blend(q, 4);
   const Vec2 a = tri.point(plan.a), b = tri.point(plan.b), c = tri.point(plan.c), d = tri.point(plan.d);
@@ -61,13 +61,15 @@ bool relocateAndFlip(Triangulation2d& tri, const VertexMetricCache& metrics, Tri
   // v's ring after the flip: a gains d between b and c, d gains a between c and b, b loses
   // c, c loses b.
   p.clear();
+  std::vector<VertexId> ids;
   for (std::size_t k = 0; k < n; ++k) {
     const VertexId x = ring[k], next = ring[k + 1 == n ? 0 : k + 1];
     if ((v == b && x == c) || (v == c && x == b)) continue;
-    p.push_back(tri.point(x));
-    if (v == a && x == b && next == c) p.push_back(tri.point(d));
-    if (v == d && x == c && next == b) p.push_back(tri.point(a));
+    ids.push_back(x);
+    if (v == a && x == b && next == c) ids.push_back(d);
+    if (v == d && x == c && next == b) ids.push_back(a);
   }
+  for (const VertexId y : ids) p.push_back(tri.point(y));
   const std::size_t m = p.size();
   if (m < 3 || m == n) return false;  // m == n: the ring did not have the expected edge
   Vec2 sum = Vec2::Zero();
@@ -89,8 +91,9 @@ bool relocateAndFlip(Triangulation2d& tri, const VertexMetricCache& metrics, Tri
     const Vec2 &e0 = tri.point(a), &e1 = v == b ? tri.point(d) : tri.point(b), &e2 = v == b ? tri.point(c) : tri.point(d);
     if (!(predicates::orient2d(e0.data(), e1.data(), e2.data()) > 0)) return false;
     after = std::min(after, meanRatio(s, e0, e1, e2));
+    if (!metrics.triangleUpright(tri, a, v == b ? d : b, v == b ? c : d)) return false;
   }
-  if (!(after > before)) return false;
+  if (!(after > before) || !metrics.fanUpright(tri, x, ids)) return false;
   moveVertex(tri, v, x);
   const del2d::FlipPlan plan = del2d::canFlip(tri, t, i);
   if (!plan.legal) {  // cannot happen: both new triangles were checked above
@@ -123,7 +126,7 @@ int optimiseVertex(Triangulation2d& tri, const VertexMetricCache& metrics, Verte
       const Vec2 &b = tri.point(ring[k]), &c = tri.point(ring[k + 1 == n ? 0 : k + 1]);
       if (!(predicates::orient2d(x.data(), b.data(), c.data()) > 0)) return false;
     }
-    return true;
+    return metrics.fanUpright(tri, x, ring);
   };
   int moves = 0;
   for (int it = 0; it < iterations; ++it) {

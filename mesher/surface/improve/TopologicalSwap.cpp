@@ -59,7 +59,7 @@ TopologicalSwapStats topologicalSwap(Triangulation2d& tri, const VertexMetricCac
       for (VertexId v : q) graded = graded || !(metrics.gradation(v) <= options.lowGradation);
       if (graded) continue;
       const del2d::FlipPlan plan = del2d::canFlip(tri, t, i);
-      if (!plan.legal) continue;
+      if (!plan.legal || !metrics.flipUpright(tri, plan)) continue;
       if (guard) {
         // After the flip the edge is (a, d); the angles opposite it are at b and c.
         const Mat2 m = metrics.blend(q, 4);

@@ -199,4 +199,14 @@ void moveVertex(Triangulation2d& tri, VertexId v, const Vec2& p) {
   const_cast<Vec2&>(tri.point(v)) = p;
 }
 
+bool VertexMetricCache::fanUpright(const Triangulation2d& tri, const Vec2& x, std::span<const VertexId> ring) const {
+  if (!lift_ || !lift_->active()) return true;
+  const face::LiftedPoint lx = lift_->lift(x);
+  const std::size_t n = ring.size();
+  for (std::size_t k = 0; k < n; ++k)
+    if (!face::SurfaceLift::upright(lx, lift_->at(tri, ring[k]), lift_->at(tri, ring[k + 1 == n ? 0 : k + 1])))
+      return false;
+  return true;
+}
+
 }  // namespace aniso::improve

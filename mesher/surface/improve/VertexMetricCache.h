@@ -39,7 +39,9 @@
 
 #include "mesher/control/ControlSpace2d.h"
 #include "mesher/core/Types.h"
+#include "mesher/delaunay/EdgeFlip.h"
 #include "mesher/delaunay/Triangulation2d.h"
+#include "mesher/surface/face/SurfaceLift.h"
 
 namespace aniso::improve {
 
@@ -83,6 +85,21 @@ class VertexMetricCache {
   /// increasing vertex order so that the result does not depend on the order given.
   Mat2 blend(const VertexId* v, int n) const;
 
+  /// The fold guard (face/SurfaceLift.h): the improvement operators make no triangle that
+  /// is turned over on the surface. Null (the default) or inactive: every test passes.
+  void setLift(const face::SurfaceLift* lift) { lift_ = lift; }
+  /// Both triangles of the flip are upright on the surface.
+  bool flipUpright(const Triangulation2d& tri, const del2d::FlipPlan& plan) const {
+    return !lift_ || lift_->flipUpright(tri, plan);
+  }
+  /// The triangle (a, b, c) is upright.
+  bool triangleUpright(const Triangulation2d& tri, VertexId a, VertexId b, VertexId c) const {
+    return !lift_ || lift_->upright(tri, a, b, c);
+  }
+  /// Every fan triangle (x, ring[k], ring[k+1]) (cyclically) is upright with a vertex at
+  /// (u, v) x.
+  bool fanUpright(const Triangulation2d& tri, const Vec2& x, std::span<const VertexId> ring) const;
+
  private:
   static constexpr std::uint8_t kUsed = 1, kMovable = 2, kOpen = 4, kConstrained = 8, kBadMetric = 16,
                                 kSubstituted = 32, kDegenerate = 64, kNearDegenerate = 128;
@@ -95,6 +112,7 @@ class VertexMetricCache {
   std::vector<double> grad_, angle_;
   std::vector<int> ideal_;
   std::vector<std::uint8_t> flags_;
+  const face::SurfaceLift* lift_ = nullptr;
 };
 
 /// S = (MᵀM)^{1/2} in closed form, (T + √det T · I) / √(tr T + 2√det T); false when M is

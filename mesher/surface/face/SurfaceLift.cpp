@@ -1,0 +1,68 @@
+#include "mesher/surface/face/SurfaceLift.h"
+
+#include <algorithm>
+
+#include <Eigen/Geometry>
+
+namespace aniso::face {
+
+using del2d::TriId;
+using del2d::VertexId;
+
+LiftedPoint SurfaceLift::lift(const Vec2& uv) const {
+  const SurfaceD1 d = surface_->d1(uv);
+  LiftedPoint l;
+  l.uv = uv;
+  l.p = d.p;
+  const Vec3 n = d.pu.cross(d.pv);
+  // Singular (or nearly): the general normal() looks at a regular point nearby.
+  constexpr double kSingular = 1e-10;
+  const double scale = d.pu.norm() * d.pv.norm();
+  l.n = n.norm() > kSingular * scale && scale > 0 ? Vec3(n.normalized()) : surface_->normal(uv);
+  return l;
+}
+
+const LiftedPoint& SurfaceLift::at(const del2d::Triangulation2d& tri, VertexId v) const {
+  if (cache_.size() <= v.index) cache_.resize(tri.numVertices() > v.index ? tri.numVertices() : v.index + 1);
+  LiftedPoint& l = cache_[v.index];
+  if (l.uv != tri.point(v)) l = lift(tri.point(v));  // NaN marks "never lifted"
+  return l;
+}
+
+void SurfaceLift::remember(VertexId v, const LiftedPoint& l) const {
+  if (cache_.size() <= v.index) cache_.resize(v.index + 1);
+  cache_[v.index] = l;
+}
+
+SurfaceLift::Pose SurfaceLift::pose(const LiftedPoint& a, const LiftedPoint& b, const LiftedPoint& c) {
+  if (std::min({a.n.dot(b.n), b.n.dot(c.n), c.n.dot(a.n)}) < kChordTestCosine) return Pose::Untested;
+  const Vec3 ab = b.p - a.p, bc = c.p - b.p, ca = a.p - c.p;
+  const double longest = std::max({ab.squaredNorm(), bc.squaredNorm(), ca.squaredNorm()});
+  const double shortest = std::min({ab.squaredNorm(), bc.squaredNorm(), ca.squaredNorm()});
+  if (!(shortest > kCollapsedEdge * kCollapsedEdge * longest)) return Pose::Untested;  // collapsed at a pole
+  const Vec3 chord = ab.cross(-ca);
+  const Vec3 n = a.n + b.n + c.n;
+  return chord.dot(n) > kUprightCosine * chord.norm() * n.norm() ? Pose::Upright : Pose::Folded;
+}
+
+bool SurfaceLift::upright(const del2d::Triangulation2d& tri, VertexId a, VertexId b, VertexId c) const {
+  if (!active()) return true;
+  return upright(at(tri, a), at(tri, b), at(tri, c));
+}
+
+bool SurfaceLift::upright(const del2d::Triangulation2d& tri, TriId t) const {
+  const std::uint32_t* v = tri.triVertices(t);
+  return upright(tri, VertexId(v[0]), VertexId(v[1]), VertexId(v[2]));
+}
+
+SurfaceLift::Pose SurfaceLift::pose(const del2d::Triangulation2d& tri, TriId t) const {
+  if (!active()) return Pose::Untested;
+  const std::uint32_t* v = tri.triVertices(t);
+  return pose(at(tri, VertexId(v[0])), at(tri, VertexId(v[1])), at(tri, VertexId(v[2])));
+}
+
+bool SurfaceLift::flipUpright(const del2d::Triangulation2d& tri, const del2d::FlipPlan& plan) const {
+  return upright(tri, plan.a, plan.b, plan.d) && upright(tri, plan.a, plan.d, plan.c);
+}
+
+}  // namespace aniso::face

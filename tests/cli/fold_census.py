@@ -1,0 +1,31 @@
+"""Fold census of a triangle surface mesh (MSH read with meshio): the edges shared by two
+triangles of one model face (same gmsh:geometrical tag) whose normals are more than 84
+degrees apart — the volume mesher's fold criterion (mesher/volume/UnfoldSurface.h,
+kFoldCosine). Neighbours on a face meshed within the curvature ratio differ by a few
+degrees; a fold is a triangle turned over or standing across its face."""
+import numpy as np, meshio
+
+FOLD_COSINE = np.cos(np.radians(84))
+
+
+def folded_edges(path):
+    """Returns (number of folded edges, sorted list of the face tags that have one)."""
+    m = meshio.read(path)
+    tris, tags = [], []
+    for i, c in enumerate(m.cells):
+        if c.type == "triangle":
+            tris.append(c.data)
+            tags.append(np.asarray(m.cell_data["gmsh:geometrical"][i]))
+    if not tris: return 0, []
+    T, G, P = np.vstack(tris), np.concatenate(tags), m.points
+    N = np.cross(P[T[:, 1]] - P[T[:, 0]], P[T[:, 2]] - P[T[:, 0]])
+    N /= np.maximum(np.linalg.norm(N, axis=1)[:, None], 1e-300)
+    # Undirected edges with their triangle; pairs of one face sharing an edge.
+    e = np.sort(np.stack([T[:, [0, 1]], T[:, [1, 2]], T[:, [2, 0]]], axis=1).reshape(-1, 2), axis=1)
+    owner = np.repeat(np.arange(len(T)), 3)
+    order = np.lexsort((e[:, 1], e[:, 0]))
+    e, owner = e[order], owner[order]
+    same = np.all(e[1:] == e[:-1], axis=1)
+    a, b = owner[:-1][same], owner[1:][same]
+    fold = (G[a] == G[b]) & (np.einsum("ij,ij->i", N[a], N[b]) < FOLD_COSINE)
+    return int(fold.sum()), sorted(set(int(g) for g in G[a][fold]))
