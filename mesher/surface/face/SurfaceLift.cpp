@@ -14,11 +14,13 @@ LiftedPoint SurfaceLift::lift(const Vec2& uv) const {
   LiftedPoint l;
   l.uv = uv;
   l.p = d.p;
+  // At a singular point (a pole: pu or pv vanishes) the normal is left zero: the direction
+  // pu × pv has there is rounding noise, and the general fallback (a nearby regular point)
+  // need not be the side the triangle lies on. pose() then uses the other corners.
   const Vec3 n = d.pu.cross(d.pv);
-  // Singular (or nearly): the general normal() looks at a regular point nearby.
   constexpr double kSingular = 1e-10;
-  const double scale = d.pu.norm() * d.pv.norm();
-  l.n = n.norm() > kSingular * scale && scale > 0 ? Vec3(n.normalized()) : surface_->normal(uv);
+  const double scale = std::max(d.pu.squaredNorm(), d.pv.squaredNorm());
+  l.n = n.norm() > kSingular * scale ? Vec3(n.normalized()) : Vec3::Zero();
   return l;
 }
 
@@ -35,7 +37,16 @@ void SurfaceLift::remember(VertexId v, const LiftedPoint& l) const {
 }
 
 SurfaceLift::Pose SurfaceLift::pose(const LiftedPoint& a, const LiftedPoint& b, const LiftedPoint& c) {
-  if (std::min({a.n.dot(b.n), b.n.dot(c.n), c.n.dot(a.n)}) < kChordTestCosine) return Pose::Untested;
+  // Corner normals (zero at singular corners): any two known ones too far apart, or none
+  // known: untested.
+  const Vec3* known[3];
+  int k = 0;
+  for (const LiftedPoint* x : {&a, &b, &c})
+    if (x->n.squaredNorm() > 0) known[k++] = &x->n;
+  if (k == 0) return Pose::Untested;
+  for (int i = 0; i < k; ++i)
+    for (int j = i + 1; j < k; ++j)
+      if (known[i]->dot(*known[j]) < kChordTestCosine) return Pose::Untested;
   const Vec3 ab = b.p - a.p, bc = c.p - b.p, ca = a.p - c.p;
   const double longest = std::max({ab.squaredNorm(), bc.squaredNorm(), ca.squaredNorm()});
   const double shortest = std::min({ab.squaredNorm(), bc.squaredNorm(), ca.squaredNorm()});

@@ -9,7 +9,8 @@
 // A turned-over triangle folds the surface mesh onto itself in 3D (SurfaceOrientation.h).
 // The lift lets the operators refuse such a triangle: upright() is true when the chord
 // triangle's normal (B − A) × (C − A) is within 75° of the sum of the surface normals at
-// its corners (ParametricSurface::normal is defined at singular points too).
+// its corners, a singular corner (a pole, where pu × pv vanishes and its direction is
+// rounding noise) not counting.
 //
 // The chord test means something only for a triangle small against the surface's
 // curvature: a triangle of the coarse boundary triangulation spanning half a sphere is a
@@ -47,7 +48,7 @@ inline constexpr double kCollapsedEdge = 1e-9;
 struct LiftedPoint {
   Vec2 uv = Vec2::Constant(std::numeric_limits<double>::quiet_NaN());
   Vec3 p = Vec3::Zero();
-  Vec3 n = Vec3::Zero();  ///< unit surface normal
+  Vec3 n = Vec3::Zero();  ///< unit surface normal; zero at a singular point (a pole)
 };
 
 class SurfaceLift {
