@@ -4,6 +4,7 @@
 #include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <Extrema_ExtAlgo.hxx>
+#include <GeomAbs_SurfaceType.hxx>
 #include <GeomAPI_ProjectPointOnSurf.hxx>
 #include <Precision.hxx>
 #include <Standard_Failure.hxx>
@@ -86,6 +87,8 @@ OcctSurface::OcctSurface(const Handle(Geom_Surface)& surface, const SurfaceDomai
     throw MeshingError(name_ + ": OCCT could not load the surface: " + occtMessage(e));
   }
 }
+
+bool OcctSurface::affine() const { return adaptor_->GetType() == GeomAbs_Plane; }
 
 std::unique_ptr<ParametricSurface> OcctSurface::clone() const {
   // The Geom_ surface is immutable and shared; the adaptor (with its cache) is new.

@@ -36,6 +36,8 @@ class OcctSurface final : public ParametricSurface {
   SurfaceD2 d2(const Vec2& uv) const override;
   SurfaceDomain domain() const override { return domain_; }
   std::unique_ptr<ParametricSurface> clone() const override;
+  /// A Geom_Plane (its parameterization is linear).
+  bool affine() const override;
 
   /// The general damped Newton projection (start-nearest, periodic parameters unwrapped near
   /// `start`); when it stops at a point that is not a local minimum of the distance (the

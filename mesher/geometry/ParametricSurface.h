@@ -63,6 +63,11 @@ class ParametricSurface {
   /// An independent copy for use in another thread.
   virtual std::unique_ptr<ParametricSurface> clone() const = 0;
 
+  /// True when p is affine in (u, v) (a plane with a linear parameterization): then a
+  /// triangle's orientation in (u, v) is its orientation on the surface, and tests in 3D
+  /// can be skipped. Conservative default: false.
+  virtual bool affine() const { return false; }
+
   // ---- general methods (override where a faster exact form exists) ----
   /// Unit normal n = pu × pv / |pu × pv|. At a singular point (|pu × pv| tiny) the normal
   /// is taken from a nearby regular point towards the domain centre; never NaN.

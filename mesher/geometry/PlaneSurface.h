@@ -19,6 +19,7 @@ class PlaneSurface final : public ParametricSurface {
   SurfaceD2 d2(const Vec2& uv) const override;
   SurfaceDomain domain() const override;
   std::unique_ptr<ParametricSurface> clone() const override;
+  bool affine() const override { return true; }
 
   /// Constant unit normal a × b / |a × b|.
   Vec3 normal(const Vec2& uv) const override;

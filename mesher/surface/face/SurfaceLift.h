@@ -22,8 +22,8 @@
 //
 // Lifted points are cached per vertex and recomputed when the vertex moved (the cache
 // remembers the (u, v) it was computed for). One evaluation of p and its derivatives per
-// vertex. Not thread-safe (one lift per face mesher run). With no surface (planar analytic
-// faces: (u, v) is the plane) every test passes.
+// vertex. Not thread-safe (one lift per face mesher run). With no surface, or an affine one
+// (a plane: orientation in (u, v) is orientation on the surface), every test passes.
 #include <limits>
 #include <vector>
 
@@ -53,7 +53,9 @@ struct LiftedPoint {
 
 class SurfaceLift {
  public:
-  explicit SurfaceLift(const ParametricSurface* surface) : surface_(surface) {}
+  /// An affine surface (a plane) needs no lift: the lift is then inactive.
+  explicit SurfaceLift(const ParametricSurface* surface)
+      : surface_(surface && !surface->affine() ? surface : nullptr) {}
   bool active() const { return surface_ != nullptr; }
 
   /// The surface point and normal at uv (not cached). Requires active().

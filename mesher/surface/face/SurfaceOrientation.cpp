@@ -13,6 +13,7 @@ bool collapsesAtPole(const FaceMesh& mesh, const std::array<int, 3>& v) {
 }
 
 std::vector<int> foldedTriangles(const FaceMesh& mesh, const ParametricSurface& s) {
+  if (s.affine()) return {};  // (u, v) orientation is 3D orientation (validateFaceMesh checks it)
   const SurfaceLift lift(&s);
   std::vector<LiftedPoint> p(mesh.uv.size());
   for (std::size_t i = 0; i < p.size(); ++i) p[i] = lift.lift(mesh.uv[i]);
