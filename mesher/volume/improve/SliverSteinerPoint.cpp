@@ -107,33 +107,6 @@ void candidatePoints(const SolidTetMesh& s, TetId t, const Region& r, std::vecto
   out.push_back(ct);
   out.push_back(cr);
   out.push_back(0.5 * (ct + cr));
-  // A sliver at a short edge (a short boundary edge among long ones: every tet with that
-  // edge and a far vertex is flat): points off the edge's midpoint towards the region, at
-  // distances around the geometric mean of the shortest and the longest edge — near enough
-  // for the edge to subtend a large angle, far enough for the new short edges.
-  int shortest = 0;
-  double lo = 1e300, hi = 0;
-  for (int e = 0; e < 6; ++e) {
-    const double len = (m.point(m.vertex(t, kEdge[e][0])) - m.point(m.vertex(t, kEdge[e][1]))).norm();
-    if (len < lo) lo = len, shortest = e;
-    hi = std::max(hi, len);
-  }
-  if (hi > kShortEdgeRatio * lo) {
-    const Vec3 mid = 0.5 * (m.point(m.vertex(t, kEdge[shortest][0])) + m.point(m.vertex(t, kEdge[shortest][1])));
-    std::vector<Vec3> towards = {cr - mid, ct - mid};
-    Vec3 inward = Vec3::Zero();
-    for (int f = 0; f < 4; ++f)
-      if (!m.neighbour(t, f).valid()) {
-        const Vec3 n = hullInwardNormal(m, t, f);
-        towards.push_back(n);
-        inward += n;
-      }
-    if (towards.size() > 3) towards.push_back(inward);
-    for (const Vec3& d : towards) {
-      if (!(d.norm() > 0)) continue;
-      for (const double k : kShortEdgeDistances) out.push_back(mid + k * std::sqrt(lo * hi) * d.normalized());
-    }
-  }
   for (int f = 0; f < 4; ++f) {
     if (m.neighbour(t, f).valid()) continue;  // a hull face: the solid lies on vertex f's side
     const Vec3 a = m.point(m.vertex(t, del3d::kFaceVertex[f][0])), b = m.point(m.vertex(t, del3d::kFaceVertex[f][1])),

@@ -18,8 +18,7 @@
 // of R and their midpoint; for each boundary face of t (on the hull of the solid) the apex
 // of a tet on it at heights kApexHeights of its mean edge length, towards the inside; for
 // (b) the edge's midpoint and the points a quarter and half way from it to the centroid of
-// the ring's other vertices; for a sliver with a short edge (kShortEdgeRatio) points off
-// that edge (below). The best candidate over all regions wins. The hull and the
+// the ring's other vertices. The best candidate over all regions wins. The hull and the
 // constrained faces are unchanged (validateSolidTetMesh
 // holds); deterministic (fixed orders, no randomness).
 #include <vector>
@@ -29,12 +28,6 @@
 
 namespace aniso::improve3d {
 
-/// A sliver whose longest edge exceeds this many times its shortest also takes candidates
-/// off the shortest edge's midpoint, towards the centroids of the region and of the
-/// sliver and along the inward normals of its hull faces (and their sum), at
-/// kShortEdgeDistances times sqrt(shortest · longest).
-inline constexpr double kShortEdgeRatio = 8.0;
-inline constexpr double kShortEdgeDistances[3] = {0.5, 1.0, 2.0};
 /// At most this many neighbours of the sliver join the region.
 inline constexpr int kMaxRegionNeighbours = 3;
 /// Heights of the apex candidates over a boundary face, relative to its mean edge length

@@ -22,36 +22,36 @@ double meanRatioCubed(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3
 
 /// Signed (min_e sin θ_e / sin θ_regular)³ over the six dihedral angles θ_e (sin θ_e =
 /// 3 V |e| / (2 A_1 A_2), A_1, A_2 the areas of the two faces at e): small for a sliver,
-/// a cap or a wedge (an angle near 0° or 180°), not for a needle with a short edge.
+/// a cap or a wedge (an angle near 0° or 180°), not for a spire (three vertices close
+/// together: a low mean ratio, every dihedral angle large).
 double dihedralSineCubed(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4) {
   const Vec3 p[4] = {p1, p2, p3, p4};
-  double area[4];  // twice the area of the face opposite vertex k
+  double area2[4];  // squared twice the area of the face opposite vertex k
   for (int k = 0; k < 4; ++k) {
     const Vec3& a = p[(k + 1) % 4];
-    area[k] = (p[(k + 2) % 4] - a).cross(p[(k + 3) % 4] - a).norm();
+    area2[k] = (p[(k + 2) % 4] - a).cross(p[(k + 3) % 4] - a).squaredNorm();
   }
   const double volume6 = (p2 - p1).dot((p3 - p1).cross(p4 - p1));
-  double smallest = 1e300;
-  for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j) {
-      int k = 0;
-      while (k == i || k == j) ++k;
-      int l = k + 1;
-      while (l == i || l == j) ++l;
-      const double denominator = area[k] * area[l];
-      if (!(denominator > 0)) return 0.0;
-      smallest = std::min(smallest, (p[j] - p[i]).norm() / denominator);
-    }
+  // the edge (i, j) lies on the faces opposite the two other vertices (k, l)
+  static constexpr int kEdgeFaces[6][4] = {{0, 1, 2, 3}, {0, 2, 1, 3}, {0, 3, 1, 2},
+                                           {1, 2, 0, 3}, {1, 3, 0, 2}, {2, 3, 0, 1}};
+  double smallest = 1e300;  // min |e|² / (area_k area_l)²
+  for (const auto& e : kEdgeFaces) {
+    const double denominator = area2[e[2]] * area2[e[3]];
+    if (!(denominator > 0)) return 0.0;
+    smallest = std::min(smallest, (p[e[1]] - p[e[0]]).squaredNorm() / denominator);
+  }
   // sin θ_e = 3 V |e| / (2 A_k A_l) = (V6 / 2) |e| / (area_k area_l / 2) = V6 |e| / (area_k area_l)
-  const double sine = std::min(1.0, std::abs(volume6) * smallest / kRegularDihedralSine);
+  const double sine = std::min(1.0, std::abs(volume6) * std::sqrt(smallest) / kRegularDihedralSine);
   return std::copysign(sine * sine * sine, volume6);
 }
 
 }  // namespace
 
-double VertexMetrics::guarded(double metric, const Vec3* p) const {
+double VertexMetrics::guarded(double metric, const Vec3* p, bool euclidean) const {
   if (!guardEuclidean_) return metric;
-  return std::min({metric, meanRatioCubed(p[0], p[1], p[2], p[3]), dihedralSineCubed(p[0], p[1], p[2], p[3])});
+  const double e = euclidean ? metric : meanRatioCubed(p[0], p[1], p[2], p[3]);
+  return std::min({metric, e, dihedralSineCubed(p[0], p[1], p[2], p[3])});
 }
 
 void VertexMetrics::setMetric(std::size_t v, const Mat3& m) {
@@ -74,22 +74,22 @@ void VertexMetrics::refresh(del3d::VertexId v) { setMetric(v.index, cs_.getMetri
 double VertexMetrics::score(const std::uint32_t* v) const {
   const Vec3 p[4] = {mesh_.point(del3d::VertexId(v[0])), mesh_.point(del3d::VertexId(v[1])),
                      mesh_.point(del3d::VertexId(v[2])), mesh_.point(del3d::VertexId(v[3]))};
-  if (isotropic(v)) return guarded(meanRatioCubed(p[0], p[1], p[2], p[3]), p);
+  if (isotropic(v)) return guarded(meanRatioCubed(p[0], p[1], p[2], p[3]), p, true);
   const Mat3 m = tetMetric(v);
-  return guarded(meanRatioCubed(m * p[0], m * p[1], m * p[2], m * p[3]), p);
+  return guarded(meanRatioCubed(m * p[0], m * p[1], m * p[2], m * p[3]), p, false);
 }
 
 double VertexMetrics::scorePoints(const Vec3* p, const Mat3& m, bool isotropicTensor) const {
-  if (isotropicTensor) return guarded(meanRatioCubed(p[0], p[1], p[2], p[3]), p);
-  return guarded(meanRatioCubed(m * p[0], m * p[1], m * p[2], m * p[3]), p);
+  if (isotropicTensor) return guarded(meanRatioCubed(p[0], p[1], p[2], p[3]), p, true);
+  return guarded(meanRatioCubed(m * p[0], m * p[1], m * p[2], m * p[3]), p, false);
 }
 
 double VertexMetrics::scoreWith(const std::uint32_t* v, std::uint32_t moved, const Vec3& p) const {
   Vec3 q[4];
   for (int i = 0; i < 4; ++i) q[i] = v[i] == moved ? p : mesh_.point(del3d::VertexId(v[i]));
-  if (isotropic(v)) return guarded(meanRatioCubed(q[0], q[1], q[2], q[3]), q);
+  if (isotropic(v)) return guarded(meanRatioCubed(q[0], q[1], q[2], q[3]), q, true);
   const Mat3 m = tetMetric(v);
-  return guarded(meanRatioCubed(m * q[0], m * q[1], m * q[2], m * q[3]), q);
+  return guarded(meanRatioCubed(m * q[0], m * q[1], m * q[2], m * q[3]), q, false);
 }
 
 bool VertexMetrics::isSliver(del3d::TetId t, double metricAngle, double euclideanAngle) const {

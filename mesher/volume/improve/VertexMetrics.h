@@ -10,9 +10,10 @@
 // the smallest of the metric value, the Euclidean value and the cubed Euclidean dihedral
 // sine (min_e sin θ_e / sin 70.53°)³: a tet that is fine in the metric but flat in space
 // (what the referee measures) counts as poor, and of two poor tets the one with the smaller
-// dihedral angle is the worse — a needle (one short edge, every dihedral angle large) has a
-// mean ratio as low as a sliver's, and maximising the mean ratio alone traded needles for
-// slivers at short boundary edges (SampleCrankshaft4A: 1.73° -> 0.83°).
+// dihedral angle is the worse — a spire (three vertices close together, every dihedral
+// angle large) has a mean ratio as low as a sliver's, and maximising the mean ratio alone
+// traded such tets for slivers at a short boundary feature (SampleCrankshaft4A: 1.73° ->
+// 0.83°).
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -62,8 +63,9 @@ class VertexMetrics {
  private:
   const del3d::TetMesh& mesh_;
   const ControlSpace3d& cs_;
-  /// metric, or with the guard on the smallest of metric and the Euclidean terms of p.
-  double guarded(double metric, const Vec3* p) const;
+  /// metric, or with the guard on the smallest of metric and the Euclidean terms of p
+  /// (`euclidean`: metric is p's Euclidean value already).
+  double guarded(double metric, const Vec3* p, bool euclidean) const;
   bool isotropic(const std::uint32_t* v) const { return iso_[v[0]] && iso_[v[1]] && iso_[v[2]] && iso_[v[3]]; }
   void setMetric(std::size_t v, const Mat3& m);
 
