@@ -19,6 +19,9 @@ using Tri = std::array<int, 3>;
 constexpr int kMaxRings = 2;
 /// Step 2: the largest distance of a loop node from the loop's plane, in loop extents.
 constexpr double kMaxLoopBend = 0.05;
+/// The same for a fan from a hub (step 4): the star of a node on a curved face, as the
+/// surface mesher makes them (a cap of 0.25 extents: about 28 degrees of a sphere).
+constexpr double kMaxHubBend = 0.25;
 
 std::pair<int, int> key(int a, int b) { return std::minmax(a, b); }
 
@@ -141,6 +144,18 @@ bool earClip(const std::vector<Vec2>& p, std::vector<Tri>& out) {
   return true;
 }
 
+/// The fan of a counter-clockwise polygon from a point inside it (index p.size() in the
+/// triangles): false unless every edge sees the point on its left (star-shaped).
+bool fanFrom(const std::vector<Vec2>& p, const Vec2& hub, std::vector<Tri>& out) {
+  const int n = static_cast<int>(p.size());
+  out.clear();
+  for (int i = 0; i < n; ++i) {
+    if (!(predicates::orient2d(p[i].data(), p[(i + 1) % n].data(), hub.data()) > 0)) return false;
+    out.push_back({i, (i + 1) % n, n});
+  }
+  return true;
+}
+
 /// Steps 2-4 for one region.
 bool replaceRegion(const SurfaceMesh& m, const std::vector<Tri>& tris, const std::vector<int>& region,
                    const std::vector<int>& useCount, const std::set<Tri>& existing, FoldRepair& out) {
@@ -151,8 +166,13 @@ bool replaceRegion(const SurfaceMesh& m, const std::vector<Tri>& tris, const std
   for (const int t : region)
     for (const int v : tris[t])
       if (!onLoop.count(v)) ++uses[v];
-  for (const auto& [v, n] : uses)
-    if (m.nodeOn[v].kind != NodeOn::Kind::Face || n != useCount[v]) return false;
+  int hub = -1;  // a CAD vertex or edge node inside the loop: kept, the loop fanned from it
+  for (const auto& [v, n] : uses) {
+    if (n != useCount[v]) return false;
+    if (m.nodeOn[v].kind == NodeOn::Kind::Face) continue;
+    if (hub >= 0) return false;
+    hub = v;
+  }
   Vec3 area(0, 0, 0), centroid(0, 0, 0);
   for (std::size_t k = 0; k < loop.size(); ++k) {
     area += m.nodes[loop[k]].cross(m.nodes[loop[(k + 1) % loop.size()]]);
@@ -170,12 +190,17 @@ bool replaceRegion(const SurfaceMesh& m, const std::vector<Tri>& tris, const std
   }
   for (const int t : region)  // the dropped nodes too: the region is replaced, not reshaped
     for (const int v : tris[t]) bend = std::max(bend, std::abs(n.dot(m.nodes[v] - centroid)));
-  if (!(bend <= kMaxLoopBend * extent)) return false;
+  if (!(bend <= (hub < 0 ? kMaxLoopBend : kMaxHubBend) * extent)) return false;
   std::vector<Tri> ears;
-  if (!earClip(p, ears)) return false;
+  if (hub < 0) {
+    if (!earClip(p, ears)) return false;
+  } else if (!fanFrom(p, Vec2(m.nodes[hub].dot(u), m.nodes[hub].dot(w)), ears)) {
+    return false;
+  }
   out.added.clear();
   for (const Tri& e : ears) {
-    const Tri t = {loop[e[0]], loop[e[1]], loop[e[2]]};
+    const auto node = [&](int i) { return i < static_cast<int>(loop.size()) ? loop[i] : hub; };
+    const Tri t = {node(e[0]), node(e[1]), node(e[2])};
     Tri sorted = t;
     std::sort(sorted.begin(), sorted.end());
     if (existing.count(sorted)) return false;
@@ -184,7 +209,7 @@ bool replaceRegion(const SurfaceMesh& m, const std::vector<Tri>& tris, const std
     out.added.push_back(t);
   }
   out.removed = region;
-  out.nodesDropped = static_cast<int>(uses.size());
+  out.nodesDropped = static_cast<int>(uses.size()) - (hub >= 0 ? 1 : 0);
   return true;
 }
 

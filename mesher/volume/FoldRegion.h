@@ -9,12 +9,16 @@
 //    by one ring (at most kMaxRings times) until step 2 holds;
 //  2 the boundary of R as a chain (directed edges that do not cancel) is one simple loop,
 //    and R is nearly flat (every node of R within kMaxLoopBend of the loop's extent from
-//    the plane of the loop's vector area), so the surface is not reshaped;
-//  3 the nodes inside the loop are face nodes used by R only (no other face uses them);
-//    they are dropped from the triangulation (they stay in the node array, in no element);
+//    the plane of the loop's vector area; kMaxHubBend around a hub, below), so the
+//    surface is not reshaped;
+//  3 the nodes inside the loop are used by R only (no other face uses them) and are face
+//    nodes, dropped from the triangulation (they stay in the node array, in no element),
+//    but for at most one CAD vertex or edge node, the hub, which is kept;
 //  4 the loop, projected on that plane, is triangulated by ear clipping (exact orient2d,
-//    the best-shaped ear first); every new triangle must be positive there and must not
-//    repeat a triangle of the mesh.
+//    the best-shaped ear first), or with a hub as the fan from it (every loop edge must
+//    see it on its inner side: problemSphere's pole vertex, whose three triangles lay one
+//    turned over, beyond a neighbour's edge); every new triangle must be positive there
+//    and must not repeat a triangle of the mesh.
 // Returns false (nothing changed) when a step fails. `tris` are the face's triangles,
 // `useCount` the number of mesh triangles using each node, `existing` the sorted node
 // triples of every mesh triangle.

@@ -3,10 +3,12 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <set>
 #include <utility>
 
+#include "mesher/volume/FoldRegion.h"
 #include "mesher/volume/UnfoldSurface.h"
 
 using namespace aniso;
@@ -124,4 +126,47 @@ TEST(UnfoldSurface, OtherFacesKeepTheirTriangles) {
   for (std::size_t t = 0; t < m.triangles.size(); ++t)
     if (m.triangleFace[t] == 1) ++second;
   EXPECT_EQ(second, 2);
+}
+
+// A CAD vertex inside a face (a pole) whose star has one triangle turned over — the vertex
+// lies beyond the edge of its star's inner triangle — cannot be dropped: the region is
+// re-triangulated as the fan from it (FoldRegion.h step 4), the face nodes inside dropped.
+TEST(FoldRegion, AVertexInsideTheFoldIsKeptAsTheHubOfAFan) {
+  SurfaceMesh m;
+  for (const Vec3& p : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)}) m.addNode(p, onEdge());
+  const int f1 = m.addNode(Vec3(0.6, 0.3, 0), onFace()), f2 = m.addNode(Vec3(0.6, 0.7, 0), onFace()),
+            f3 = m.addNode(Vec3(0.9, 0.5, 0), onFace());
+  // the hub belongs inside (f1, f3, f2), at (0.75, 0.5); at (0.5, 0.5) (f2, f1, hub) turns over
+  const int hub = m.addNode(Vec3(0.5, 0.5, 0), NodeOn{NodeOn::Kind::Vertex, 0, 0, Vec2(0, 0)});
+  const std::vector<std::array<int, 3>> tris = {{0, 1, f1},  {1, f3, f1},  {1, 2, f3},    {2, f2, f3},
+                                                {2, 3, f2},  {3, 0, f2},   {0, f1, f2},   {f1, f3, hub},
+                                                {f3, f2, hub}, {f2, f1, hub}};
+  for (const auto& t : tris) {
+    m.triangles.push_back(t);
+    m.triangleFace.push_back(0);
+  }
+  ASSERT_GT(countFoldedEdges(m), 0);
+  std::vector<int> useCount(m.nodes.size(), 0);
+  std::set<std::array<int, 3>> existing;
+  for (const auto& t : tris) {
+    for (const int v : t) ++useCount[v];
+    std::array<int, 3> s = t;
+    std::sort(s.begin(), s.end());
+    existing.insert(s);
+  }
+  FoldRepair fix;
+  ASSERT_TRUE(retriangulateFold(m, tris, {7, 8, 9}, useCount, existing, fix));
+  EXPECT_EQ(fix.nodesDropped, 3);  // f1, f2, f3
+  EXPECT_EQ(fix.added.size(), 4u);
+  SurfaceMesh after;
+  after.nodes = m.nodes;
+  after.nodeOn = m.nodeOn;
+  for (const auto& t : fix.added) {
+    EXPECT_NE(std::find(t.begin(), t.end(), hub), t.end());
+    after.triangles.push_back(t);
+    after.triangleFace.push_back(0);
+  }
+  expectUpward(after);
+  EXPECT_EQ(countFoldedEdges(after), 0);
+  EXPECT_EQ(rim(after), rim(m));
 }
