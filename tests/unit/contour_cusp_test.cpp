@@ -48,6 +48,8 @@ TEST(CornerParity, APoleBetweenTwoEdgesIsOneCorner) {
   ASSERT_EQ(c.size(), 1u);
   EXPECT_EQ(c[0].in, 2);   // edge 2 arrives at the origin,
   EXPECT_EQ(c[0].out, 0);  // edge 0 leaves it; the pole (use 3) between them is skipped
+  // A sphere's seam back to itself around either pole is no corner.
+  EXPECT_EQ(contour::sharpCorners(sphere(), 0), 0);
 }
 
 TEST(CuspNodes, NodesFaceEachOtherAcrossTheSliver) {
