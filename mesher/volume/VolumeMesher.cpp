@@ -234,13 +234,17 @@ std::vector<int> mendFolds(SurfaceMesh& surface, VolumeMeshResult& r) {
 /// Caps and sub-tolerance edges force flat tets (SurfaceSlivers.h): mended first, within
 /// kSurfaceSliverTolerance times h_min (the smallest element size asked for: shorter edges
 /// and flatter caps come from the CAD, not from the sizing).
-void mendSlivers(const Model& model, const MeshOptions& options, SurfaceMesh& surface, VolumeMeshResult& r) {
-  const SurfaceSliverStats s = mendSurfaceSlivers(surface, kSurfaceSliverTolerance * options.sizing.hminFor(model.diagonal()), &model);
+/// Returns the faces whose triangles changed.
+std::vector<int> mendSlivers(const Model& model, const MeshOptions& options, SurfaceMesh& surface,
+                             VolumeMeshResult& r) {
+  const SurfaceSliverStats s =
+      mendSurfaceSlivers(surface, kSurfaceSliverTolerance * options.sizing.hminFor(model.diagonal()), &model);
   r.surfaceNodesMerged += s.nodesMerged;
   r.surfaceCapsFlipped += s.capsFlipped;
   if (s.nodesMerged + s.capsFlipped > 0)
     logDebug("volume: surface slivers: " + std::to_string(s.nodesMerged) + " nodes merged, " +
              std::to_string(s.capsFlipped) + " caps flipped on " + std::to_string(s.facesChanged.size()) + " faces");
+  return s.facesChanged;
 }
 
 }  // namespace
@@ -291,7 +295,9 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
     if (requests.empty() || round >= in.maxSplitRounds || requests.size() > 2 * firstMissing) break;
     std::vector<std::uint8_t> touched = facesUsingEdges(surface, requests, nf);
     const SplitStats split = splitSurfaceEdges(model, surface, requests);
-    // A split next to a sliver can fold the surface again (three nearly collinear rim nodes).
+    // A split next to a sliver can make caps and fold the surface again (three nearly
+    // collinear rim nodes).
+    for (const int f : mendSlivers(model, in.options, surface, r)) touched[f] = 1;
     for (const int f : mendFolds(surface, r)) touched[f] = 1;
     if (split.edgesSplit == 0) break;
     ++r.splitRounds;
