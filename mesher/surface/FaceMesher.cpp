@@ -8,6 +8,7 @@
 #include "mesher/surface/face/BoundaryTriangulation.h"
 #include "mesher/surface/face/DomainRemoval.h"
 #include "mesher/surface/face/EdgeRecovery.h"
+#include "mesher/surface/face/FlatTriangles.h"
 #include "mesher/surface/face/Refinement.h"
 #include "mesher/surface/face/UnfoldFace.h"
 #include "mesher/surface/improve/ImproveFace.h"
@@ -92,6 +93,10 @@ void runPipeline(const face::FlatBoundary& flat, const ControlSpace2d& cs, const
   const face::UnfoldFaceStats uf = face::unfoldFace(tri, lift, fixed);
   res.stats.foldsRepaired = uf.foldedBefore - uf.foldedAfter;
   res.stats.foldsLeft = uf.foldedAfter;
+  // 7: caps and needles that are flat on the surface though fine in the metric.
+  const face::FlatTriangleStats ft = face::removeFlatTriangles(tri, lift, fixed);
+  res.stats.flatTriangles = ft.before;
+  res.stats.flatTrianglesLeft = ft.after;
   res.mesh = extractMesh(tri, flat, bt.vertexOf);
 }
 

@@ -16,7 +16,8 @@
 //     (point outside the face, too close to an existing vertex or to a contour in metric,
 //     metric jump), at most 4 NT_p + 1000 insertions (eq. 6.2);
 //   5 improvement (4.6, improveFaceMesh): smoothing and swaps, N_imp passes;
-//   6 unfolding (face/UnfoldFace.h) of what steps 1–3 left turned over on the surface.
+//   6 unfolding (face/UnfoldFace.h) of what steps 1–3 left turned over on the surface;
+//   7 flips and moves of triangles flat on the surface (face/FlatTriangles.h).
 // With the face's surface given (FaceMesherOptions::surface), steps 4 and 5 make no
 // triangle that is turned over in 3D (face/SurfaceLift.h: the fold guard).
 // Boundary vertices never move and boundary edges are never flipped or split: the face
@@ -58,6 +59,8 @@ struct FaceMeshStats {
   /// Triangles turned over on the surface (face/SurfaceLift.h) after refinement and
   /// improvement, mended by face::unfoldFace, and left (0 unless the face is degenerate).
   int foldsRepaired = 0, foldsLeft = 0;
+  /// Triangles flat on the surface (face/FlatTriangles.h) before and after their removal.
+  int flatTriangles = 0, flatTrianglesLeft = 0;
   double seconds = 0;
 };
 

@@ -1,15 +1,17 @@
-// The face mesher's fold guard (mesher/surface/face/SurfaceLift.h) and the unfolding step
-// (UnfoldFace.h) on a sphere: triangles that are counter-clockwise in (u, v) but turned
+// The face mesher's fold guard (mesher/surface/face/SurfaceLift.h), the unfolding step
+// (UnfoldFace.h) and the flat-triangle pass (FlatTriangles.h) on a sphere: triangles that are counter-clockwise in (u, v) but turned
 // over or standing across the surface in 3D, next to the pole and at a rim.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <initializer_list>
 
 #include "mesher/delaunay/InsertPoint.h"
 #include "mesher/delaunay/Triangulation2d.h"
 #include "mesher/delaunay/Validate2d.h"
 #include "mesher/geometry/SphereSurface.h"
 #include "mesher/predicates/Predicates.h"
+#include "mesher/surface/face/FlatTriangles.h"
 #include "mesher/surface/face/SurfaceLift.h"
 #include "mesher/surface/face/UnfoldFace.h"
 
@@ -26,6 +28,25 @@ Box2 box(const Vec2& lo, const Vec2& hi) {
   b.add(lo);
   b.add(hi);
   return b;
+}
+
+/// The triangulation of the points (vertices 4, 5, ... after the box corners) with the edge
+/// between vertices 6 and 7 flipped: the Delaunay diagonal replaced by the other one.
+void triangulateWithOtherDiagonal(del2d::Triangulation2d& tri, std::initializer_list<Vec2> points) {
+  for (const Vec2& p : points) ASSERT_EQ(del2d::insertPoint(tri, p).status, del2d::InsertStatus::Inserted);
+  del2d::TriId t;
+  int i = -1;
+  ASSERT_TRUE(tri.findEdge(del2d::VertexId(7), del2d::VertexId(6), t, i) ||
+              tri.findEdge(del2d::VertexId(6), del2d::VertexId(7), t, i));
+  const del2d::FlipPlan plan = del2d::canFlip(tri, t, i);
+  ASSERT_TRUE(plan.legal);
+  del2d::flip(tri, plan);
+}
+
+bool hasEdge(const del2d::Triangulation2d& tri, int a, int b) {
+  del2d::TriId t;
+  int i = -1;
+  return tri.findEdge(del2d::VertexId(a), del2d::VertexId(b), t, i) || tri.findEdge(del2d::VertexId(b), del2d::VertexId(a), t, i);
 }
 
 bool ccw(const Vec2& a, const Vec2& b, const Vec2& c) { return predicates::orient2d(a.data(), b.data(), c.data()) > 0; }
@@ -95,16 +116,8 @@ TEST_F(SphereFixture, UnfoldFaceRemovesFoldsAndKeepsTheTriangulationValid) {
   del2d::Triangulation2d tri(box(Vec2(-0.5, 0.9), Vec2(7.0, 1.6)));
   // The folded triangle of the previous test over the point below it (vertices 4–7 after
   // the box corners): flipping their common edge gives two upright triangles.
-  for (const Vec2& p : {Vec2(1.06, 1.25), Vec2(3.51, 1.40), Vec2(2.27, 1.44), Vec2(2.27, 1.2)})
-    ASSERT_EQ(del2d::insertPoint(tri, p).status, del2d::InsertStatus::Inserted);
-  // Delaunay in (u, v) takes the short diagonal; flip it to the long one (the fold).
-  del2d::TriId t;
-  int i = -1;
-  ASSERT_TRUE(tri.findEdge(del2d::VertexId(7), del2d::VertexId(6), t, i) ||
-              tri.findEdge(del2d::VertexId(6), del2d::VertexId(7), t, i));
-  const del2d::FlipPlan plan = del2d::canFlip(tri, t, i);
-  ASSERT_TRUE(plan.legal);
-  del2d::flip(tri, plan);
+  // Delaunay in (u, v) takes the short diagonal; flipped to the long one: the fold.
+  triangulateWithOtherDiagonal(tri, {Vec2(1.06, 1.25), Vec2(3.51, 1.40), Vec2(2.27, 1.44), Vec2(2.27, 1.2)});
   const auto before = face::notUpright(tri, lift);
   ASSERT_FALSE(before.empty());  // the configuration really is folded
   std::vector<std::uint8_t> fixed(tri.numVertices(), 0);
@@ -115,6 +128,22 @@ TEST_F(SphereFixture, UnfoldFaceRemovesFoldsAndKeepsTheTriangulationValid) {
   EXPECT_GT(st.flips, 0);
   EXPECT_EQ(st.foldedAfter, static_cast<int>(face::notUpright(tri, lift).size()));
   EXPECT_TRUE(del2d::validate(tri).empty());
+}
+
+TEST_F(SphereFixture, FlatCapIsFlippedAway) {
+  // A cap (a, b, c): c a hair above the middle of (a, b) near the equator, d below; made by
+  // flipping the Delaunay diagonal (c, d) to (a, b).
+  del2d::Triangulation2d tri(box(Vec2(-1, -1), Vec2(1.2, 1)));
+  triangulateWithOtherDiagonal(tri, {Vec2(0, 0), Vec2(0.02, 0), Vec2(0.01, 0.00005), Vec2(0.01, -0.01)});
+  std::vector<std::uint8_t> fixed(tri.numVertices(), 1);  // nothing may move: flips only
+  const face::FlatTriangleStats st = face::removeFlatTriangles(tri, lift, fixed);
+  // (The needles between the tiny quadrilateral and the far box corners count too.)
+  EXPECT_LT(st.after, st.before);
+  EXPECT_GE(st.flips, 1);
+  EXPECT_TRUE(hasEdge(tri, 6, 7));  // the cap is gone
+  EXPECT_TRUE(del2d::validate(tri).empty());
+  EXPECT_LT(face::chordMeanRatio(lift.lift(Vec2(0, 0)), lift.lift(Vec2(0.02, 0)), lift.lift(Vec2(0.01, 0.00005))),
+            face::kFlatMeanRatio);
 }
 
 }  // namespace
