@@ -19,7 +19,8 @@ void writeMsh22(const OutputMesh& m, const std::string& path, const WriteOptions
   writeMshHeader(o, "2.2", opt.binary, m);
 
   const std::vector<Vec3>& p = m.nodes();
-  o << "$Nodes\n" << p.size() << '\n';
+  w.text("$Nodes\n");
+  w.asciiLine(p.size());
   for (size_t i = 0; i < p.size(); ++i) {
     w.value<int>(static_cast<int>(i) + 1);
     for (int k = 0; k < 3; ++k) w.value<double>(p[i][k]);
@@ -41,7 +42,8 @@ void writeMsh22(const OutputMesh& m, const std::string& path, const WriteOptions
   }
   for (size_t s = 0; s < tets.size(); ++s)
     if (!tets[s].empty()) blocks.push_back({Shape::Tet, static_cast<int>(s), &tets[s]});
-  o << "$Elements\n" << m.count(Shape::Triangle) + m.count(Shape::Quad) + m.count(Shape::Tet) << '\n';
+  w.text("$Elements\n");
+  w.asciiLine(m.count(Shape::Triangle) + m.count(Shape::Quad) + m.count(Shape::Tet));
   int tag = 1;
   std::array<int, 10> nodes{};
   for (const Block& b : blocks) {

@@ -1,10 +1,21 @@
 #pragma once
 // Token output shared by the MSH writers: ASCII numbers separated by spaces, or raw
 // native-endian binary values, as the MSH formats ask for each section.
+// ASCII numbers are formatted by std::to_chars: integers in decimal, doubles as printf's
+// "%.17g" (to_chars with chars_format::general and precision 17 is specified as exactly
+// that; the same text as an ostream at setprecision(17)), so every double reads back to
+// the same value.
+// Output is buffered (the stream sees it in blocks of about kFlushBytes): endSection()
+// and flush() hand it to the stream — every section ends with endSection(), and a writer
+// writes to the stream itself only when the buffer is empty (before the first value or
+// after an endSection()); text() writes through the buffer.
 #include <algorithm>
-#include <iomanip>
+#include <charconv>
+#include <cstring>
 #include <ostream>
 #include <string>
+#include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "io/OutputMesh.h"
@@ -13,25 +24,61 @@ namespace aniso::io {
 
 class MshOut {
  public:
-  MshOut(std::ostream& o, bool binary) : o_(o), binary_(binary) { o_ << std::setprecision(17); }
+  /// Buffered bytes that trigger a write to the stream at the end of a line.
+  static constexpr std::size_t kFlushBytes = std::size_t{1} << 16;
+
+  MshOut(std::ostream& o, bool binary) : o_(o), binary_(binary) { buf_.reserve(kFlushBytes + 512); }
   template <class T>
   void value(T v, char sep = ' ') {
+    static_assert(std::is_arithmetic_v<T>);
     if (binary_) {
-      o_.write(reinterpret_cast<const char*>(&v), sizeof(T));
-    } else {
-      o_ << v << sep;
+      buf_.append(reinterpret_cast<const char*>(&v), sizeof(T));
+      return;
     }
+    ascii(v);
+    buf_.push_back(sep);
+  }
+  /// An ASCII number and a newline in either mode (the counts after the MSH 2.2 headers).
+  template <class T>
+  void asciiLine(T v) {
+    ascii(v);
+    buf_.push_back('\n');
   }
   void endLine() {
-    if (!binary_) o_ << '\n';
+    if (!binary_) buf_.push_back('\n');
+    if (buf_.size() >= kFlushBytes) flush();
   }
-  /// Before an $End... line: binary data ends without a newline.
-  void endSection(const char* tag) { o_ << (binary_ ? "\n" : "") << tag << '\n'; }
+  /// Text as it is (section headers in either mode).
+  void text(std::string_view s) { buf_.append(s); }
+  /// Before an $End... line: binary data ends without a newline. Flushes.
+  void endSection(const char* tag) {
+    if (binary_) buf_.push_back('\n');
+    buf_.append(tag);
+    buf_.push_back('\n');
+    flush();
+  }
+  void flush() {
+    o_.write(buf_.data(), static_cast<std::streamsize>(buf_.size()));
+    buf_.clear();
+  }
   bool binary() const { return binary_; }
 
  private:
+  template <class T>
+  void ascii(T v) {
+    char tmp[40];
+    std::to_chars_result r;
+    if constexpr (std::is_floating_point_v<T>) {
+      r = std::to_chars(tmp, tmp + sizeof tmp, v, std::chars_format::general, 17);
+    } else {
+      r = std::to_chars(tmp, tmp + sizeof tmp, v);
+    }
+    buf_.append(tmp, static_cast<std::size_t>(r.ptr - tmp));
+  }
+
   std::ostream& o_;
   bool binary_;
+  std::string buf_;
 };
 
 /// $MeshFormat of `version` ("4.1" or "2.2"), ASCII or binary (with the endianness check),

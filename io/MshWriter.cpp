@@ -39,7 +39,7 @@ std::array<std::vector<std::vector<int>>, 4> nodesByEntity(const OutputMesh& m) 
 
 /// $Entities: every model vertex and edge; the faces and solids holding elements (with
 /// their physical group) or nodes (without).
-void writeEntities(const OutputMesh& m, MshOut& w, std::ostream& o,
+void writeEntities(const OutputMesh& m, MshOut& w,
                    const std::array<std::vector<std::vector<int>>, 4>& byEntity) {
   const Model& model = m.model;
   const std::vector<Vec3>& p = m.nodes();
@@ -49,7 +49,7 @@ void writeEntities(const OutputMesh& m, MshOut& w, std::ostream& o,
   for (size_t s = 0; s < solids.size(); ++s) solids[s] = meshedSolids[s] || !byEntity[3][s].empty();
   const auto nf = std::count(faces.begin(), faces.end(), true);
   const auto ns = std::count(solids.begin(), solids.end(), true);
-  o << "$Entities\n";
+  w.text("$Entities\n");
   w.value<std::size_t>(model.vertices.size());
   w.value<std::size_t>(model.edges.size());
   w.value<std::size_t>(static_cast<std::size_t>(nf));
@@ -132,13 +132,13 @@ void writeEntities(const OutputMesh& m, MshOut& w, std::ostream& o,
   w.endSection("$EndEntities");
 }
 
-void writeNodes(const OutputMesh& m, MshOut& w, std::ostream& o,
+void writeNodes(const OutputMesh& m, MshOut& w,
                 const std::array<std::vector<std::vector<int>>, 4>& byEntity) {
   std::size_t blocks = 0;
   for (const auto& kind : byEntity)
     for (const auto& list : kind) blocks += !list.empty();
   const std::size_t nn = m.nodes().size();
-  o << "$Nodes\n";
+  w.text("$Nodes\n");
   w.value<std::size_t>(blocks);
   w.value<std::size_t>(nn);
   w.value<std::size_t>(nn ? 1 : 0);
@@ -165,7 +165,7 @@ void writeNodes(const OutputMesh& m, MshOut& w, std::ostream& o,
   w.endSection("$EndNodes");
 }
 
-void writeElements(const OutputMesh& m, MshOut& w, std::ostream& o) {
+void writeElements(const OutputMesh& m, MshOut& w) {
   struct Block {
     Shape shape;
     int dim, entity;
@@ -180,7 +180,7 @@ void writeElements(const OutputMesh& m, MshOut& w, std::ostream& o) {
   for (size_t s = 0; s < tets.size(); ++s)
     if (!tets[s].empty()) blocks.push_back({Shape::Tet, 3, static_cast<int>(s), &tets[s]});
   const std::size_t ne = static_cast<std::size_t>(m.count(Shape::Triangle) + m.count(Shape::Quad) + m.count(Shape::Tet));
-  o << "$Elements\n";
+  w.text("$Elements\n");
   w.value<std::size_t>(blocks.size());
   w.value<std::size_t>(ne);
   w.value<std::size_t>(ne ? 1 : 0);
@@ -214,9 +214,9 @@ void writeMsh41(const OutputMesh& m, const std::string& path, const WriteOptions
   std::ostream& o = file.stream();
   MshOut w(o, opt.binary);
   writeMshHeader(o, "4.1", opt.binary, m);
-  writeEntities(m, w, o, byEntity);
-  writeNodes(m, w, o, byEntity);
-  writeElements(m, w, o);
+  writeEntities(m, w, byEntity);
+  writeNodes(m, w, byEntity);
+  writeElements(m, w);
   file.commit();
 }
 

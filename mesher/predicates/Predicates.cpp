@@ -12,6 +12,15 @@
 // difference has magnitude in [2^−T, 2^T] (T from kExpansionRange), which guarantees it
 // (every intermediate is a multiple of 2^−1074 and far below the overflow threshold).
 //
+// Semi-static stage of the 3D filters (tried before the permanent is computed): the
+// permanent is bounded through the largest difference magnitudes mx, my, mz along each
+// axis: each 2×2 permanent ≤ 2 mx my, each 3×3 one ≤ 6 mx my mz, each lift ≤ S = mx² + my²
+// + mz², so orient3d's permanent ≤ 6 mx my mz and insphere's ≤ 24 mx my mz S (in real
+// arithmetic on the rounded differences). The computed permanent exceeds that by at most
+// (1 + u)^8 (the depth of its evaluation) and the bound's own evaluation loses at most
+// (1 − u)^6: the factors (1 + 32u) below cover both. A certificate by the semi-static
+// bound is therefore one the permanent bound would also give (same range condition).
+//
 // Stage 2 — exact evaluation (exactResolve): expansions when the coordinates are in range;
 // otherwise the coordinates are rescaled by a power of two (which multiplies every
 // determinant by a positive factor, so signs are unchanged) and the filter and expansions
@@ -34,6 +43,16 @@ constexpr double kOrient2dBound = (3.0 + 16.0 * kU) * kU;
 constexpr double kOrient3dBound = (7.0 + 56.0 * kU) * kU;
 constexpr double kIncircleBound = (10.0 + 96.0 * kU) * kU;
 constexpr double kInsphereBound = (16.0 + 224.0 * kU) * kU;
+constexpr double kOrient3dStatic = 6.0 * kOrient3dBound * (1.0 + 32.0 * kU);
+constexpr double kInsphereStatic = 24.0 * kInsphereBound * (1.0 + 32.0 * kU);
+
+/// Largest magnitude of v[axis], v[axis + 3], ... (N / 3 points).
+template <int N>
+inline double axisMax(const double (&v)[N], int axis) {
+  double m = 0.0;
+  for (int i = axis; i < N; i += 3) m = std::fmax(m, std::fabs(v[i]));
+  return m;
+}
 
 /// 2^k for |k| < 1023, at compile time.
 constexpr double pow2(int k) {
@@ -94,12 +113,13 @@ bool orient3dFilter(const double* a, const double* b, const double* c, const dou
   const double cdxady = cdx * ady, adxcdy = adx * cdy;
   const double adxbdy = adx * bdy, bdxady = bdx * ady;
   const double shew = adz * (bdxcdy - cdxbdy) + bdz * (cdxady - adxcdy) + cdz * (adxbdy - bdxady);
+  det = -shew;
+  if (checkRange && !inRange<kExpansionRange[3]>(d)) return false;
+  if (std::fabs(shew) > kOrient3dStatic * (axisMax(d, 0) * axisMax(d, 1) * axisMax(d, 2))) return true;
   const double perm = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * std::fabs(adz) +
                       (std::fabs(cdxady) + std::fabs(adxcdy)) * std::fabs(bdz) +
                       (std::fabs(adxbdy) + std::fabs(bdxady)) * std::fabs(cdz);
-  det = -shew;
-  return std::fabs(shew) > kOrient3dBound * perm &&
-         (!checkRange || inRange<kExpansionRange[3]>(d));
+  return std::fabs(shew) > kOrient3dBound * perm;
 }
 
 bool insphereFilter(const double* a, const double* b, const double* c, const double* dd,
@@ -111,28 +131,30 @@ bool insphereFilter(const double* a, const double* b, const double* c, const dou
   auto X = [&](int i) { return x[3 * i]; };
   auto Y = [&](int i) { return y[3 * i]; };
   auto Z = [&](int i) { return z[3 * i]; };
-  // 2×2 minors on (x, y): value and permanent.
-  double m[4][4], pm[4][4];
+  // 2×2 minors on (x, y).
+  double m[4][4];
   for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j) {
-      const double l = X(i) * Y(j), r = X(j) * Y(i);
-      m[i][j] = l - r;
-      pm[i][j] = std::fabs(l) + std::fabs(r);
-    }
+    for (int j = i + 1; j < 4; ++j) m[i][j] = X(i) * Y(j) - X(j) * Y(i);
   auto C = [&](int i, int j, int k) {
     return (Z(i) * m[j][k] - Z(j) * m[i][k]) + Z(k) * m[i][j];
-  };
-  auto PC = [&](int i, int j, int k) {
-    return (std::fabs(Z(i)) * pm[j][k] + std::fabs(Z(j)) * pm[i][k]) + std::fabs(Z(k)) * pm[i][j];
   };
   double w[4];
   for (int i = 0; i < 4; ++i) w[i] = (X(i) * X(i) + Y(i) * Y(i)) + Z(i) * Z(i);
   // Laplace along the lifted column: det4 = −w_a C_bcd + w_b C_acd − w_c C_abd + w_d C_abc,
   // and insphere = −det4.
   det = (w[0] * C(1, 2, 3) - w[1] * C(0, 2, 3)) + (w[2] * C(0, 1, 3) - w[3] * C(0, 1, 2));
+  if (checkRange && !inRange<kExpansionRange[5]>(d)) return false;
+  const double mx = axisMax(d, 0), my = axisMax(d, 1), mz = axisMax(d, 2);
+  if (std::fabs(det) > kInsphereStatic * ((mx * my * mz) * ((mx * mx + my * my) + mz * mz))) return true;
+  // The permanent: the same expression on absolute values, the 2×2 products rounded as in det.
+  double pm[4][4];
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) pm[i][j] = std::fabs(X(i) * Y(j)) + std::fabs(X(j) * Y(i));
+  auto PC = [&](int i, int j, int k) {
+    return (std::fabs(Z(i)) * pm[j][k] + std::fabs(Z(j)) * pm[i][k]) + std::fabs(Z(k)) * pm[i][j];
+  };
   const double perm = (w[0] * PC(1, 2, 3) + w[1] * PC(0, 2, 3)) + (w[2] * PC(0, 1, 3) + w[3] * PC(0, 1, 2));
-  return std::fabs(det) > kInsphereBound * perm &&
-         (!checkRange || inRange<kExpansionRange[5]>(d));
+  return std::fabs(det) > kInsphereBound * perm;
 }
 
 // ---- stage 2 ----

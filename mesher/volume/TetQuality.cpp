@@ -77,6 +77,7 @@ void TetQualitySummary::merge(const TetQualitySummary& o) {
   refereeMinDihedral = std::min(refereeMinDihedral, o.refereeMinDihedral);
   etaM.merge(o.etaM);
   muM.merge(o.muM);
+  muMUser.merge(o.muMUser);
 }
 
 namespace {
@@ -104,7 +105,8 @@ void cosines(const Vec3 n[4], double& trueMin, double& trueMax, double& refereeM
 // end. The metric of a tet is the mean of its vertices' tensors and that of an edge the mean
 // of its ends' (as the refinement's edge check and the improvement measure them): one
 // control-space query per vertex instead of one per tet and one per edge.
-void accumulateTetQuality(const SolidTetMesh& s, const ControlSpace3d* cs, TetQualitySummary& out) {
+void accumulateTetQuality(const SolidTetMesh& s, const ControlSpace3d* cs, TetQualitySummary& out,
+                          double lengthFactor) {
   const del3d::TetMesh& mesh = s.mesh;
   const double cosSliver = std::cos(kSliverDihedralDeg / kRadToDeg);
   double cmin = 1, cmax = -1, refereeCmax = -1;
@@ -172,11 +174,11 @@ void accumulateTetQuality(const SolidTetMesh& s, const ControlSpace3d* cs, TetQu
         seen[w] = v;
         const Vec3 dq = mesh.point(del3d::VertexId(w)) - p;
         const double sv = vt->scale(del3d::VertexId(v)), sw = vt->scale(del3d::VertexId(w));
-        if (sv > 0 && sw > 0) {
-          out.muM.add(0.5 * (sv + sw) * dq.norm());
-        } else {
-          out.muM.add((0.5 * (vt->at(del3d::VertexId(v)) + vt->at(del3d::VertexId(w))) * dq).norm());
-        }
+        const double mu = sv > 0 && sw > 0
+                              ? 0.5 * (sv + sw) * dq.norm()
+                              : (0.5 * (vt->at(del3d::VertexId(v)) + vt->at(del3d::VertexId(w))) * dq).norm();
+        out.muM.add(mu);
+        out.muMUser.add(lengthFactor * mu);
       }
     }
   }

@@ -51,6 +51,9 @@ struct TetQualitySummary {
   double refereeMinDihedral = 180;  ///< meshq.py's dihedral_min (see above)
   QualityStats etaM;                ///< η_M per tet (only with a control space)
   QualityStats muM;                 ///< μ_M per unique edge (only with a control space)
+  /// μ_M per unique edge in the user's metric (the control space's lengths times the
+  /// length factor of accumulateTetQuality: M_v = M / f of VolumeControlSpace.h gives f μ_M).
+  QualityStats muMUser;
 
   void merge(const TetQualitySummary& o);
 };
@@ -59,7 +62,9 @@ struct TetQualitySummary {
 inline constexpr double kSliverDihedralDeg = 5.0;
 
 /// Adds the live tets of s (and, with cs, their η_M and the μ_M of their unique edges)
-/// to `out`.
-void accumulateTetQuality(const SolidTetMesh& s, const ControlSpace3d* cs, TetQualitySummary& out);
+/// to `out`. cs is the metric the tets were made in; lengthFactor converts its lengths to
+/// the user's metric (f of VolumeMetricSpace, 1 when cs is the user's metric): muMUser.
+void accumulateTetQuality(const SolidTetMesh& s, const ControlSpace3d* cs, TetQualitySummary& out,
+                          double lengthFactor = 1.0);
 
 }  // namespace aniso

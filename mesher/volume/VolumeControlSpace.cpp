@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "mesher/control/CSAnalytic3d.h"
@@ -68,6 +69,12 @@ bool overlaps(const Box3& a, const Box3& b) {
 }
 
 }  // namespace
+
+VolumeMetricSpace::VolumeMetricSpace(std::shared_ptr<const ControlSpace3d> user, double factor)
+    : user_(std::move(user)), factor_(factor), inverse_(1.0 / factor) {
+  if (!user_) throw MeshingError("VolumeMetricSpace: no control space");
+  if (!(factor > 0) || !std::isfinite(factor)) throw MeshingError("VolumeMetricSpace: the length factor must be > 0");
+}
 
 std::shared_ptr<ControlSpace3d> buildVolumeControlSpace(const Model& model, const SurfaceMesh& surface, int solid,
                                                         const SizingParameters& sizing, const UserSizing* user) {

@@ -153,10 +153,12 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
   p.thin = findThinBoundary(bt.tets, b.triangles, b.triangleFace);
   if (in.stopWhenThin && !p.thin.empty()) return p;
 
-  std::shared_ptr<ControlSpace3d> cs;
+  std::shared_ptr<VolumeMetricSpace> cs;
   if (in.refine || in.improve || in.quality) {
     t0 = Clock::now();
-    cs = buildVolumeControlSpace(*in.model, *in.surface, solid, in.options.sizing, in.user);
+    // The tetrahedra are made and measured in M_v (VolumeControlSpace.h: edges f·h).
+    cs = std::make_shared<VolumeMetricSpace>(
+        buildVolumeControlSpace(*in.model, *in.surface, solid, in.options.sizing, in.user));
     p.outcome.times.emplace_back("volume control space", since(t0));
   }
   if (in.refine && cs) {
@@ -181,7 +183,7 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
   }
   if (in.quality) {
     t0 = Clock::now();
-    accumulateTetQuality(bt.tets, cs.get(), p.outcome.quality);
+    accumulateTetQuality(bt.tets, cs.get(), p.outcome.quality, cs ? cs->factor() : 1.0);
     p.outcome.times.emplace_back("volume quality", since(t0));
   }
   extract(bt.tets, p);

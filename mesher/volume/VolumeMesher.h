@@ -8,7 +8,8 @@
 //   3 boundary recovery (BoundaryRecovery.h, 5.4) and removal of the outside
 //     (CarveSolid.h) — the SolidTetMesh invariants hold from here on;
 //   4 refinement (VolumeRefinement.h, 5.5) and improvement (VolumeImprovement.h, 5.6)
-//     in the solid's 3D control space (VolumeControlSpace.h), then the quality measures
+//     in the solid's 3D control space seen as M_v (VolumeControlSpace.h: tetrahedra of
+//     edge length kVolumeLengthFactor times the size), then the quality measures
 //     (TetQuality.h);
 // then the assembly into one VolumeMesh: the surface mesh's nodes first with the same
 // indices (surface nodes are never moved, so solids sharing a face share its nodes and

@@ -3,9 +3,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
+#include <set>
+#include <utility>
 
 #include "mesher/control/CSAnalytic3d.h"
+#include "mesher/core/Error.h"
 #include "mesher/volume/TetQuality.h"
+#include "mesher/volume/VolumeControlSpace.h"
 #include "mesher/volume/VolumeRefinement.h"
 #include "volume_refine_fixture.h"
 
@@ -180,3 +185,61 @@ TEST(VolumeRefine, ProgressReportsPredictions) {
 }
 
 }  // namespace
+
+// The sizing convention of VolumeControlSpace.h: the tets are made in M_v = M / f, so their
+// interior edges are about f times the size the boundary was made for.
+double meanInteriorEdge(const SolidTetMesh& s) {
+  std::set<std::pair<std::uint32_t, std::uint32_t>> edges;
+  for (std::uint32_t k = 0; k < s.mesh.tetSlots(); ++k) {
+    const del3d::TetId t(k);
+    if (!s.mesh.isAlive(t)) continue;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) {
+        const del3d::VertexId a = s.mesh.vertex(t, i), b = s.mesh.vertex(t, j);
+        if (!s.isFixed(a) && !s.isFixed(b)) edges.insert(std::minmax(a.index, b.index));
+      }
+  }
+  double sum = 0;
+  for (const auto& [a, b] : edges)
+    sum += (s.mesh.point(del3d::VertexId(a)) - s.mesh.point(del3d::VertexId(b))).norm();
+  return edges.empty() ? 0 : sum / static_cast<double>(edges.size());
+}
+
+TEST(VolumeRefine, VolumeMetricSpaceScalesEveryLength) {
+  const auto user = std::make_shared<CSAnalytic3d>(
+      unitBox(), [](const Vec3& x) { return Metric3d::fromDirections(Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ(), 0.1, 0.2 + x.y(), 0.3); });
+  const VolumeMetricSpace mv(user);
+  EXPECT_EQ(mv.factor(), kVolumeLengthFactor);
+  const Vec3 x(0.3, 0.6, 0.2), d(1, -2, 0.5);
+  EXPECT_NEAR(mv.getMetric(x).length(d) * kVolumeLengthFactor, user->getMetric(x).length(d), 1e-12);
+  EXPECT_EQ(mv.bounds().lo, user->bounds().lo);
+  EXPECT_THROW(VolumeMetricSpace(user, 0.0), MeshingError);
+  EXPECT_THROW(VolumeMetricSpace(nullptr), MeshingError);
+}
+
+TEST(VolumeRefine, RefinementHonoursTheVolumeLengthFactor) {
+  const double h = 0.1;
+  std::set<Triple> boundary;
+  SolidTetMesh plain = cubeSolid(10, boundary), scaled = cubeSolid(10, boundary);
+  const auto user = std::make_shared<CSAnalytic3d>(uniform(h));
+  const VolumeMetricSpace mv(user);
+  refineVolume(plain, *user);
+  refineVolume(scaled, mv);
+  ASSERT_TRUE(checkSolid(scaled, boundary).empty()) << joined(checkSolid(scaled, boundary));
+  EXPECT_NEAR(meshVolume(scaled.mesh), 1.0, 1e-12);
+  // Interior edges: unit long in M_v (f h), unit long in M without the factor.
+  const double inner = meanInteriorEdge(scaled) / (kVolumeLengthFactor * h);
+  EXPECT_GT(inner, 0.9);
+  EXPECT_LT(inner, 1.1);
+  EXPECT_GT(meanInteriorEdge(plain) / h, 0.9);
+  EXPECT_LT(meanInteriorEdge(plain) / h, 1.1);
+  // About f³ times fewer tets (the boundary layer keeps some more).
+  const double ratio = static_cast<double>(plain.mesh.numTets()) / static_cast<double>(scaled.mesh.numTets());
+  EXPECT_GT(ratio, 0.6 * std::pow(kVolumeLengthFactor, 3));
+  EXPECT_LT(ratio, 1.1 * std::pow(kVolumeLengthFactor, 3));
+  // The report's μ_M in the user's metric is f times that in M_v.
+  TetQualitySummary q;
+  accumulateTetQuality(scaled, &mv, q, mv.factor());
+  EXPECT_NEAR(q.muMUser.mean(), kVolumeLengthFactor * q.muM.mean(), 1e-12);
+  EXPECT_NEAR(q.muMUser.max(), kVolumeLengthFactor * q.muM.max(), 1e-12);
+}

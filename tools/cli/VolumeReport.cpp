@@ -1,5 +1,7 @@
 #include "tools/cli/VolumeReport.h"
 
+#include "mesher/volume/VolumeControlSpace.h"
+
 namespace aniso::cli {
 
 namespace {
@@ -33,7 +35,8 @@ nlohmann::ordered_json qualityJson(const TetQualitySummary& q) {
   j["tets_below_5deg"] = q.belowDihedral;
   j["inverted"] = q.inverted;
   j["eta_M"] = statsJson(q.etaM);
-  j["mu_M"] = statsJson(q.muM);
+  j["mu_M"] = statsJson(q.muM);            // in M_v, the metric of the tets (VolumeControlSpace.h)
+  j["mu_M_user"] = statsJson(q.muMUser);  // in the user's metric M = f M_v
   return j;
 }
 
@@ -50,6 +53,7 @@ void fillVolumeReport(const Model& model, const VolumeMeshResult& vr, io::Report
   report.extra["recovery"]["surface_nodes_merged"] = vr.surfaceNodesMerged;
   report.extra["recovery"]["surface_caps_flipped"] = vr.surfaceCapsFlipped;
   report.quality["volume"] = qualityJson(vr.quality);
+  report.quality["volume"]["length_factor"] = kVolumeLengthFactor;
   report.extra["volume"] = vr.quality.volume;
   nlohmann::ordered_json solids = nlohmann::ordered_json::array();
   for (std::size_t s = 0; s < vr.solids.size(); ++s) {
