@@ -66,26 +66,24 @@ void sortRange(std::vector<std::uint32_t>& order, std::size_t begin, std::size_t
 }  // namespace
 
 // Skilling, "Programming the Hilbert curve" (AIP Conf. Proc. 707, 2004): axes to the
-// transposed Hilbert index, then bit interleaving.
+// transposed Hilbert index, then bit interleaving. Written without data-dependent branches
+// (each bit test is a coin flip for the branch predictor): where Skilling's loop does
+// "if (X[i] & q) X[0] ^= p; else swap the low bits of X[0] and X[i]", a mask selects.
 std::uint64_t hilbertIndex(std::uint32_t x, std::uint32_t y, std::uint32_t z, int bits) {
   std::uint32_t X[3] = {x, y, z};
   const std::uint32_t m = 1u << (bits - 1);
   for (std::uint32_t q = m; q > 1; q >>= 1) {
     const std::uint32_t p = q - 1;
     for (int i = 0; i < 3; ++i) {
-      if (X[i] & q) {
-        X[0] ^= p;
-      } else {
-        const std::uint32_t t = (X[0] ^ X[i]) & p;
-        X[0] ^= t;
-        X[i] ^= t;
-      }
+      const std::uint32_t set = 0u - ((X[i] & q) != 0 ? 1u : 0u);  // all ones when the bit is set
+      const std::uint32_t t = (X[0] ^ X[i]) & p & ~set;          // 0 for i = 0
+      X[0] ^= (p & set) | t;
+      X[i] ^= t;
     }
   }
   for (int i = 1; i < 3; ++i) X[i] ^= X[i - 1];
   std::uint32_t t = 0;
-  for (std::uint32_t q = m; q > 1; q >>= 1)
-    if (X[2] & q) t ^= q - 1;
+  for (std::uint32_t q = m; q > 1; q >>= 1) t ^= (q - 1) & (0u - ((X[2] & q) != 0 ? 1u : 0u));
   for (int i = 0; i < 3; ++i) X[i] ^= t;
   std::uint64_t key = 0;
   for (int b = bits - 1; b >= 0; --b)

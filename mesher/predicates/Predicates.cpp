@@ -30,8 +30,9 @@
 // rescaled input when rescaling happened (the contract promises only the sign).
 #include "mesher/predicates/Predicates.h"
 
-#include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include "mesher/predicates/PredicatesExact.h"
 
@@ -68,6 +69,17 @@ inline bool inRange1(double v) {
 template <int T, class... V>
 inline bool inRangeAll(V... v) {
   return (inRange1<T>(v) & ...);
+}
+
+/// The bits of the largest magnitude of four finite values: the bit patterns of
+/// non-negative doubles order as the values do, and integer maxima compile to conditional
+/// moves (floating-point ones compiled to branches here, which mispredict).
+inline std::uint64_t absMaxBits(double a, double b, double c, double d) {
+  constexpr std::uint64_t kMagnitude = ~(std::uint64_t{1} << 63);
+  const std::uint64_t x = std::bit_cast<std::uint64_t>(a) & kMagnitude, y = std::bit_cast<std::uint64_t>(b) & kMagnitude;
+  const std::uint64_t z = std::bit_cast<std::uint64_t>(c) & kMagnitude, w = std::bit_cast<std::uint64_t>(d) & kMagnitude;
+  const std::uint64_t p = x > y ? x : y, q = z > w ? z : w;
+  return p > q ? p : q;
 }
 
 /// Every value is zero or has magnitude in [2^−T, 2^T]. Branch-free over the array.
@@ -153,9 +165,9 @@ bool insphereFilter(const double* a, const double* b, const double* c, const dou
   // and insphere = −det4.
   det = (wa * c123 - wb * c023) + (wc * c013 - wd * c012);
   if (checkRange && !inRangeAll<kExpansionRange[5]>(ax, ay, az, bx, by, bz, cx, cy, cz, dx, dy, dz)) return false;
-  const double mx = std::max(std::max(std::fabs(ax), std::fabs(bx)), std::max(std::fabs(cx), std::fabs(dx)));
-  const double my = std::max(std::max(std::fabs(ay), std::fabs(by)), std::max(std::fabs(cy), std::fabs(dy)));
-  const double mz = std::max(std::max(std::fabs(az), std::fabs(bz)), std::max(std::fabs(cz), std::fabs(dz)));
+  const std::uint64_t mxb = absMaxBits(ax, bx, cx, dx), myb = absMaxBits(ay, by, cy, dy);
+  const std::uint64_t mzb = absMaxBits(az, bz, cz, dz);
+  const double mx = std::bit_cast<double>(mxb), my = std::bit_cast<double>(myb), mz = std::bit_cast<double>(mzb);
   if (std::fabs(det) > kInsphereStatic * ((mx * my * mz) * ((mx * mx + my * my) + mz * mz))) return true;
   // The permanent: the same expression on absolute values.
   const double p01 = std::fabs(axby) + std::fabs(bxay), p02 = std::fabs(axcy) + std::fabs(cxay);

@@ -22,7 +22,7 @@ void refereeNormals(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, 
   n[1] = (c - a).cross(d - a);
   n[2] = (b - a).cross(d - a);
   n[3] = (b - a).cross(c - a);
-  for (int i = 0; i < 4; ++i) n[i] /= std::max(n[i].norm(), 1e-300);
+  for (int i = 0; i < 4; ++i) n[i] *= 1.0 / std::max(n[i].norm(), 1e-300);
 }
 
 // Largest and smallest cosine of the 6 dihedral angles: −n_i·n_j with outward normals
@@ -106,7 +106,7 @@ void cosines(const Vec3 n[4], double& trueMin, double& trueMax, double& refereeM
 // of its ends' (as the refinement's edge check and the improvement measure them): one
 // control-space query per vertex instead of one per tet and one per edge.
 void accumulateTetQuality(const SolidTetMesh& s, const ControlSpace3d* cs, TetQualitySummary& out,
-                          double lengthFactor) {
+                          const VolumeMetricSpace* volume) {
   const del3d::TetMesh& mesh = s.mesh;
   const double cosSliver = std::cos(kSliverDihedralDeg / kRadToDeg);
   double cmin = 1, cmax = -1, refereeCmax = -1;
@@ -163,6 +163,9 @@ void accumulateTetQuality(const SolidTetMesh& s, const ControlSpace3d* cs, TetQu
       if (mesh.isAlive(del3d::TetId(k)))
         for (int i = 0; i < 4; ++i) incident[fill[mesh.tetVertices(del3d::TetId(k))[i]]++] = k;
   }
+  std::vector<double> toUser(volume ? nv : 0, 1.0);  // per vertex: M = toUser · M_v
+  for (std::size_t v = 0; v < toUser.size(); ++v)
+    toUser[v] = volume->lengthFactorAt(mesh.point(del3d::VertexId(static_cast<std::uint32_t>(v))));
   std::vector<std::uint32_t> seen(nv, del3d::kNone);
   for (std::uint32_t v = 0; v < nv; ++v) {
     const Vec3 p = mesh.point(del3d::VertexId(v));
@@ -174,11 +177,16 @@ void accumulateTetQuality(const SolidTetMesh& s, const ControlSpace3d* cs, TetQu
         seen[w] = v;
         const Vec3 dq = mesh.point(del3d::VertexId(w)) - p;
         const double sv = vt->scale(del3d::VertexId(v)), sw = vt->scale(del3d::VertexId(w));
-        const double mu = sv > 0 && sw > 0
-                              ? 0.5 * (sv + sw) * dq.norm()
-                              : (0.5 * (vt->at(del3d::VertexId(v)) + vt->at(del3d::VertexId(w))) * dq).norm();
-        out.muM.add(mu);
-        out.muMUser.add(lengthFactor * mu);
+        const double fv = volume ? toUser[v] : 1.0, fw = volume ? toUser[w] : 1.0;
+        if (sv > 0 && sw > 0) {
+          const double l = dq.norm();
+          out.muM.add(0.5 * (sv + sw) * l);
+          out.muMUser.add(0.5 * (fv * sv + fw * sw) * l);
+        } else {
+          const Mat3 tv = vt->at(del3d::VertexId(v)), tw = vt->at(del3d::VertexId(w));
+          out.muM.add((0.5 * (tv + tw) * dq).norm());
+          out.muMUser.add((0.5 * (fv * tv + fw * tw) * dq).norm());
+        }
       }
     }
   }

@@ -23,6 +23,7 @@
 #include "mesher/core/Types.h"
 #include "mesher/metric/QualityStats.h"
 #include "mesher/volume/SolidTetMesh.h"
+#include "mesher/volume/VolumeControlSpace.h"
 
 namespace aniso {
 
@@ -51,8 +52,7 @@ struct TetQualitySummary {
   double refereeMinDihedral = 180;  ///< meshq.py's dihedral_min (see above)
   QualityStats etaM;                ///< η_M per tet (only with a control space)
   QualityStats muM;                 ///< μ_M per unique edge (only with a control space)
-  /// μ_M per unique edge in the user's metric (the control space's lengths times the
-  /// length factor of accumulateTetQuality: M_v = M / f of VolumeControlSpace.h gives f μ_M).
+  /// μ_M per unique edge in the user's metric M (muM is in M_v, VolumeControlSpace.h).
   QualityStats muMUser;
 
   void merge(const TetQualitySummary& o);
@@ -62,9 +62,11 @@ struct TetQualitySummary {
 inline constexpr double kSliverDihedralDeg = 5.0;
 
 /// Adds the live tets of s (and, with cs, their η_M and the μ_M of their unique edges)
-/// to `out`. cs is the metric the tets were made in; lengthFactor converts its lengths to
-/// the user's metric (f of VolumeMetricSpace, 1 when cs is the user's metric): muMUser.
+/// to `out`. cs is the metric the tets were made in; with volume (M_v of
+/// VolumeControlSpace.h, usually cs itself) muMUser measures the edges in the user's metric
+/// (each vertex's tensor times volume->lengthFactorAt, the edge in the mean of its ends'),
+/// without it muMUser = muM.
 void accumulateTetQuality(const SolidTetMesh& s, const ControlSpace3d* cs, TetQualitySummary& out,
-                          double lengthFactor = 1.0);
+                          const VolumeMetricSpace* volume = nullptr);
 
 }  // namespace aniso

@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -70,10 +71,30 @@ bool overlaps(const Box3& a, const Box3& b) {
 
 }  // namespace
 
-VolumeMetricSpace::VolumeMetricSpace(std::shared_ptr<const ControlSpace3d> user, double factor)
+VolumeMetricSpace::VolumeMetricSpace(std::shared_ptr<const ControlSpace3d> user, std::span<const Vec3> boundary,
+                                     double factor)
     : user_(std::move(user)), factor_(factor), inverse_(1.0 / factor) {
   if (!user_) throw MeshingError("VolumeMetricSpace: no control space");
   if (!(factor > 0) || !std::isfinite(factor)) throw MeshingError("VolumeMetricSpace: the length factor must be > 0");
+  boundary_.reserve(boundary.size());
+  for (const Vec3& x : boundary) boundary_.insert(key(x));
+}
+
+VolumeMetricSpace::Key VolumeMetricSpace::key(const Vec3& x) {
+  // +0.0 for -0.0: the same point.
+  return {std::bit_cast<std::uint64_t>(x.x() + 0.0), std::bit_cast<std::uint64_t>(x.y() + 0.0),
+          std::bit_cast<std::uint64_t>(x.z() + 0.0)};
+}
+
+std::size_t VolumeMetricSpace::KeyHash::operator()(const Key& k) const {
+  std::uint64_t h = k[0] * 0x9E3779B97F4A7C15ull;
+  h = (h ^ (h >> 29) ^ k[1]) * 0xBF58476D1CE4E5B9ull;
+  h = (h ^ (h >> 31) ^ k[2]) * 0x94D049BB133111EBull;
+  return static_cast<std::size_t>(h ^ (h >> 32));
+}
+
+bool VolumeMetricSpace::onBoundary(const Vec3& x) const {
+  return !boundary_.empty() && boundary_.count(key(x)) > 0;
 }
 
 std::shared_ptr<ControlSpace3d> buildVolumeControlSpace(const Model& model, const SurfaceMesh& surface, int solid,

@@ -156,9 +156,13 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
   std::shared_ptr<VolumeMetricSpace> cs;
   if (in.refine || in.improve || in.quality) {
     t0 = Clock::now();
-    // The tetrahedra are made and measured in M_v (VolumeControlSpace.h: edges f·h).
+    // The tetrahedra are made and measured in M_v (VolumeControlSpace.h: M at the surface
+    // nodes, edges f·h inside).
+    std::vector<Vec3> boundaryNodes;
+    boundaryNodes.reserve(b.nodes.size());
+    for (const int n : b.nodes) boundaryNodes.push_back(in.surface->nodes[n]);
     cs = std::make_shared<VolumeMetricSpace>(
-        buildVolumeControlSpace(*in.model, *in.surface, solid, in.options.sizing, in.user));
+        buildVolumeControlSpace(*in.model, *in.surface, solid, in.options.sizing, in.user), boundaryNodes);
     p.outcome.times.emplace_back("volume control space", since(t0));
   }
   if (in.refine && cs) {
@@ -183,7 +187,7 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
   }
   if (in.quality) {
     t0 = Clock::now();
-    accumulateTetQuality(bt.tets, cs.get(), p.outcome.quality, cs ? cs->factor() : 1.0);
+    accumulateTetQuality(bt.tets, cs.get(), p.outcome.quality, cs.get());
     p.outcome.times.emplace_back("volume quality", since(t0));
   }
   extract(bt.tets, p);

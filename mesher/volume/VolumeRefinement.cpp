@@ -259,7 +259,7 @@ void Refiner::process(const refine3d::RefineQueue::Entry& e) {
 
 VolumeRefineStats Refiner::run() {
   st_.initialTets = mesh_.numTets();
-  st_.predictedInitial = predictTetCount(s_, cs_);
+  st_.predictedInitial = refine3d::predictTetCount(mesh_, vt_);
   // Guard against a refinement that would not end (e.g. a metric far finer than asked for):
   // about budgetFactor times the predicted final number of tets, in vertices.
   const double guard =
@@ -302,21 +302,32 @@ VolumeRefineStats Refiner::run() {
 
 }  // namespace
 
-double refinementQuality(const Metric3d& m, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  return refine3d::metricSphereQuality(m.matrix(), a, b, c, d);
-}
+namespace refine3d {
 
-double predictTetCount(const SolidTetMesh& s, const ControlSpace3d& cs) {
-  const del3d::TetMesh& mesh = s.mesh;
+double predictTetCount(const del3d::TetMesh& mesh, const VertexTensors& vt) {
   double sum = 0;
   for (std::uint32_t k = 0; k < mesh.tetSlots(); ++k) {
     const TetId t(k);
     if (!mesh.isAlive(t)) continue;
     const TetPoints tp = pointsOf(mesh, t);
     const double vol = (tp.p[1] - tp.p[0]).cross(tp.p[2] - tp.p[0]).dot(tp.p[3] - tp.p[0]) / 6.0;
-    sum += std::abs(vol) * cs.getMetric(tp.centroid()).determinant();
+    const std::uint32_t* tv = mesh.tetVertices(t);
+    double scale;
+    const double det = vt.tetScale(tv, scale) ? scale * scale * scale : vt.tetMetric(tv).determinant();
+    sum += std::abs(vol) * det;
   }
   return sum / kIdealVolume;
+}
+
+}  // namespace refine3d
+
+double refinementQuality(const Metric3d& m, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  return refine3d::metricSphereQuality(m.matrix(), a, b, c, d);
+}
+
+double predictTetCount(const SolidTetMesh& s, const ControlSpace3d& cs) {
+  const refine3d::VertexTensors vt(s.mesh, cs);
+  return predictTetCount(s.mesh, vt);
 }
 
 double predictTetCount(std::size_t currentTets, double worstQuality, double qualityThreshold) {

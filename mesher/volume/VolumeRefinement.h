@@ -108,7 +108,9 @@ void renumberSpatially(SolidTetMesh& s, std::size_t firstVertex);
 double refinementQuality(const Metric3d& m, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 
 /// The rough prediction of the final number of tets, eq. 6.2: Σ_K V_M(K) / V_M(K_I), with
-/// V_M(K) = |K| det M(centroid) and V_M(K_I) = 1/(6√2) the volume of the unit regular tet.
+/// V_M(K) = |K| det M_K (M_K the mean of the vertices' tensors, as for q(K): one
+/// control-space query per vertex, not one per tet) and V_M(K_I) = 1/(6√2) the volume of
+/// the unit regular tet.
 double predictTetCount(const SolidTetMesh& s, const ControlSpace3d& cs);
 
 /// The running prediction of eq. 6.1: NT_c q_t / q(K_0) (NT_c when q(K_0) ≥ q_t).

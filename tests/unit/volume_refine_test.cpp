@@ -6,6 +6,7 @@
 #include <memory>
 #include <set>
 #include <utility>
+#include <vector>
 
 #include "mesher/control/CSAnalytic3d.h"
 #include "mesher/core/Error.h"
@@ -205,41 +206,67 @@ double meanInteriorEdge(const SolidTetMesh& s) {
   return edges.empty() ? 0 : sum / static_cast<double>(edges.size());
 }
 
-TEST(VolumeRefine, VolumeMetricSpaceScalesEveryLength) {
-  const auto user = std::make_shared<CSAnalytic3d>(
-      unitBox(), [](const Vec3& x) { return Metric3d::fromDirections(Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ(), 0.1, 0.2 + x.y(), 0.3); });
-  const VolumeMetricSpace mv(user);
+TEST(VolumeRefine, VolumeMetricSpaceScalesEveryLengthButAtTheBoundary) {
+  const auto user = std::make_shared<CSAnalytic3d>(unitBox(), [](const Vec3& x) {
+    return Metric3d::fromDirections(Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ(), 0.1, 0.2 + x.y(), 0.3);
+  });
+  const Vec3 x(0.3, 0.6, 0.2), d(1, -2, 0.5), node(0.5, 0.25, 0.0);
+  const std::vector<Vec3> boundary{node, Vec3(0, 0, -0.0)};
+  const VolumeMetricSpace mv(user, boundary);
   EXPECT_EQ(mv.factor(), kVolumeLengthFactor);
-  const Vec3 x(0.3, 0.6, 0.2), d(1, -2, 0.5);
   EXPECT_NEAR(mv.getMetric(x).length(d) * kVolumeLengthFactor, user->getMetric(x).length(d), 1e-12);
+  EXPECT_EQ(mv.lengthFactorAt(x), kVolumeLengthFactor);
+  // M itself at a surface node (exact coordinates; -0 is 0), M / f a hair away
+  EXPECT_EQ(mv.getMetric(node).matrix(), user->getMetric(node).matrix());
+  EXPECT_TRUE(mv.onBoundary(Vec3(0, -0.0, 0)));
+  EXPECT_EQ(mv.lengthFactorAt(node), 1.0);
+  EXPECT_FALSE(mv.onBoundary(Vec3(0.5, std::nextafter(0.25, 1.0), 0.0)));
   EXPECT_EQ(mv.bounds().lo, user->bounds().lo);
-  EXPECT_THROW(VolumeMetricSpace(user, 0.0), MeshingError);
+  EXPECT_THROW(VolumeMetricSpace(user, {}, 0.0), MeshingError);
   EXPECT_THROW(VolumeMetricSpace(nullptr), MeshingError);
+}
+
+std::vector<Vec3> fixedPoints(const SolidTetMesh& s) {
+  std::vector<Vec3> out;
+  for (std::uint32_t v = 0; v < s.mesh.numVertices(); ++v)
+    if (s.isFixed(del3d::VertexId(v))) out.push_back(s.mesh.point(del3d::VertexId(v)));
+  return out;
 }
 
 TEST(VolumeRefine, RefinementHonoursTheVolumeLengthFactor) {
   const double h = 0.1;
   std::set<Triple> boundary;
-  SolidTetMesh plain = cubeSolid(10, boundary), scaled = cubeSolid(10, boundary);
+  SolidTetMesh plain = cubeSolid(10, boundary), uniformF = cubeSolid(10, boundary), graded = cubeSolid(10, boundary);
   const auto user = std::make_shared<CSAnalytic3d>(uniform(h));
-  const VolumeMetricSpace mv(user);
+  const VolumeMetricSpace scaled(user), mv(user, fixedPoints(graded));
   refineVolume(plain, *user);
-  refineVolume(scaled, mv);
-  ASSERT_TRUE(checkSolid(scaled, boundary).empty()) << joined(checkSolid(scaled, boundary));
-  EXPECT_NEAR(meshVolume(scaled.mesh), 1.0, 1e-12);
-  // Interior edges: unit long in M_v (f h), unit long in M without the factor.
-  const double inner = meanInteriorEdge(scaled) / (kVolumeLengthFactor * h);
+  refineVolume(uniformF, scaled);
+  refineVolume(graded, mv);
+  ASSERT_TRUE(checkSolid(graded, boundary).empty()) << joined(checkSolid(graded, boundary));
+  EXPECT_NEAR(meshVolume(graded.mesh), 1.0, 1e-12);
+  // Edges between inner vertices: about unit long in M_v (f h), unit long in M without f.
+  const double inner = meanInteriorEdge(uniformF) / (kVolumeLengthFactor * h);
   EXPECT_GT(inner, 0.9);
   EXPECT_LT(inner, 1.1);
   EXPECT_GT(meanInteriorEdge(plain) / h, 0.9);
   EXPECT_LT(meanInteriorEdge(plain) / h, 1.1);
-  // About f³ times fewer tets (the boundary layer keeps some more).
-  const double ratio = static_cast<double>(plain.mesh.numTets()) / static_cast<double>(scaled.mesh.numTets());
-  EXPECT_GT(ratio, 0.6 * std::pow(kVolumeLengthFactor, 3));
+  // With M at the boundary nodes the first layer grades from h: shorter on average, but
+  // well above h.
+  const double gradedInner = meanInteriorEdge(graded) / h;
+  EXPECT_GT(gradedInner, 0.5 * (1 + kVolumeLengthFactor));
+  EXPECT_LT(gradedInner, 1.1 * kVolumeLengthFactor);
+  // Fewer tets, by less than f³ (the boundary layer keeps some more).
+  const double ratio = static_cast<double>(plain.mesh.numTets()) / static_cast<double>(graded.mesh.numTets());
+  EXPECT_GT(ratio, 0.4 * std::pow(kVolumeLengthFactor, 3));
   EXPECT_LT(ratio, 1.1 * std::pow(kVolumeLengthFactor, 3));
-  // The report's μ_M in the user's metric is f times that in M_v.
-  TetQualitySummary q;
-  accumulateTetQuality(scaled, &mv, q, mv.factor());
+  // The report's μ_M in the user's metric: f times that in M_v for M / f everywhere; with the
+  // boundary at M, between the two.
+  TetQualitySummary q, g;
+  accumulateTetQuality(uniformF, &scaled, q, &scaled);
   EXPECT_NEAR(q.muMUser.mean(), kVolumeLengthFactor * q.muM.mean(), 1e-12);
   EXPECT_NEAR(q.muMUser.max(), kVolumeLengthFactor * q.muM.max(), 1e-12);
+  accumulateTetQuality(graded, &mv, g, &mv);
+  EXPECT_GT(g.muMUser.mean(), g.muM.mean());
+  EXPECT_LT(g.muMUser.mean(), kVolumeLengthFactor * g.muM.mean());
+  EXPECT_GT(g.etaM.mean(), 0.75);
 }

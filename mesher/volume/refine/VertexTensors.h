@@ -54,4 +54,8 @@ class VertexTensors {
   std::vector<Mat3> aniso_;
 };
 
+/// Eq. 6.2 over the live tets of `mesh` with M_K the mean of the vertices' tensors in vt
+/// (predictTetCount of VolumeRefinement.h; defined there).
+double predictTetCount(const del3d::TetMesh& mesh, const VertexTensors& vt);
+
 }  // namespace aniso::refine3d
