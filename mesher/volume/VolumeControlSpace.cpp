@@ -71,6 +71,12 @@ bool overlaps(const Box3& a, const Box3& b) {
 
 }  // namespace
 
+double volumeGradation(double gamma, double factor) {
+  if (!(gamma > 1) || !(factor > 0)) return gamma;
+  const double slope = 2 * (gamma - 1) / (gamma + 1) / factor;  // eq. 2.27's a_max, in M_v
+  return (2 + slope) / (2 - slope);
+}
+
 VolumeMetricSpace::VolumeMetricSpace(std::shared_ptr<const ControlSpace3d> user, std::span<const Vec3> boundary,
                                      double factor)
     : user_(std::move(user)), factor_(factor), inverse_(1.0 / factor) {
@@ -148,7 +154,7 @@ std::shared_ptr<ControlSpace3d> buildVolumeControlSpace(const Model& model, cons
     m = limitAnisotropy(m, gammaA);
     return true;
   });
-  cs->smoothGradation(sizing.gradation);
+  cs->smoothGradation(volumeGradation(sizing.gradation, kVolumeLengthFactor));
   return cs;
 }
 

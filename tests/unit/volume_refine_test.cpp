@@ -270,3 +270,11 @@ TEST(VolumeRefine, RefinementHonoursTheVolumeLengthFactor) {
   EXPECT_LT(g.muMUser.mean(), kVolumeLengthFactor * g.muM.mean());
   EXPECT_GT(g.etaM.mean(), 0.75);
 }
+
+TEST(VolumeRefine, VolumeGradationHoldsInTheVolumeMetric) {
+  // eq. 2.27's slope a = 2 (γ − 1) / (γ + 1): γ 4 gives 1.2, over f 1.4 0.857..., γ 2.5
+  EXPECT_NEAR(volumeGradation(4.0, 1.4), 2.5, 1e-12);
+  EXPECT_NEAR(volumeGradation(4.0, 1.0), 4.0, 1e-12);
+  EXPECT_EQ(volumeGradation(1.0, 1.4), 1.0);
+  EXPECT_LT(volumeGradation(4.0, 2.0), volumeGradation(4.0, 1.5));
+}
