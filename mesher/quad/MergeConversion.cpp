@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <queue>
 #include <set>
 #include <tuple>
@@ -32,7 +33,14 @@ class Merger {
   MergeStats run() {
     onFront_.assign(mesh_.boundary.begin(), mesh_.boundary.end());
     for (int e = 0; e < mesh_.numElements(); ++e)
-      if (mesh_.isTriangle(e)) push(e);
+      if (mesh_.isTriangle(e)) {
+        push(e);
+        ++maxTransitions_;
+      }
+    // The transitions keep the region's triangles (they add quads around it): at most one
+    // per triangle of the start, so that the conversion always ends.
+    plainMorph_ = o_.morph;
+    plainMorph_.transitionSeam.seamRatio = plainMorph_.transitionSplit.splitRatio = std::numeric_limits<double>::infinity();
     while (!heap_.empty()) {
       const Entry x = heap_.top();
       heap_.pop();
@@ -94,13 +102,26 @@ class Merger {
   /// seam). The triangles it made (swaps, seam) are classified.
   bool morph(int e, int k, int level) {
     const int n0 = mesh_.numElements();
-    const MorphResult m = morphFrontEdge(mesh_, metrics_, e, k, onFront_, parity_, o_.morph);
+    const bool transitions = stats_.transitionSeams + stats_.transitionSplits < maxTransitions_;
+    const MorphResult m = morphFrontEdge(mesh_, metrics_, e, k, onFront_, parity_, transitions ? o_.morph : plainMorph_);
     grow();
     for (int f = n0; f < mesh_.numElements(); ++f)
       if (mesh_.isTriangle(f)) push(f);
     if (m.quad != kNone) {
       ++stats_.morphed;
       created(m.quad, level);
+      return true;
+    }
+    if (m.transition.done) {
+      // The quad behind the long edge was reshaped (and split): its level goes on.
+      const TransitionResult& t = m.transition;
+      ++(m.split ? stats_.transitionSplits : stats_.transitionSeams);
+      level_[t.reshaped] = level_[t.from];
+      if (t.extra != kNone) {
+        level_[t.extra] = level_[t.from];
+        ++stats_.quads;
+      }
+      created(t.quad, level);
       return true;
     }
     if (m.seamVertex == kNone) {
@@ -203,6 +224,8 @@ class Merger {
   MergeStats stats_;
   RegionParity parity_;
   std::set<std::pair<int, int>> morphTried_;
+  MorphOptions plainMorph_;  ///< o_.morph without the transitions
+  int maxTransitions_ = 0;
   std::vector<int> stamp_, level_;
   std::vector<std::uint8_t> onFront_;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap_;

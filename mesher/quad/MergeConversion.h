@@ -49,6 +49,8 @@ struct MergeStats {
   int triangles = 0;  ///< live triangles left
   int morphed = 0;    ///< of the quads, formed by morphing
   int seams = 0;      ///< seams closed by morphing (FrontSeam.h)
+  int transitionSeams = 0;   ///< TransitionSeam.h
+  int transitionSplits = 0;  ///< TransitionSplit.h
   std::array<int, 7> morphFailures{};  ///< failed morphing steps by MorphFailure
 };
 

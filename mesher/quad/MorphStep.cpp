@@ -112,10 +112,19 @@ MorphResult morphFrontEdge(QuadMesh2d& mesh, VertexMetrics& metrics, int e, int 
   MorphResult r;
   const int a = mesh.corners[e][k], b = mesh.corners[e][(k + 1) % 3];
   for (bool left : {true, false}) {
+    r.transition = transitionSeam(mesh, metrics, e, k, left, o.seam, o.transitionSeam);
+    if (r.transition.done) return r;
     const SeamResult s = closeSeam(mesh, metrics, e, k, left, o.seam);
     if (s.done) {
       r.seamVertex = s.vertex;
       r.seamElement = s.element;
+      return r;
+    }
+  }
+  for (bool left : {true, false}) {
+    r.transition = transitionSplit(mesh, metrics, e, k, left, o.seam.seamAngle, o.transitionSplit);
+    if (r.transition.done) {
+      r.split = true;
       return r;
     }
   }

@@ -1,8 +1,11 @@
 #pragma once
 // One step of the conversion by morphing (thesis 4.7.3, alg. 4.5, after Owen's Q-Morph),
 // for the base front edge k of triangle e (a→b, triangle on the left):
-//   1 the seam (FrontSeam.h) at either end when its angle is small: the front is closed
-//     there and the step ends (the caller reclassifies);
+//   1 the topological corrections of fig. 4.14 at either end, by the angle and the metric
+//     length ratio of the base and the adjacent front edge: at a small angle the transition
+//     seam (TransitionSeam.h) when the ratio is large, else the seam (FrontSeam.h); at a
+//     wider angle the transition split (TransitionSplit.h) when the ratio is large. One that
+//     applies changes the front and ends the step (the caller reclassifies);
 //   2 side edges at a and at b by angle in metric space (SideEdge.h), giving c and d;
 //   3 the upper edge (c, d) recovered by swaps (TopEdgeRecovery.h);
 //   4 the triangles enclosed by a→b→d→c→a (an even number, 2 + 2 × the vertices inside)
@@ -20,6 +23,7 @@
 #include "mesher/quad/FrontSeam.h"
 #include "mesher/quad/RegionParity.h"
 #include "mesher/quad/SideEdge.h"
+#include "mesher/quad/TransitionSplit.h"
 
 namespace aniso::quad {
 
@@ -29,6 +33,8 @@ struct MorphOptions {
   int smoothSweeps = 2;
   SideOptions side;
   SeamOptions seam;
+  TransitionSeamOptions transitionSeam;
+  TransitionSplitOptions transitionSplit;
 };
 
 /// Why a morphing step formed nothing (for the statistics).
@@ -39,6 +45,8 @@ struct MorphResult {
   int quad = kNone;     ///< the new quad, or kNone
   int seamVertex = kNone;  ///< a seam was closed at this vertex (quad == kNone)
   int seamElement = kNone;
+  TransitionResult transition;  ///< a transition seam or split was made (quad == kNone)
+  bool split = false;           ///< it was the transition split
 };
 
 /// `onFront[v]`: v is a boundary vertex or a corner of a quad (the caller's bookkeeping).

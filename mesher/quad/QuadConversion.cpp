@@ -61,7 +61,8 @@ QuadStats convertToQuads(FaceMesh& fm, const ControlSpace2d& cs, const Parametri
   mesh.toFaceMesh(fm);
   st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   logDebug("quad conversion: merged " + std::to_string(st.merge.quads) + " (morphed " + std::to_string(st.merge.morphed) +
-           ", seams " + std::to_string(st.merge.seams) + ", morph failures side/degenerate/shape/top/enclosed/parity " +
+           ", seams " + std::to_string(st.merge.seams) + ", transition seams " + std::to_string(st.merge.transitionSeams) +
+           ", transition splits " + std::to_string(st.merge.transitionSplits) + ", morph failures side/degenerate/shape/top/enclosed/parity " +
            std::to_string(st.merge.morphFailures[1]) + "/" + std::to_string(st.merge.morphFailures[2]) + "/" +
            std::to_string(st.merge.morphFailures[3]) + "/" + std::to_string(st.merge.morphFailures[4]) + "/" +
            std::to_string(st.merge.morphFailures[5]) + "/" + std::to_string(st.merge.morphFailures[6]) + ", odd splits " +

@@ -1,7 +1,7 @@
 // The operators of the morphing conversion (thesis alg. 4.5) and of the pairing of the
 // triangles left, one by one, each followed by the validators (structure, strictly convex
 // counter-clockwise elements, boundary and area unchanged): side edges, upper-edge
-// recovery, the seam, a whole morphing and mixed conversion, the chain re-quadrangulation,
+// recovery, the seam, the transition seam and split, a whole morphing and mixed conversion, the chain re-quadrangulation,
 // pole triangles and the removal of unused vertices.
 #include <gtest/gtest.h>
 
@@ -13,6 +13,8 @@
 #include "mesher/quad/PoleTriangles.h"
 #include "mesher/quad/SideEdge.h"
 #include "mesher/quad/TopEdgeRecovery.h"
+#include "mesher/quad/TransitionSeam.h"
+#include "mesher/quad/TransitionSplit.h"
 #include "quad_fixtures.h"
 
 namespace {
@@ -129,6 +131,108 @@ TEST(QuadSeam, RefusesAWideAngle) {
   const auto [e, k] = straightBoundaryEdge(m, metrics);
   ASSERT_NE(e, kNone);
   EXPECT_FALSE(closeSeam(m, metrics, e, k, true, {}).done);
+}
+
+/// The seam's wedge at a = (0, 0) with the lower front edge (a, c) three times as long as
+/// the upper (a, b): quad (a, p1, p2, c) below, (a, b, p4, p3) above, triangles between.
+struct UnequalWedge {
+  static constexpr int a = 0, p1 = 1, p2 = 2, x = 3, p4 = 4, p3 = 5, b = 6, c = 7;
+  FaceMesh fm;
+  std::shared_ptr<CSAnalytic2d> cs;
+  explicit UnequalWedge(double cx) {
+    fm.uv = {Vec2(0, 0), Vec2(0, -1.3), Vec2(3, -1.3), Vec2(4, 0.5), Vec2(1, 1.2), Vec2(0, 1.2), Vec2(1, 0.25), Vec2(cx, -0.3)};
+    fm.node = {0, 1, 2, 3, 4, 5, -1, -1};
+    fm.triangles = {{a, c, b}, {c, x, b}, {c, p2, x}, {b, x, p4}};
+    fm.quads = {{a, p1, p2, c}, {a, b, p4, p3}};
+    cs = facetest::isotropicSpace(quadtest::Box2Of({facetest::rectangle(0, -1.3, 4, 1.2)}), 1.0);
+  }
+};
+
+TEST(QuadTransitionSeam, SplitsTheLongerEdgeOfAnUnequalWedge) {
+  UnequalWedge w(3.0);  // |ac| / |ab| = 2.9, angle about 20°
+  QuadMesh2d m = QuadMesh2d::fromFaceMesh(w.fm);
+  const auto snap = quadtest::snapshot(m);
+  VertexMetrics metrics(m, *w.cs);
+  const TransitionResult r = transitionSeam(m, metrics, 0, 0, true);
+  ASSERT_TRUE(r.done);
+  quadtest::expectValid(m, snap);
+  EXPECT_EQ(count(m, 4), 3);
+  EXPECT_EQ(count(m, 3), 4);  // the region keeps its triangles
+  EXPECT_NEAR((m.uv[r.vertex] - Vec2(1.5, -0.15)).norm(), 0, 1e-12);
+  // The new quad has a, the reshaped one m instead of a; the front runs c → m → b.
+  EXPECT_NE(m.cornerIndex(r.quad, UnequalWedge::a), kNone);
+  EXPECT_NE(m.cornerIndex(r.quad, r.vertex), kNone);
+  EXPECT_EQ(m.cornerIndex(r.reshaped, UnequalWedge::a), kNone);
+  EXPECT_GE(elementQuality(m, metrics, m.corners[r.quad]), 0.3);
+  EXPECT_FALSE(m.alive(r.from));
+  int front = 0;  // triangle edges against a quad at m
+  for (int e = 0; e < m.numElements(); ++e)
+    if (m.isTriangle(e) && m.cornerIndex(e, r.vertex) != kNone)
+      for (int k = 0; k < 3; ++k) front += m.adj[e][k] != kNone && m.isQuad(m.adj[e][k]);
+  EXPECT_EQ(front, 2);
+}
+
+TEST(QuadTransitionSeam, LeavesEqualEdgesToTheSeam) {
+  UnequalWedge w(1.2);  // |ac| / |ab| = 1.2
+  QuadMesh2d m = QuadMesh2d::fromFaceMesh(w.fm);
+  VertexMetrics metrics(m, *w.cs);
+  const auto corners = m.corners;
+  EXPECT_FALSE(transitionSeam(m, metrics, 0, 0, true).done);
+  EXPECT_EQ(m.corners, corners);
+  EXPECT_EQ(m.numVertices(), 8);
+  EXPECT_TRUE(closeSeam(m, metrics, 0, 0, true).done);
+}
+
+/// A straight front y = 0 over two quads, the edge (v, L) three times as long as (s, v); v
+/// and t inside, the region above: triangles (v, L, t), (v, t, s) at v.
+struct UnequalFront {
+  static constexpr int s2 = 0, q = 1, p = 2, L = 3, w2 = 4, w1 = 5, s = 6, v = 7, t = 8;
+  FaceMesh fm;
+  std::shared_ptr<CSAnalytic2d> cs;
+  UnequalFront() {
+    fm.uv = {Vec2(-0.8, -1.6), Vec2(0, -1.6), Vec2(2.4, -1.6), Vec2(2.4, 0), Vec2(2.4, 1.6),
+             Vec2(-0.8, 1.6), Vec2(-0.8, 0), Vec2(0, 0), Vec2(0.9, 1.0)};
+    fm.node = {0, 1, 2, 3, 4, 5, 6, -1, -1};
+    fm.triangles = {{v, L, t}, {v, t, s}, {L, w2, t}, {t, w2, w1}, {s, t, w1}};
+    fm.quads = {{v, q, p, L}, {s, s2, q, v}};
+    cs = facetest::isotropicSpace(quadtest::Box2Of({facetest::rectangle(-0.8, -1.6, 2.4, 1.6)}), 1.0);
+  }
+};
+
+TEST(QuadTransitionSplit, GivesTheFrontANodeOnTheLongEdge) {
+  UnequalFront f;
+  QuadMesh2d m = QuadMesh2d::fromFaceMesh(f.fm);
+  const auto snap = quadtest::snapshot(m);
+  VertexMetrics metrics(m, *f.cs);
+  const TransitionResult r = transitionSplit(m, metrics, 0, 0, true, M_PI / 6);
+  ASSERT_TRUE(r.done);
+  quadtest::expectValid(m, snap);
+  EXPECT_EQ(count(m, 4), 4);
+  EXPECT_EQ(count(m, 3), 5);
+  EXPECT_NEAR((m.uv[r.vertex] - Vec2(1.2, 0)).norm(), 0, 1e-12);
+  EXPECT_LT(m.uv[UnequalFront::v].y(), 0);  // v left the front for the quad side
+  for (int e : {r.quad, r.reshaped, r.extra}) {
+    ASSERT_TRUE(m.isQuad(e));
+    EXPECT_GE(elementQuality(m, metrics, m.corners[e]), 0.3);
+  }
+  // The front runs L → m → s: no region triangle has v any more.
+  for (int e = 0; e < m.numElements(); ++e)
+    if (m.isTriangle(e)) EXPECT_EQ(m.cornerIndex(e, UnequalFront::v), kNone);
+}
+
+TEST(QuadTransitionSplit, RefusesAModestRatioAndTheBoundary) {
+  UnequalFront f;
+  QuadMesh2d m = QuadMesh2d::fromFaceMesh(f.fm);
+  VertexMetrics metrics(m, *f.cs);
+  const auto corners = m.corners;
+  const auto uv = m.uv;
+  TransitionSplitOptions o;
+  o.splitRatio = 3.5;  // the ratio is 3
+  EXPECT_FALSE(transitionSplit(m, metrics, 0, 0, true, M_PI / 6, o).done);
+  // From the triangle (v, L, t) at L: L is on the face boundary and may not move.
+  EXPECT_FALSE(transitionSplit(m, metrics, 0, 0, false, M_PI / 6).done);
+  EXPECT_EQ(m.corners, corners);
+  EXPECT_EQ(m.uv, uv);
 }
 
 /// A whole conversion with `method`: valid, boundary kept, quads formed by morphing,
