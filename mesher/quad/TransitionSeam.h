@@ -1,8 +1,8 @@
 #pragma once
 // The transition seam — the second topological correction of the conversion front (thesis
 // 4.7.3, alg. 4.5 step 2, fig. 4.14; Q-Morph's transition seam). Where the two adjacent front
-// edges c→a and a→b meet at a small region angle (below the seam's seamAngle, metric) and the region
-// there is the single triangle (a, b, c) — the seam's configuration (FrontSeam.h) — but their
+// edges c→a and a→b meet at a small region angle (below the seam's seamAngle, metric) and
+// the region there is the single triangle (a, b, c) — the seam's configuration (FrontSeam.h) — but their
 // metric lengths differ by more than seamRatio, the seam would join edges of unlike length
 // into a poor quad. Instead the longer edge (a, L) is split at its midpoint m:
 //   - the quad Q behind (a, L) gives up its corner a for m: Q' = Q with a → m;
@@ -14,8 +14,8 @@
 // triangles (parity kept), and the next correction at m finds edges of similar length.
 // Check, then change: (a, L) must have a live quad behind it (not the face boundary); every
 // new element strictly convex and counter-clockwise (QuadShape.h convexCCW); N with quality
-// ≥ the seam's minQuality, Q' ≥ min(minQuality, Q's quality before). Otherwise nothing changes (the
-// vertex added for m is taken back).
+// ≥ the seam's minQuality, Q' ≥ min(minQuality, Q's quality before). Otherwise nothing
+// changes (the vertex added for m is taken back).
 #include "mesher/quad/FrontSeam.h"
 
 namespace aniso::quad {

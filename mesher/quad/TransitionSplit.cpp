@@ -30,7 +30,7 @@ TransitionResult transitionSplit(QuadMesh2d& mesh, VertexMetrics& metrics, int e
   const int u0 = fan.rays.front(), u1 = fan.rays.back();
   const double l0 = metrics.length(v, u0), l1 = metrics.length(v, u1);
   const bool longBase = l0 >= l1;
-  if (!(std::max(l0, l1) > o.splitRatio * std::min(l0, l1))) return r;
+  if (!(std::max(l0, l1) > o.splitRatio * std::min(l0, l1)) || !(std::max(l0, l1) >= o.minLongLength)) return r;
   const int L = longBase ? u0 : u1, s = longBase ? u1 : u0;
   // From L to s around v: counter-clockwise (dir) or clockwise; the rings below are
   // written for dir and reversed otherwise.

@@ -2,8 +2,9 @@
 // The transition split — the third topological correction of the conversion front (thesis
 // 4.7.3, alg. 4.5 step 2, fig. 4.14; Q-Morph's transition split). Where the front edges at a
 // vertex v, (v, L) and (v, s), meet at a region angle that is not small (≥ the seam angle)
-// but their metric lengths differ by more than splitRatio, the front gains a node on the long
-// edge so that the size can change gradually:
+// but their metric lengths differ by more than splitRatio and the long one is at least
+// minLongLength (the size must grow along the front, not the short edge be too short), the
+// long edge gets a node so that the size can change gradually:
 //   - m at the midpoint of (v, L), c inside the quad Q behind (v, L) (ring v, L, p, q);
 //   - Q becomes the two quads (v, q, p, c) and (c, p, L, m) and the triangle (v, c, m),
 //     which with the region triangles at v between (v, L) and (v, s) (one or two, split at
@@ -26,6 +27,9 @@ namespace aniso::quad {
 
 struct TransitionSplitOptions {
   double splitRatio = 2.5;  ///< longer / shorter metric length (Q-Morph: 2.5)
+  /// The long edge at least this long in the metric (1 = the target size): where it is the
+  /// short edge that is too short, a split would only refine the front.
+  double minLongLength = 1.5;
   double minQuality = 0.3;  ///< as the morphed quads (MorphOptions::minQuality)
   std::array<double, 3> moveFractions{0.2, 0.35, 0.5};
 };
