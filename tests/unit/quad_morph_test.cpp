@@ -235,8 +235,8 @@ TEST(QuadTransitionSplit, RefusesAModestRatioAndTheBoundary) {
   EXPECT_EQ(m.uv, uv);
 }
 
-/// A whole conversion with `method`: valid, boundary kept, quads formed by morphing,
-/// an even number of triangles left, the same result twice.
+/// A whole conversion with `method`: valid, boundary kept, quads formed by morphing (with
+/// transition seams and splits), an even number of triangles left, the same result twice.
 void checkConversion(QuadMethod method) {
   Plate p;
   MergeOptions o;
@@ -247,6 +247,10 @@ void checkConversion(QuadMethod method) {
   const MergeStats st = mergeFront(m, metrics, o);
   quadtest::expectValid(m, snap);
   EXPECT_GT(st.morphed, st.quads / 4);
+  // The plate's front meets unequal edges (after seams and side-edge splits): the corrections
+  // of fig. 4.14 run inside the whole conversion, which stays valid.
+  EXPECT_GT(st.transitionSeams, 0);
+  EXPECT_GT(st.transitionSplits, 0);
   EXPECT_EQ(st.quads, count(m, 4));
   EXPECT_EQ(count(m, 3) % 2, 0);
   EXPECT_LT(count(m, 3), 0.2 * count(m, 4));
