@@ -1,25 +1,14 @@
 #include "mesher/surface/face/FlatTriangles.h"
 
 #include <algorithm>
-#include <cmath>
-
-#include <Eigen/Geometry>
 
 #include "mesher/delaunay/EdgeFlip.h"
-#include "mesher/predicates/Predicates.h"
-#include "mesher/surface/improve/VertexMetricCache.h"
+#include "mesher/surface/face/RingCentroidMove.h"
 
 namespace aniso::face {
 
 using del2d::TriId;
 using del2d::VertexId;
-
-double chordMeanRatio(const LiftedPoint& a, const LiftedPoint& b, const LiftedPoint& c) {
-  const Vec3 ab = b.p - a.p, bc = c.p - b.p, ca = a.p - c.p;
-  const double sum = ab.squaredNorm() + bc.squaredNorm() + ca.squaredNorm();
-  if (!(sum > 0)) return 0;
-  return 2 * std::sqrt(3.0) * ab.cross(-ca).norm() / sum;  // 4√3 A, A = |ab × ac| / 2
-}
 
 namespace {
 
@@ -36,10 +25,7 @@ double ratio(const del2d::Triangulation2d& tri, const SurfaceLift& lift, TriId t
 bool flat(const del2d::Triangulation2d& tri, const SurfaceLift& lift, TriId t) {
   const LiftedPoint &a = lift.at(tri, tri.vertex(t, 0)), &b = lift.at(tri, tri.vertex(t, 1)),
                     &c = lift.at(tri, tri.vertex(t, 2));
-  const double shortest = std::min({(b.p - a.p).squaredNorm(), (c.p - b.p).squaredNorm(), (a.p - c.p).squaredNorm()});
-  const double longest = std::max({(b.p - a.p).squaredNorm(), (c.p - b.p).squaredNorm(), (a.p - c.p).squaredNorm()});
-  if (!(shortest > kCollapsedEdge * kCollapsedEdge * longest)) return false;
-  return chordMeanRatio(a, b, c) < kFlatMeanRatio;
+  return !SurfaceLift::collapsed(a, b, c) && chordMeanRatio(a, b, c) < kFlatMeanRatio;
 }
 
 bool tryFlip(del2d::Triangulation2d& tri, const SurfaceLift& lift, TriId t) {
@@ -54,32 +40,6 @@ bool tryFlip(del2d::Triangulation2d& tri, const SurfaceLift& lift, TriId t) {
   }
   if (best < 0) return false;
   del2d::flip(tri, del2d::canFlip(tri, t, best));
-  return true;
-}
-
-bool tryMove(del2d::Triangulation2d& tri, const SurfaceLift& lift, VertexId v, std::vector<VertexId>& ring) {
-  if (!improve::gatherRing(tri, v, ring)) return false;
-  const std::size_t n = ring.size();
-  const LiftedPoint& lv = lift.at(tri, v);
-  Vec2 x = Vec2::Zero();
-  double before = 1;
-  for (std::size_t k = 0; k < n; ++k) {
-    x += tri.point(ring[k]);
-    before = std::min(before, chordMeanRatio(lv, lift.at(tri, ring[k]), lift.at(tri, ring[k + 1 == n ? 0 : k + 1])));
-  }
-  x /= static_cast<double>(n);
-  const LiftedPoint lx = lift.lift(x);
-  double after = 1;
-  for (std::size_t k = 0; k < n; ++k) {
-    const VertexId b = ring[k], c = ring[k + 1 == n ? 0 : k + 1];
-    if (!(predicates::orient2d(x.data(), tri.coords(b), tri.coords(c)) > 0)) return false;
-    const LiftedPoint &lb = lift.at(tri, b), &lc = lift.at(tri, c);
-    if (!SurfaceLift::upright(lx, lb, lc)) return false;
-    after = std::min(after, chordMeanRatio(lx, lb, lc));
-  }
-  if (!(after > before)) return false;
-  improve::moveVertex(tri, v, x);
-  lift.remember(v, lx);
   return true;
 }
 
@@ -112,7 +72,7 @@ FlatTriangleStats removeFlatTriangles(del2d::Triangulation2d& tri, const Surface
       }
       for (int i = 0; i < 3; ++i) {
         const VertexId v = tri.vertex(t, i);
-        if ((v.index < fixed.size() && fixed[v.index]) || !tryMove(tri, lift, v, ring)) continue;
+        if ((v.index < fixed.size() && fixed[v.index]) || !moveToRingCentroid(tri, lift, v, true, ring)) continue;
         ++st.moves;
         changed = true;
         break;

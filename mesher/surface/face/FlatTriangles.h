@@ -34,7 +34,4 @@ struct FlatTriangleStats {
 FlatTriangleStats removeFlatTriangles(del2d::Triangulation2d& tri, const SurfaceLift& lift,
                                       const std::vector<std::uint8_t>& fixed, int maxRounds = 4);
 
-/// Mean ratio 4√3 A / (a² + b² + c²) of the chord triangle of three lifted points.
-double chordMeanRatio(const LiftedPoint& a, const LiftedPoint& b, const LiftedPoint& c);
-
 }  // namespace aniso::face

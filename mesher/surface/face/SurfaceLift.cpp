@@ -1,6 +1,7 @@
 #include "mesher/surface/face/SurfaceLift.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <Eigen/Geometry>
 
@@ -36,6 +37,18 @@ void SurfaceLift::remember(VertexId v, const LiftedPoint& l) const {
   cache_[v.index] = l;
 }
 
+bool SurfaceLift::collapsed(const LiftedPoint& a, const LiftedPoint& b, const LiftedPoint& c) {
+  const double ab = (b.p - a.p).squaredNorm(), bc = (c.p - b.p).squaredNorm(), ca = (a.p - c.p).squaredNorm();
+  return !(std::min({ab, bc, ca}) > kCollapsedEdge * kCollapsedEdge * std::max({ab, bc, ca}));
+}
+
+double chordMeanRatio(const LiftedPoint& a, const LiftedPoint& b, const LiftedPoint& c) {
+  const Vec3 ab = b.p - a.p, bc = c.p - b.p, ca = a.p - c.p;
+  const double sum = ab.squaredNorm() + bc.squaredNorm() + ca.squaredNorm();
+  if (!(sum > 0)) return 0;
+  return 2 * std::sqrt(3.0) * ab.cross(-ca).norm() / sum;  // 4√3 A, A = |ab × ac| / 2
+}
+
 SurfaceLift::Pose SurfaceLift::pose(const LiftedPoint& a, const LiftedPoint& b, const LiftedPoint& c) {
   // Corner normals (zero at singular corners): any two known ones too far apart, or none
   // known: untested.
@@ -47,11 +60,8 @@ SurfaceLift::Pose SurfaceLift::pose(const LiftedPoint& a, const LiftedPoint& b, 
   for (int i = 0; i < k; ++i)
     for (int j = i + 1; j < k; ++j)
       if (known[i]->dot(*known[j]) < kChordTestCosine) return Pose::Untested;
-  const Vec3 ab = b.p - a.p, bc = c.p - b.p, ca = a.p - c.p;
-  const double longest = std::max({ab.squaredNorm(), bc.squaredNorm(), ca.squaredNorm()});
-  const double shortest = std::min({ab.squaredNorm(), bc.squaredNorm(), ca.squaredNorm()});
-  if (!(shortest > kCollapsedEdge * kCollapsedEdge * longest)) return Pose::Untested;  // collapsed at a pole
-  const Vec3 chord = ab.cross(-ca);
+  if (collapsed(a, b, c)) return Pose::Untested;  // at a pole
+  const Vec3 chord = (b.p - a.p).cross(c.p - a.p);
   const Vec3 n = a.n + b.n + c.n;
   return chord.dot(n) > kUprightCosine * chord.norm() * n.norm() ? Pose::Upright : Pose::Folded;
 }

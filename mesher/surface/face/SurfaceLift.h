@@ -72,6 +72,8 @@ class SurfaceLift {
     Untested,  ///< collapsed at a pole, or too large against the curvature (see above)
   };
   static Pose pose(const LiftedPoint& a, const LiftedPoint& b, const LiftedPoint& c);
+  /// Two corners at one point (shortest chord below kCollapsedEdge of the longest).
+  static bool collapsed(const LiftedPoint& a, const LiftedPoint& b, const LiftedPoint& c);
   /// pose() != Folded.
   static bool upright(const LiftedPoint& a, const LiftedPoint& b, const LiftedPoint& c) {
     return pose(a, b, c) != Pose::Folded;
@@ -90,5 +92,8 @@ class SurfaceLift {
   const ParametricSurface* surface_;
   mutable std::vector<LiftedPoint> cache_;
 };
+
+/// Mean ratio 4√3 A / (a² + b² + c²) of the chord triangle of three lifted points.
+double chordMeanRatio(const LiftedPoint& a, const LiftedPoint& b, const LiftedPoint& c);
 
 }  // namespace aniso::face

@@ -4,7 +4,7 @@
 #include "mesher/delaunay/InsertPoint.h"
 #include "mesher/delaunay/Workspace2d.h"
 #include "mesher/predicates/Predicates.h"
-#include "mesher/surface/improve/VertexMetricCache.h"
+#include "mesher/surface/face/RingCentroidMove.h"
 
 namespace aniso::face {
 
@@ -31,24 +31,6 @@ bool tryFlip(del2d::Triangulation2d& tri, const SurfaceLift& lift, TriId t) {
     return true;
   }
   return false;
-}
-
-/// v to the centroid of its ring when the star stays valid and upright.
-bool tryMove(del2d::Triangulation2d& tri, const SurfaceLift& lift, VertexId v, std::vector<VertexId>& ring) {
-  if (!improve::gatherRing(tri, v, ring)) return false;  // on the border
-  Vec2 x = Vec2::Zero();
-  for (const VertexId w : ring) x += tri.point(w);
-  x /= static_cast<double>(ring.size());
-  const LiftedPoint lx = lift.lift(x);
-  const std::size_t n = ring.size();
-  for (std::size_t k = 0; k < n; ++k) {
-    const VertexId b = ring[k], c = ring[k + 1 == n ? 0 : k + 1];
-    if (!(predicates::orient2d(x.data(), tri.coords(b), tri.coords(c)) > 0)) return false;
-    if (!SurfaceLift::upright(lx, lift.at(tri, b), lift.at(tri, c))) return false;
-  }
-  improve::moveVertex(tri, v, x);
-  lift.remember(v, lx);
-  return true;
 }
 
 /// The cavity of an insertion is the containing triangle alone (a 1-to-3 split).
@@ -120,7 +102,7 @@ UnfoldFaceStats unfoldFace(del2d::Triangulation2d& tri, const SurfaceLift& lift,
       bool moved = false;
       for (int i = 0; i < 3 && !moved; ++i) {
         const VertexId v = tri.vertex(t, i);
-        moved = !(v.index < fixed.size() && fixed[v.index]) && tryMove(tri, lift, v, ring);
+        moved = !(v.index < fixed.size() && fixed[v.index]) && moveToRingCentroid(tri, lift, v, false, ring);
       }
       if (moved) {
         ++st.moves;
