@@ -67,8 +67,24 @@ const double* Inserter::transformed(std::uint32_t v) const {
   return q;
 }
 
+void Inserter::cacheSpheres() {
+  spheresOn_ = true;
+  spheres_.reserve(mesh_.tetCapacity());
+  spheres_.resize(mesh_.tetSlots());
+  for (std::uint32_t k = 0; k < mesh_.tetSlots(); ++k) {
+    if (!mesh_.isAlive(TetId(k))) continue;
+    const std::uint32_t* tv = mesh_.tetVertices(TetId(k));
+    spheres_[k] = cachedSphere(mesh_.coords(VertexId(tv[0])), mesh_.coords(VertexId(tv[1])),
+                               mesh_.coords(VertexId(tv[2])), mesh_.coords(VertexId(tv[3])));
+  }
+}
+
 bool Inserter::inConflict(TetId t) const {
   ++inSphereTests_;
+  if (!m_ && spheresOn_) {
+    const int side = sphereSide(spheres_[t.index], p_);
+    if (side != 0) return side > 0;
+  }
   const std::uint32_t* tv = mesh_.tetVertices(t);
   if (!m_) {
     return predicates::insphere(mesh_.coords(VertexId(tv[0])), mesh_.coords(VertexId(tv[1])),
@@ -352,6 +368,14 @@ void Inserter::commit() {
     BoundaryFace& f = boundary_[k];
     f.v[f.face] = nv.index;
     newTets_.push_back(mesh_.createTet(VertexId(f.v[0]), VertexId(f.v[1]), VertexId(f.v[2]), VertexId(f.v[3])));
+  }
+  if (spheresOn_) {
+    if (spheres_.size() < mesh_.tetSlots()) spheres_.resize(mesh_.tetSlots());
+    for (std::size_t k = 0; k < nb_; ++k) {
+      const std::uint32_t* v = boundary_[k].v;
+      spheres_[newTets_[k].index] = cachedSphere(mesh_.coords(VertexId(v[0])), mesh_.coords(VertexId(v[1])),
+                                                 mesh_.coords(VertexId(v[2])), mesh_.coords(VertexId(v[3])));
+    }
   }
   for (std::size_t k = 0; k < nb_; ++k) {
     const BoundaryFace& f = boundary_[k];

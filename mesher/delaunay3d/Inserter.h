@@ -9,6 +9,8 @@
 //     in-sphere test is exact (predicates::insphere) on transformed coordinates:
 //     insphere(M a, M b, M c, M d, M p) for the caller's 3×3 matrix M (identity by
 //     default; the metric of the control space at the point, held constant, sec. 5.2.1).
+//     With cacheSpheres() and the identity, the cached circumsphere of the tet decides first
+//     when its error bound certifies the sign (Circumsphere.h), the exact test otherwise.
 //  3. Pruning: every cavity face must form with the point a positively oriented tet
 //     (exact orient3d on the untransformed coordinates; skipped for faces shared with a
 //     tested non-conflicting tet when the mesh is TetMesh::certifiedDelaunay() and M = I,
@@ -36,6 +38,7 @@
 #include <span>
 #include <vector>
 
+#include "mesher/delaunay3d/Circumsphere.h"
 #include "mesher/delaunay3d/Locate.h"
 #include "mesher/delaunay3d/TetMesh.h"
 
@@ -83,6 +86,13 @@ class Inserter {
   std::span<const TetId> newTets() const { return newTets_; }
   /// Slots freed by the last successful insertion (before the new tets reused them).
   std::span<const TetId> removedTets() const { return removed_; }
+  /// From now on keeps the circumsphere of every tet (Circumsphere.h): computed here for the
+  /// live tets, and at each insertion for the new ones; insertions with the identity metric
+  /// test them first and evaluate the exact insphere only when the cached filter cannot
+  /// certify. Valid only while the mesh is changed by this Inserter alone (the refinement).
+  void cacheSpheres();
+  /// The cached circumsphere of live tet t (cacheSpheres() called).
+  const CachedSphere& sphere(TetId t) const { return spheres_[t.index]; }
   /// Cumulative counters since construction.
   std::uint64_t inSphereTests() const { return inSphereTests_; }
   std::uint64_t refusals() const { return refusals_; }
@@ -139,6 +149,8 @@ class Inserter {
   mutable std::vector<std::uint32_t> mstamp_;   // per vertex stamp of mxyz_
   std::uint32_t stamp_ = 0;
   std::uint32_t cavityVertices_ = 0;
+  std::vector<CachedSphere> spheres_;  // per tet slot, while spheresOn_
+  bool spheresOn_ = false;
   bool certified_ = false;  // mesh certified Delaunay and identity metric: see collectBoundary
   mutable std::uint64_t inSphereTests_ = 0;
   std::uint64_t refusals_ = 0;

@@ -55,6 +55,8 @@ class TetMesh {
   /// Number of slots (live + free); TetIds range over [0, tetSlots()).
   std::size_t tetSlots() const { return tf_.size(); }
   std::size_t numTets() const { return live_; }
+  /// Slots the arrays hold without reallocating (reserve()).
+  std::size_t tetCapacity() const { return tf_.capacity(); }
   bool isAlive(TetId t) const { return t.index < tf_.size() && tv_[4 * std::size_t{t.index}] != kFreeMark; }
   VertexId vertex(TetId t, int i) const { return VertexId(tv_[4 * std::size_t{t.index} + i]); }
   /// The four vertex indices of t (raw, for hot loops).

@@ -58,7 +58,7 @@ class Refiner {
 
  private:
   double evaluate(TetId t);
-  double evaluateIsotropic(const std::uint32_t* tv, const TetPoints& tp, double scale) const;
+  double evaluateIsotropic(TetId t, const std::uint32_t* tv, double scale) const;
   void enqueue(TetId t);
   bool refine(TetId k, double q);
   void process(const refine3d::RefineQueue::Entry& e);
@@ -92,10 +92,10 @@ void Refiner::reserveFor(double predictedTets) {
 
 double Refiner::evaluate(TetId t) {
   ++st_.evaluated;
-  const TetPoints tp = pointsOf(mesh_, t);
   const std::uint32_t* tv = mesh_.tetVertices(t);
   double scale;
-  if (vt_.tetScale(tv, scale)) return evaluateIsotropic(tv, tp, scale);
+  if (vt_.tetScale(tv, scale)) return evaluateIsotropic(t, tv, scale);
+  const TetPoints tp = pointsOf(mesh_, t);
   const Mat3 m = vt_.tetMetric(tv);
   double q = refine3d::metricSphereQuality(m, tp.p[0], tp.p[1], tp.p[2], tp.p[3]);
   if (q < o_.qualityThreshold) return q;
@@ -114,23 +114,32 @@ double Refiner::evaluate(TetId t) {
 
 // evaluate() for a tet whose vertices are all isotropic: its metric is scale·I, so q(K) is
 // (R_I / (scale·R))³ with R the Euclidean circumradius and a metric length scale·|d| (an
-// edge's midpoint metric is the mean of its ends' scales).
-double Refiner::evaluateIsotropic(const std::uint32_t* tv, const TetPoints& tp, double scale) const {
-  Vec3 centre;
+// edge's midpoint metric is the mean of its ends' scales). Runs for every new tet (26 per
+// insertion on the cube): R comes from the Inserter's sphere cache, the edges from the raw
+// coordinates.
+double Refiner::evaluateIsotropic(TetId t, const std::uint32_t* tv, double scale) const {
+  // The circumradius from the Inserter's sphere cache (the same arithmetic as
+  // refine3d::circumcentreOffset: del3d::circumcentreOffset).
+  const double r2 = del3d::sphereRadius2(inserter_.sphere(t));
   double q = 0;
-  if (refine3d::circumcentreOffset(tp.p[1] - tp.p[0], tp.p[2] - tp.p[0], tp.p[3] - tp.p[0], centre)) {
-    const double r = refine3d::kIdealCircumradius / (scale * centre.norm());
+  if (!std::isnan(r2)) {
+    const double r = refine3d::kIdealCircumradius / (scale * std::sqrt(r2));
     q = r * r * r;
   }
   if (q < o_.qualityThreshold) return q;
+  const double* p[4] = {mesh_.coords(VertexId(tv[0])), mesh_.coords(VertexId(tv[1])), mesh_.coords(VertexId(tv[2])),
+                        mesh_.coords(VertexId(tv[3]))};
   // Squared lengths against the prefilter first (local data, no root), then the boundary test.
   const double shortEnough = o_.edgeLengthMax / (scale * kEdgePrefilter);
   for (const auto& e : kEdges) {
-    const double l2 = (tp.p[e[1]] - tp.p[e[0]]).squaredNorm();
+    const double* a = p[e[0]];
+    const double* b = p[e[1]];
+    const double dx = b[0] - a[0], dy = b[1] - a[1], dz = b[2] - a[2];
+    const double l2 = (dx * dx + dy * dy) + dz * dz;
     if (l2 <= shortEnough * shortEnough) continue;
-    const VertexId a(tv[e[0]]), b(tv[e[1]]);
-    if (s_.isFixed(a) && s_.isFixed(b)) continue;
-    if (0.5 * (vt_.scale(a) + vt_.scale(b)) * std::sqrt(l2) > o_.edgeLengthMax) return 0.95 * o_.qualityThreshold;
+    const VertexId va(tv[e[0]]), vb(tv[e[1]]);
+    if (s_.isFixed(va) && s_.isFixed(vb)) continue;
+    if (0.5 * (vt_.scale(va) + vt_.scale(vb)) * std::sqrt(l2) > o_.edgeLengthMax) return 0.95 * o_.qualityThreshold;
   }
   return q;
 }
@@ -268,6 +277,7 @@ VolumeRefineStats Refiner::run() {
   // Sec. 6.5: the prediction sizes the mesh arrays once (no doubling and copying as they
   // grow: the peak memory of the phase).
   reserveFor(st_.predictedInitial);
+  inserter_.cacheSpheres();
   s_.node.resize(mesh_.numVertices(), -1);
   for (std::uint32_t k = 0; k < mesh_.tetSlots(); ++k)
     if (mesh_.isAlive(TetId(k))) enqueue(TetId(k));

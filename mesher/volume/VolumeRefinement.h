@@ -20,6 +20,9 @@
 // P is inserted with del3d::Inserter (in-sphere test on M(P)·x, M(P) the metric at P,
 // constant during the insertion — on the untransformed points when M(P) is isotropic, which
 // gives the same signs exactly; constrained faces are never crossed) with mustRemove = K.
+// The Inserter keeps every tet's circumsphere (Inserter::cacheSpheres): the cavity test with
+// the identity is a certified distance comparison backed by the exact insphere (measured on
+// the cube at h = 0.02: 654 of 3.2 M tests undecided), and q(K) reads R_K from it.
 // The insertion is cancelled (the mesh is unchanged) when:
 //   - P is outside the solid (the walk from K leaves through a boundary face: thesis
 //     "the refined and containing elements may be divided by some boundary face");

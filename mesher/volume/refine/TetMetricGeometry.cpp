@@ -1,23 +1,20 @@
 #include "mesher/volume/refine/TetMetricGeometry.h"
 
-#include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <cmath>
 
-namespace aniso::refine3d {
-namespace {
-/// |det| of the edge vectors relative to the cube of their longest length below which the
-/// circumsphere is not computed (the tet is flat to rounding).
-constexpr double kFlatTet = 1e-14;
-}  // namespace
+#include "mesher/delaunay3d/Circumsphere.h"
 
+namespace aniso::refine3d {
+
+// The arithmetic of the Inserter's sphere cache (del3d::circumcentreOffset, at a = 0: the
+// differences u − 0 are exact), so that q(K) is the same from either.
 bool circumcentreOffset(const Vec3& u, const Vec3& v, const Vec3& w, Vec3& centre) {
-  const Vec3 vw = v.cross(w), wu = w.cross(u), uv = u.cross(v);
-  const double det = u.dot(vw);
-  const double l = std::max({u.squaredNorm(), v.squaredNorm(), w.squaredNorm()});
-  if (!(std::abs(det) > kFlatTet * l * std::sqrt(l))) return false;
-  centre = (u.squaredNorm() * vw + v.squaredNorm() * wu + w.squaredNorm() * uv) / (2 * det);
-  return std::isfinite(centre.x()) && std::isfinite(centre.y()) && std::isfinite(centre.z());
+  constexpr double kOrigin[3] = {0, 0, 0};
+  double c[3];
+  if (!del3d::circumcentreOffset(kOrigin, u.data(), v.data(), w.data(), c)) return false;
+  centre = Vec3(c[0], c[1], c[2]);
+  return true;
 }
 
 double metricSphereQuality(const Mat3& m, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
