@@ -169,6 +169,18 @@ void Inserter::growCavity() {
   }
 }
 
+// Face i of cavity tet t (vertices tv) is shared with the tested, rejected tet n (code):
+// p is strictly inside t's circumsphere S_t and not strictly inside S_n. Both spheres pass
+// through the face's circle, so their power difference pow_t − pow_n is affine and vanishes
+// on the face's plane, negative at p; when t's apex is certified strictly outside S_n (the
+// pair is locally Delaunay) it is negative there too: p lies strictly on t's side, which is
+// the orient3d test this replaces. Only with the cached spheres, the identity, and the
+// cavity as grown (not after pruning, which rejects tets that contain p).
+bool Inserter::visibleByPower(const std::uint32_t* tv, int i, std::uint32_t code, bool skip) const {
+  if (!powerTest_ || skip) return false;
+  return sphereSide(spheres_[code >> 2], mesh_.coords(VertexId(tv[i]))) < 0;
+}
+
 // Builds the cavity faces and the new tets' vertices; true when every new tet is positive,
 // no constrained face is interior to the cavity and no vertex would be stranded.
 bool Inserter::collectBoundary() {
@@ -211,7 +223,9 @@ bool Inserter::collectBoundary() {
       ok = ok && !(inside && constrained);
       // Faces shared with a tested, rejected tet are visible from p in a Delaunay mesh
       // (identity metric): p outside that tet's circumsphere puts it on our side.
-      if (!inside && (!certified_ || hull || constrained) && faceOrient(mesh_, tv, i, p_) <= 0) ok = false;
+      if (!inside && (!certified_ || hull || constrained) && !visibleByPower(tv, i, code, hull || constrained) &&
+          faceOrient(mesh_, tv, i, p_) <= 0)
+        ok = false;
     }
   }
   nb_ = nb;
@@ -434,11 +448,13 @@ InsertResult Inserter::insert(const Vec3& p, const InsertOptions& options) {
   }
   located_ = loc.tet;
   certified_ = m_ == nullptr && mesh_.certifiedDelaunay();
+  powerTest_ = m_ == nullptr && spheresOn_;
   seedCavity(loc);
   growCavity();
   bool ok = collectBoundary();
   if (!ok) {
     certified_ = false;  // pruned cavity: the result need not be Delaunay
+    powerTest_ = false;
     ok = pruneCavity();
   }
   if (ok && options.mustRemove.valid() &&

@@ -14,9 +14,10 @@
 //  3. Pruning: every cavity face must form with the point a positively oriented tet
 //     (exact orient3d on the untransformed coordinates; skipped for faces shared with a
 //     tested non-conflicting tet when the mesh is TetMesh::certifiedDelaunay() and M = I,
-//     where the empty-sphere property guarantees it). A tet owning a face that fails is
-//     dropped from the cavity, and so are tets that would delete a constrained face or
-//     leave a vertex inside the cavity (a "stranded" vertex — impossible when every
+//     where the empty-sphere property guarantees it, or, with cacheSpheres(), when the
+//     cached spheres certify that this pair of tets is locally Delaunay). A tet owning a
+//     face that fails is dropped from the cavity, and so are tets that would delete a
+//     constrained face or leave a vertex inside the cavity (a "stranded" vertex — impossible when every
 //     cavity tet strictly contains the point in its circumsphere, so only a guard against
 //     the rounding of M·x); this repeats until stable. If K_c itself must be dropped, the
 //     insertion is refused and the mesh is untouched. (The thesis also drops tets whose
@@ -118,6 +119,7 @@ class Inserter {
   void seedCavity(const LocateResult& loc);
   void growCavity();
   bool collectBoundary();
+  bool visibleByPower(const std::uint32_t* tv, int i, std::uint32_t code, bool skip) const;
   bool pruneCavity();
   bool matchEdges();
   bool matchEdgesHashed();
@@ -151,6 +153,7 @@ class Inserter {
   std::uint32_t cavityVertices_ = 0;
   std::vector<CachedSphere> spheres_;  // per tet slot, while spheresOn_
   bool spheresOn_ = false;
+  bool powerTest_ = false;  // collectBoundary may use visibleByPower
   bool certified_ = false;  // mesh certified Delaunay and identity metric: see collectBoundary
   mutable std::uint64_t inSphereTests_ = 0;
   std::uint64_t refusals_ = 0;

@@ -110,7 +110,9 @@ TEST(Circumsphere, CosphericalGridAndSliversAgree) {
 }
 
 TEST(Circumsphere, InserterWithSphereCacheBuildsTheSameMesh) {
-  // Random points and a cospherical grid, inserted with and without the cache.
+  // Random points and a cospherical grid, inserted with and without the cache; on a mesh
+  // not certified Delaunay the cavity faces are checked by orient3d without the cache and
+  // by the spheres' power test (Inserter::visibleByPower) with it.
   std::vector<Vec3> pts;
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -120,32 +122,66 @@ TEST(Circumsphere, InserterWithSphereCacheBuildsTheSameMesh) {
       for (int k = 0; k < 6; ++k) pts.emplace_back(0.2 * i, 0.2 * j, 0.2 * k);
   Box3 box;
   for (const Vec3& p : pts) box.add(p);
-  TetMesh plain, cached;
-  createEnclosingBox(plain, box);
-  createEnclosingBox(cached, box);
-  Inserter a(plain), b(cached);
-  b.cacheSpheres();
-  for (const Vec3& p : pts) {
-    const InsertResult ra = a.insert(p), rb = b.insert(p);
-    ASSERT_EQ(ra.status, rb.status);
-    ASSERT_EQ(ra.cavityTets, rb.cavityTets);
-  }
-  ASSERT_EQ(plain.tetSlots(), cached.tetSlots());
-  for (std::uint32_t k = 0; k < plain.tetSlots(); ++k) {
-    ASSERT_EQ(plain.isAlive(TetId(k)), cached.isAlive(TetId(k)));
-    if (!plain.isAlive(TetId(k))) continue;
-    for (int i = 0; i < 4; ++i) ASSERT_EQ(plain.tetVertices(TetId(k))[i], cached.tetVertices(TetId(k))[i]);
-    // The cache holds each live tet's sphere.
-    const std::uint32_t* v = cached.tetVertices(TetId(k));
-    const CachedSphere s = cachedSphere(cached.coords(VertexId(v[0])), cached.coords(VertexId(v[1])),
-                                        cached.coords(VertexId(v[2])), cached.coords(VertexId(v[3])));
-    if (!std::isnan(sphereRadius2(s))) {
-      ASSERT_EQ(sphereRadius2(b.sphere(TetId(k))), sphereRadius2(s));
+  for (const bool certified : {true, false}) {
+    TetMesh plain, cached;
+    createEnclosingBox(plain, box);
+    createEnclosingBox(cached, box);
+    plain.setCertifiedDelaunay(certified);
+    cached.setCertifiedDelaunay(certified);
+    Inserter a(plain), b(cached);
+    b.cacheSpheres();
+    for (const Vec3& p : pts) {
+      const InsertResult ra = a.insert(p), rb = b.insert(p);
+      ASSERT_EQ(ra.status, rb.status);
+      ASSERT_EQ(ra.cavityTets, rb.cavityTets);
     }
+    ASSERT_EQ(plain.tetSlots(), cached.tetSlots());
+    for (std::uint32_t k = 0; k < plain.tetSlots(); ++k) {
+      ASSERT_EQ(plain.isAlive(TetId(k)), cached.isAlive(TetId(k)));
+      if (!plain.isAlive(TetId(k))) continue;
+      for (int i = 0; i < 4; ++i) ASSERT_EQ(plain.tetVertices(TetId(k))[i], cached.tetVertices(TetId(k))[i]);
+      // The cache holds each live tet's sphere.
+      const std::uint32_t* v = cached.tetVertices(TetId(k));
+      const CachedSphere s = cachedSphere(cached.coords(VertexId(v[0])), cached.coords(VertexId(v[1])),
+                                          cached.coords(VertexId(v[2])), cached.coords(VertexId(v[3])));
+      if (!std::isnan(sphereRadius2(s))) {
+        ASSERT_EQ(sphereRadius2(b.sphere(TetId(k))), sphereRadius2(s));
+      }
+    }
+    ValidateOptions o;
+    o.checkDelaunay = true;
+    EXPECT_TRUE(validate(cached, o).empty());
+    EXPECT_EQ(a.inSphereTests(), b.inSphereTests());
   }
-  ValidateOptions o;
-  o.checkDelaunay = true;
-  EXPECT_TRUE(validate(cached, o).empty());
-  // The grid's cospherical cases went to the exact predicate: no fewer tests than without.
-  EXPECT_EQ(a.inSphereTests(), b.inSphereTests());
+}
+
+TEST(Circumsphere, PowerTestImpliesVisibility) {
+  // Two tets t = (f, a) and n = (f, b) on either side of face f. Whenever p is strictly
+  // inside S_t, not strictly inside S_n, and a is certified outside S_n (the pair locally
+  // Delaunay), p must see f from a's side: the argument of Inserter::visibleByPower.
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int used = 0, notLocallyDelaunay = 0;
+  for (int k = 0; k < 200000; ++k) {
+    double f[3][3], a[3], b[3], p[3];
+    for (auto& v : f)
+      for (double& x : v) x = u(rng);
+    for (int i = 0; i < 3; ++i) a[i] = u(rng), b[i] = u(rng), p[i] = 1.5 * u(rng);
+    const double sa = predicates::orient3d(f[0], f[1], f[2], a), sb = predicates::orient3d(f[0], f[1], f[2], b);
+    if (sa == 0 || sb == 0 || (sa > 0) == (sb > 0)) continue;
+    const CachedSphere sn = cachedSphere(f[0], f[1], f[2], b);
+    const bool inT = predicates::insphere(f[0], f[1], f[2], a, p) * sa > 0;
+    const bool inN = predicates::insphere(f[0], f[1], f[2], b, p) * sb > 0;
+    if (sphereSide(sn, a) >= 0) {
+      ++notLocallyDelaunay;
+      continue;
+    }
+    if (!inT || inN) continue;
+    ++used;
+    // p on a's side of f.
+    const double op = predicates::orient3d(f[0], f[1], f[2], p);
+    ASSERT_TRUE(op != 0 && (op > 0) == (sa > 0)) << k;
+  }
+  EXPECT_GT(used, 1000);
+  EXPECT_GT(notLocallyDelaunay, 1000);
 }
