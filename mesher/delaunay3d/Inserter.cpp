@@ -50,7 +50,7 @@ Inserter::Inserter(TetMesh& mesh, std::uint32_t seed) : mesh_(mesh), rng_(seed ?
 
 void Inserter::nextStamp() {
   if (++stamp_ == 0) {
-    std::fill(vstamp_.begin(), vstamp_.end(), 0u);
+    for (VertexMark& v : vmark_) v.stamp = 0;
     std::fill(mstamp_.begin(), mstamp_.end(), 0u);
     for (EdgeSlot& e : edges_) e.stamp = 0;
     for (PairSlot& e : pairs_) e.stamp = 0;
@@ -151,8 +151,17 @@ void Inserter::seedCavity(const LocateResult& loc) {
 // Depth-first (breadth-first order, same set) search of the conflict region through
 // non-constrained faces; tested tets outside it are marked so each is tested once.
 void Inserter::growCavity() {
+  const bool spheres = !m_ && spheresOn_;
   for (std::size_t k = 0; k < cavity_.size(); ++k) {
     const TetId t = cavity_[k];
+    // The four neighbours' flags and spheres are requested together, not one miss after
+    // another.
+    for (int i = 0; i < 4; ++i) {
+      const std::uint32_t code = mesh_.adjacentCode(t, i);
+      if (code == kNone) continue;
+      mesh_.prefetchAdjacency(codeTet(code));
+      if (spheres) __builtin_prefetch(&spheres_[code >> 2]);
+    }
     for (int i = 0; i < 4; ++i) {
       const std::uint32_t code = mesh_.adjacentCode(t, i);
       if (code == kNone || mesh_.isConstrained(t, i)) continue;
@@ -198,10 +207,11 @@ bool Inserter::collectBoundary() {
     std::uint32_t loc[4];
     for (int i = 0; i < 4; ++i) {
       const std::uint32_t v = tv[i];
-      const bool isNew = vstamp_[v] != stamp_;
-      loc[i] = isNew ? cavityVertices_ : vlocal_[v];
-      vstamp_[v] = stamp_;
-      vlocal_[v] = loc[i];
+      VertexMark& mark = vmark_[v];
+      const bool isNew = mark.stamp != stamp_;
+      loc[i] = isNew ? cavityVertices_ : mark.local;
+      mark.stamp = stamp_;
+      mark.local = loc[i];
       cavityVertices_ += isNew ? 1u : 0u;
     }
     const std::uint8_t flags = mesh_.flags(t);
@@ -256,15 +266,15 @@ bool Inserter::pruneCavity() {
         for (int i = 0; i < 4; ++i) {
           const std::uint32_t code = mesh_.adjacentCode(t, i);
           if (code != kNone && mesh_.hasMark(codeTet(code), kInCavity)) continue;
-          for (int m = 0; m < 3; ++m) vstamp_[mesh_.tetVertices(t)[kFaceVertex[i][m]]] = stamp_;
+          for (int m = 0; m < 3; ++m) vmark_[mesh_.tetVertices(t)[kFaceVertex[i][m]]].stamp = stamp_;
         }
       }
       for (const TetId t : cavity_) {
         const std::uint32_t* tv = mesh_.tetVertices(t);
         if (t == located_) continue;
         for (int m = 0; m < 4; ++m) {
-          if (vstamp_[tv[m]] != stamp_) {
-            vstamp_[tv[m]] = stamp_;  // one tet per stranded vertex is enough
+          if (vmark_[tv[m]].stamp != stamp_) {
+            vmark_[tv[m]].stamp = stamp_;  // one tet per stranded vertex is enough
             ring_.push_back(t);
             break;
           }
@@ -297,7 +307,7 @@ bool Inserter::link(std::uint32_t& slotRef, std::size_t k, int j) {
 
 // Pairs the faces of the new tets through the edges of the cavity faces. False when the
 // cavity surface is not a closed 2-manifold (never for a star-shaped cavity).
-// Requires vlocal_ from the last collectBoundary().
+// Requires the local numbers (vmark_) from the last collectBoundary().
 bool Inserter::matchEdges() {
   constexpr std::uint32_t kDirectMax = 96;
   const std::uint32_t nv = cavityVertices_;
@@ -434,9 +444,8 @@ InsertResult Inserter::insert(const Vec3& p, const InsertOptions& options) {
     return res;
   }
   const std::size_t nv = mesh_.numVertices() + 1;
-  if (vstamp_.size() < nv) {
-    vstamp_.resize(std::max(nv, 2 * vstamp_.size()), 0u);
-    vlocal_.resize(vstamp_.size());
+  if (vmark_.size() < nv) {
+    vmark_.resize(std::max(nv, 2 * vmark_.size()));
   }
   nextStamp();
   if (m_) {

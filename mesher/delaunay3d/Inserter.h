@@ -103,7 +103,7 @@ class Inserter {
     std::uint32_t v[4];      // vertices of the new tet (the cavity tet's, with p at slot `face`)
     std::uint32_t outer;     // neighbour code across the cavity face (kNone on the hull)
     std::uint32_t link[4];   // per local face j != face: index 4·k + j' of the matching new face
-    std::uint32_t l[4];      // local numbers (vlocal_) of the vertices
+    std::uint32_t l[4];      // local numbers (vmark_) of the vertices
     std::uint8_t face;       // local index of the point in the new tet
     bool constrained;
   };
@@ -145,8 +145,10 @@ class Inserter {
   std::vector<TetId> newTets_;
   std::vector<TetId> removed_;
   std::vector<TetId> ring_;
-  std::vector<std::uint32_t> vstamp_;           // per vertex: stamp of vlocal_
-  std::vector<std::uint32_t> vlocal_;           // per vertex: number among the cavity vertices
+  struct VertexMark {  // per vertex: its number among the cavity vertices, valid at stamp
+    std::uint32_t stamp = 0, local = 0;
+  };
+  std::vector<VertexMark> vmark_;
   mutable std::vector<double> mxyz_;            // per vertex transformed coordinates (M != I)
   mutable std::vector<std::uint32_t> mstamp_;   // per vertex stamp of mxyz_
   std::uint32_t stamp_ = 0;

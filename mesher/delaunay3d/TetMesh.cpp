@@ -88,36 +88,31 @@ void TetMesh::renumber(const std::vector<std::uint32_t>& newVertex, const std::v
       if (alive) hit[newTet[t]] = 1;
     }
   }
-  // Relabel the records where they are, then move each to its place by swaps along the
-  // cycles of the permutation (free slots sent past the live ones, then cut off).
-  std::vector<std::uint32_t> to(newTet);
-  std::uint32_t nextFreePlace = static_cast<std::uint32_t>(live_);
+  // Each live record written once to its new place in fresh arrays (keeping the old
+  // capacity reserved, so that later growth does not reallocate; pages never written cost
+  // nothing): sequential reads, one pass.
+  std::vector<std::uint32_t> tv, tn;
+  std::vector<std::uint8_t> tf;
+  tv.reserve(tv_.capacity());
+  tn.reserve(tn_.capacity());
+  tf.reserve(tf_.capacity());
+  tv.resize(4 * live_);
+  tn.resize(4 * live_);
+  tf.resize(live_);
   for (std::size_t t = 0; t < slots; ++t) {
-    if (to[t] == kNone) {
-      to[t] = nextFreePlace++;
-      continue;
-    }
+    const std::uint32_t n = newTet[t];
+    if (n == kNone) continue;
     for (int i = 0; i < 4; ++i) {
-      std::uint32_t& v = tv_[4 * t + i];
-      v = newVertex[v];
-      std::uint32_t& c = tn_[4 * t + i];
-      if (c != kNone) c = 4 * newTet[c >> 2] + (c & 3u);
+      tv[4 * std::size_t{n} + i] = newVertex[tv_[4 * t + i]];
+      const std::uint32_t c = tn_[4 * t + i];
+      tn[4 * std::size_t{n} + i] = c == kNone ? kNone : 4 * newTet[c >> 2] + (c & 3u);
     }
+    tf[n] = tf_[t];
   }
-  for (std::size_t t = 0; t < slots; ++t) {
-    while (to[t] != t) {
-      const std::size_t u = to[t];
-      for (int i = 0; i < 4; ++i) {
-        std::swap(tv_[4 * t + i], tv_[4 * u + i]);
-        std::swap(tn_[4 * t + i], tn_[4 * u + i]);
-      }
-      std::swap(tf_[t], tf_[u]);
-      std::swap(to[t], to[u]);
-    }
-  }
-  tv_.resize(4 * live_);
-  tn_.resize(4 * live_);
-  tf_.resize(live_);
+  tv_.swap(tv);
+  tn_.swap(tn);
+  tf_.swap(tf);
+  tv = {}, tn = {}, tf = {};  // the old records, released before the vertex arrays are copied
   freeHead_ = kNone;
   std::vector<double> xyz(xyz_.size());
   std::vector<std::uint32_t> vtet(nv);
