@@ -11,6 +11,8 @@ namespace {
 
 constexpr std::uint8_t kInCavity = TetMesh::kMarkA;
 constexpr std::uint8_t kRejected = TetMesh::kMarkB;
+/// collectBoundary requests the vertex data of the cavity tet this many places ahead.
+constexpr std::size_t kMarksAhead = 2;
 
 // orient3d of the tet tv with its vertex i replaced by p (> 0: p on the inner side of face i).
 inline double faceOrient(const TetMesh& mesh, const std::uint32_t* tv, int i, const double* p) {
@@ -169,6 +171,7 @@ void Inserter::growCavity() {
       if (mesh_.flags(n) & (kInCavity | kRejected)) continue;
       if (inConflict(n)) {
         mesh_.setMark(n, kInCavity);
+        mesh_.prefetchVertices(n);  // for collectBoundary (the sphere test did not need them)
         cavity_.push_back(n);
       } else {
         mesh_.setMark(n, kRejected);
@@ -202,7 +205,13 @@ bool Inserter::collectBoundary() {
   // Written without data-dependent branches where the outcome is a coin flip (new
   // vertex or not, neighbour in the cavity or not): every face is written to the next
   // slot, and the slot is kept only for a cavity face.
-  for (const TetId t : cavity_) {
+  for (std::size_t c = 0; c < cavity_.size(); ++c) {
+    const TetId t = cavity_[c];
+    if (c + kMarksAhead < cavity_.size()) {  // the vertex marks and coordinates of a later tet
+      const std::uint32_t* later = mesh_.tetVertices(cavity_[c + kMarksAhead]);
+      for (int i = 0; i < 4; ++i) __builtin_prefetch(&vmark_[later[i]]);
+      mesh_.prefetchCoords(cavity_[c + kMarksAhead]);
+    }
     const std::uint32_t* tv = mesh_.tetVertices(t);
     std::uint32_t loc[4];
     for (int i = 0; i < 4; ++i) {
