@@ -1,6 +1,10 @@
 #include "mesher/volume/VolumeImprovement.h"
 
+#include <chrono>
+#include <string>
 #include <vector>
+
+#include "mesher/core/Log.h"
 
 #include "mesher/delaunay3d/SpatialSort.h"
 #include "mesher/volume/improve/QualityFlips.h"
@@ -13,6 +17,9 @@ namespace {
 /// Floor of the smoothing acceptance (VertexMover::smooth): stars whose worst η_M is
 /// below it must raise their worst; others keep it and their mean.
 constexpr double kSmoothingQualityFloor = 0.3;
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 }  // namespace
 
 VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, const VolumeImproveOptions& o) {
@@ -21,6 +28,7 @@ VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, cons
   improve3d::VertexMetrics vm(s.mesh, cs);
   improve3d::VertexMover mover(s, vm);
   for (int pass = 0; pass < o.passes; ++pass) {
+    auto t0 = Clock::now();
     // The free vertices in Hilbert order: neighbouring stars are visited one after another
     // (the vertex numbering follows the refinement, scattered over the solid).
     std::vector<std::uint32_t> free;
@@ -34,12 +42,16 @@ VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, cons
     for (int sweep = 0; sweep < o.smoothingSweeps; ++sweep)
       for (const std::uint32_t i : order)
         if (mover.smooth(del3d::VertexId(free[i]), o.lowGradation, kSmoothingQualityFloor)) ++st.moved;
+    st.smoothingSeconds += since(t0);
+    t0 = Clock::now();
     improve3d::QualityFlips flips(s, vm, o.flipGain);
     flips.run(o.flipCandidate);
     st.flips23 += flips.counts().f23;
     st.flips32 += flips.counts().f32;
     st.flips44 += flips.counts().f44;
+    st.flipSeconds += since(t0);
   }
+  const auto t0 = Clock::now();
   if (o.sliverRounds > 0) {
     const improve3d::SliverStats ss = improve3d::removeSlivers(s, cs, vm, o.sliverAngleDeg, o.euclideanSliverAngleDeg,
                                                                o.sliverRounds, o.sliverInsertion);
@@ -53,6 +65,11 @@ VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, cons
   } else {
     st.sliversBefore = st.sliversAfter = improve3d::countSlivers(s, vm, o.sliverAngleDeg, o.euclideanSliverAngleDeg);
   }
+  st.sliverSeconds = since(t0);
+  logDebug("volume improvement: smoothing " + std::to_string(st.smoothingSeconds) + " s (" + std::to_string(st.moved) +
+           " moves), flips " + std::to_string(st.flipSeconds) + " s (" +
+           std::to_string(st.flips23 + st.flips32 + st.flips44) + "), slivers " + std::to_string(st.sliverSeconds) +
+           " s (" + std::to_string(st.sliversBefore) + " -> " + std::to_string(st.sliversAfter) + ")");
   return st;
 }
 

@@ -59,6 +59,7 @@ struct VolumeImproveStats {
   std::size_t sliversAfter = 0;
   std::size_t sliverFlips = 0, sliverMoves = 0, sliverInsertions = 0, sliverEdgeRemovals = 0,
               sliverSteinerPoints = 0;
+  double smoothingSeconds = 0, flipSeconds = 0, sliverSeconds = 0;  ///< wall time of the steps
 };
 
 VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, const VolumeImproveOptions& o = {});

@@ -30,8 +30,7 @@ class SliverRemover {
       : s_(s),
         cs_(cs),
         vm_(vm),
-        angle_(angle),
-        euclidean_(euclidean),
+        angles_(angle, euclidean),
         insertion_(insertion),
         flips_(s, vm, 0.0),
         mover_(s, vm),
@@ -42,7 +41,7 @@ class SliverRemover {
   SliverStats stats;
 
  private:
-  bool isSliver(TetId t) const { return s_.mesh.isAlive(t) && vm_.isSliver(t, angle_, euclidean_); }
+  bool isSliver(TetId t) const { return s_.mesh.isAlive(t) && vm_.isSliver(t, angles_); }
   bool attack(TetId t);
   bool flipAway(TetId t);
   bool removeEdges(TetId t);
@@ -54,7 +53,7 @@ class SliverRemover {
   SolidTetMesh& s_;
   const ControlSpace3d& cs_;
   VertexMetrics& vm_;
-  double angle_, euclidean_;
+  VertexMetrics::SliverAngles angles_;
   bool insertion_;
   QualityFlips flips_;
   VertexMover mover_;
@@ -210,38 +209,47 @@ std::vector<TetId> SliverRemover::round(const std::vector<TetId>& slivers) {
 }  // namespace
 
 std::vector<TetId> liveSlivers(const SolidTetMesh& s, const VertexMetrics& vm, double angleDeg, double euclideanDeg) {
+  const VertexMetrics::SliverAngles a(angleDeg, euclideanDeg);
   std::vector<TetId> out;
   for (std::uint32_t k = 0; k < s.mesh.tetSlots(); ++k)
-    if (s.mesh.isAlive(TetId(k)) && vm.isSliver(TetId(k), angleDeg, euclideanDeg)) out.push_back(TetId(k));
+    if (s.mesh.isAlive(TetId(k)) && vm.isSliver(TetId(k), a)) out.push_back(TetId(k));
   return out;
 }
 
 std::size_t countSlivers(const SolidTetMesh& s, const VertexMetrics& vm, double angleDeg, double euclideanDeg) {
+  const VertexMetrics::SliverAngles a(angleDeg, euclideanDeg);
   std::size_t n = 0;
   for (std::uint32_t k = 0; k < s.mesh.tetSlots(); ++k)
-    if (s.mesh.isAlive(TetId(k)) && vm.isSliver(TetId(k), angleDeg, euclideanDeg)) ++n;
+    if (s.mesh.isAlive(TetId(k)) && vm.isSliver(TetId(k), a)) ++n;
   return n;
 }
 
 SliverStats removeSlivers(SolidTetMesh& s, const ControlSpace3d& cs, VertexMetrics& vm, double angleDeg,
                           double euclideanDeg, int rounds, bool insertion) {
   SliverRemover r(s, cs, vm, angleDeg, euclideanDeg, insertion);
-  std::vector<TetId> slivers = liveSlivers(s, vm, angleDeg, euclideanDeg);
-  r.stats.before = slivers.size();
+  // The live slivers, rescanned after each round (the only whole-mesh scans).
+  std::vector<TetId> current = liveSlivers(s, vm, angleDeg, euclideanDeg);
+  r.stats.before = current.size();
   vm.setGuardEuclidean(true);
   // Later rounds visit every sliver again: the operators (insertions, Steiner points) make
   // new tets, some of them slivers, that the previous round's list does not hold.
-  for (int i = 0; i < rounds && !slivers.empty(); ++i) {
-    r.round(slivers);
+  for (int i = 0; i < rounds && !current.empty(); ++i) {
+    r.round(current);
     std::vector<TetId> left = liveSlivers(s, vm, angleDeg, euclideanDeg);
-    if (left.size() >= slivers.size()) break;
-    slivers = std::move(left);
+    const bool progress = left.size() < current.size();
+    current = std::move(left);
+    if (!progress) break;
   }
   // The referee's slivers last: the operators on the metric slivers above make new tets,
   // some flat in space, after their slots were visited; rounds over the Euclidean slivers
-  // alone (a few) while they go down.
+  // alone (a few) while they go down. They are among `current` (a Euclidean sliver is a
+  // sliver for any metric angle ≥ 0), in slot order.
   SliverRemover e(s, cs, vm, 0.0, euclideanDeg, insertion);
-  slivers = liveSlivers(s, vm, 0.0, euclideanDeg);
+  const VertexMetrics::SliverAngles euclidean(0.0, euclideanDeg);
+  std::vector<TetId> slivers;
+  for (const TetId t : current)
+    if (vm.isSliver(t, euclidean)) slivers.push_back(t);
+  const bool changed = !slivers.empty();
   for (int i = 0; i < rounds && !slivers.empty(); ++i) {
     e.round(slivers);
     std::vector<TetId> left = liveSlivers(s, vm, 0.0, euclideanDeg);
@@ -250,7 +258,7 @@ SliverStats removeSlivers(SolidTetMesh& s, const ControlSpace3d& cs, VertexMetri
   }
   r.stats.merge(e.stats);
   vm.setGuardEuclidean(false);
-  r.stats.after = countSlivers(s, vm, angleDeg, euclideanDeg);
+  r.stats.after = changed ? countSlivers(s, vm, angleDeg, euclideanDeg) : current.size();
   return r.stats;
 }
 

@@ -1,6 +1,6 @@
 #pragma once
 // Sliver removal (issue 5 §1, after alg. 5.4): a tet is a sliver when its smallest
-// dihedral angle, measured in its metric (VertexMetrics::metricMinDihedral; Euclidean for
+// dihedral angle, measured in its metric (VertexMetrics::isSliver; Euclidean for
 // an isotropic field), is below the target angle, or when a Euclidean dihedral angle is
 // below the Euclidean target or above 180° minus it (the referee measures in space: an
 // anisotropic metric may find a flat tet acceptable). The operators below maximise the

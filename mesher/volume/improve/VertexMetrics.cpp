@@ -10,6 +10,8 @@ namespace aniso::improve3d {
 
 namespace {
 
+constexpr double kDegToRad = 0.017453292519943295;
+
 /// Signed η³ = 12³ · 9 V² / (Σ l²)³ · sign(V) of MeanRatio.h without the cube root.
 double meanRatioCubed(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4) {
   const Vec3 a = p2 - p1, b = p3 - p1, c = p4 - p1;
@@ -92,21 +94,20 @@ double VertexMetrics::scoreWith(const std::uint32_t* v, std::uint32_t moved, con
   return guarded(meanRatioCubed(m * q[0], m * q[1], m * q[2], m * q[3]), q, false);
 }
 
-bool VertexMetrics::isSliver(del3d::TetId t, double metricAngle, double euclideanAngle) const {
+VertexMetrics::SliverAngles::SliverAngles(double metricAngle, double euclideanAngle)
+    : cosMetric(std::cos(metricAngle * kDegToRad)),
+      cosEuclidean(std::cos(euclideanAngle * kDegToRad)),
+      cosIsotropic(std::cos(std::max(metricAngle, euclideanAngle) * kDegToRad)) {}
+
+bool VertexMetrics::isSliver(del3d::TetId t, const SliverAngles& a) const {
   const std::uint32_t* v = mesh_.tetVertices(t);
   const Vec3 p[4] = {mesh_.point(del3d::VertexId(v[0])), mesh_.point(del3d::VertexId(v[1])),
                      mesh_.point(del3d::VertexId(v[2])), mesh_.point(del3d::VertexId(v[3]))};
-  const DihedralRange r = tetDihedralRange(p[0], p[1], p[2], p[3]);
-  if (r.minDeg < euclideanAngle || r.maxDeg > 180 - euclideanAngle) return true;
-  if (isotropic(v)) return r.minDeg < metricAngle;
-  return metricMinDihedral(t) < metricAngle;
-}
-
-double VertexMetrics::metricMinDihedral(del3d::TetId t) const {
-  const std::uint32_t* v = mesh_.tetVertices(t);
-  const Mat3 m = isotropic(v) ? Mat3::Identity() : tetMetric(v);
-  return tetMinDihedral(m * mesh_.point(del3d::VertexId(v[0])), m * mesh_.point(del3d::VertexId(v[1])),
-                        m * mesh_.point(del3d::VertexId(v[2])), m * mesh_.point(del3d::VertexId(v[3])));
+  // Euclidean: an angle below θ_E or above 180° − θ_E; isotropic: also below θ_M
+  if (isotropic(v)) return dihedralCosineOutside(p[0], p[1], p[2], p[3], a.cosIsotropic, -a.cosEuclidean);
+  if (dihedralCosineOutside(p[0], p[1], p[2], p[3], a.cosEuclidean, -a.cosEuclidean)) return true;
+  const Mat3 m = tetMetric(v);
+  return dihedralCosineOutside(m * p[0], m * p[1], m * p[2], m * p[3], a.cosMetric, -2.0);
 }
 
 }  // namespace aniso::improve3d

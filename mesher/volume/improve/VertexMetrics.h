@@ -53,11 +53,18 @@ class VertexMetrics {
   /// Euclidean only when `isotropicTensor`.
   double scorePoints(const Vec3* p, const Mat3& m, bool isotropicTensor) const;
   bool isIsotropic(del3d::VertexId v) const { return iso_[v.index] != 0; }
-  /// Smallest dihedral angle (degrees) of the tet mapped by its metric.
-  double metricMinDihedral(del3d::TetId t) const;
   /// A sliver: metric smallest dihedral below metricAngle, or a Euclidean dihedral angle
   /// below euclideanAngle or above 180° − euclideanAngle (degrees).
-  bool isSliver(del3d::TetId t, double metricAngle, double euclideanAngle) const;
+  bool isSliver(del3d::TetId t, double metricAngle, double euclideanAngle) const {
+    return isSliver(t, SliverAngles(metricAngle, euclideanAngle));
+  }
+  /// The sliver thresholds as cosines (isSliver compares the dihedral angles' cosines:
+  /// dihedralCosineOutside of TetQuality.h, no acos).
+  struct SliverAngles {
+    SliverAngles(double metricAngle, double euclideanAngle);
+    double cosMetric, cosEuclidean, cosIsotropic;  ///< cos θ_M, cos θ_E, cos max(θ_M, θ_E)
+  };
+  bool isSliver(del3d::TetId t, const SliverAngles& a) const;
   void setGuardEuclidean(bool on) { guardEuclidean_ = on; }
 
  private:
