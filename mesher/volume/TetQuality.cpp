@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "mesher/metric/MeanRatio.h"
+#include "mesher/volume/improve/VertexTets.h"
 #include "mesher/volume/refine/VertexTensors.h"
 
 namespace aniso {
@@ -178,26 +179,15 @@ void accumulateTetQuality(const SolidTetMesh& s, const ControlSpace3d* cs, TetQu
   // incidence (compressed rows, 4 entries per tet) read row by row, the neighbours already
   // measured marked by a stamp (no star walks, no sorting).
   const std::size_t nv = mesh.numVertices();
-  std::vector<std::uint32_t> first(nv + 1, 0);
-  for (std::uint32_t k = 0; k < mesh.tetSlots(); ++k)
-    if (mesh.isAlive(del3d::TetId(k)))
-      for (int i = 0; i < 4; ++i) ++first[mesh.tetVertices(del3d::TetId(k))[i] + 1];
-  for (std::size_t v = 0; v < nv; ++v) first[v + 1] += first[v];
-  std::vector<std::uint32_t> incident(first[nv]);
-  {
-    std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
-    for (std::uint32_t k = 0; k < mesh.tetSlots(); ++k)
-      if (mesh.isAlive(del3d::TetId(k)))
-        for (int i = 0; i < 4; ++i) incident[fill[mesh.tetVertices(del3d::TetId(k))[i]]++] = k;
-  }
+  const improve3d::VertexTets incidence(mesh);
   std::vector<double> toUser(volume ? nv : 0, 1.0);  // per vertex: M = toUser · M_v
   for (std::size_t v = 0; v < toUser.size(); ++v)
     toUser[v] = volume->lengthFactorAt(mesh.point(del3d::VertexId(static_cast<std::uint32_t>(v))));
   std::vector<std::uint32_t> seen(nv, del3d::kNone);
   for (std::uint32_t v = 0; v < nv; ++v) {
     const Vec3 p = mesh.point(del3d::VertexId(v));
-    for (std::uint32_t r = first[v]; r < first[v + 1]; ++r) {
-      const std::uint32_t* tv = mesh.tetVertices(del3d::TetId(incident[r]));
+    for (const std::uint32_t t : incidence.of(del3d::VertexId(v))) {
+      const std::uint32_t* tv = mesh.tetVertices(del3d::TetId(t));
       for (int i = 0; i < 4; ++i) {
         const std::uint32_t w = tv[i];
         if (w <= v || seen[w] == v) continue;

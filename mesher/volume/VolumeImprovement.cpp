@@ -9,6 +9,8 @@
 #include "mesher/delaunay3d/SpatialSort.h"
 #include "mesher/volume/improve/QualityFlips.h"
 #include "mesher/volume/improve/SliverRemoval.h"
+#include "mesher/volume/improve/TetScores.h"
+#include "mesher/volume/improve/VertexTets.h"
 #include "mesher/volume/improve/VertexMover.h"
 
 namespace aniso {
@@ -20,6 +22,29 @@ constexpr double kSmoothingQualityFloor = 0.3;
 
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+/// The smoothing sweeps of one pass: the free vertices in Hilbert order (neighbouring stars
+/// are visited one after another; the vertex numbering follows the refinement, scattered
+/// over the solid). Smoothing moves vertices only: the stars are read from one incidence
+/// snapshot. Returns the number of accepted moves.
+std::size_t smoothVertices(const SolidTetMesh& s, improve3d::VertexMover& mover, const VolumeImproveOptions& o) {
+  std::vector<std::uint32_t> free;
+  std::vector<Vec3> at;
+  for (std::uint32_t v = 0; v < s.mesh.numVertices(); ++v)
+    if (!s.isFixed(del3d::VertexId(v)) && s.mesh.vertexTet(del3d::VertexId(v)).valid()) {
+      free.push_back(v);
+      at.push_back(s.mesh.point(del3d::VertexId(v)));
+    }
+  const std::vector<std::uint32_t> order = del3d::hilbertOrder(at);
+  const improve3d::VertexTets incidence(s.mesh);
+  mover.setIncidence(&incidence);
+  std::size_t moved = 0;
+  for (int sweep = 0; sweep < o.smoothingSweeps; ++sweep)
+    for (const std::uint32_t i : order)
+      if (mover.smooth(del3d::VertexId(free[i]), o.lowGradation, kSmoothingQualityFloor)) ++moved;
+  mover.setIncidence(nullptr);
+  return moved;
+}
+
 }  // namespace
 
 VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, const VolumeImproveOptions& o) {
@@ -29,22 +54,14 @@ VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, cons
   improve3d::VertexMover mover(s, vm);
   for (int pass = 0; pass < o.passes; ++pass) {
     auto t0 = Clock::now();
-    // The free vertices in Hilbert order: neighbouring stars are visited one after another
-    // (the vertex numbering follows the refinement, scattered over the solid).
-    std::vector<std::uint32_t> free;
-    std::vector<Vec3> at;
-    for (std::uint32_t v = 0; v < s.mesh.numVertices(); ++v)
-      if (!s.isFixed(del3d::VertexId(v)) && s.mesh.vertexTet(del3d::VertexId(v)).valid()) {
-        free.push_back(v);
-        at.push_back(s.mesh.point(del3d::VertexId(v)));
-      }
-    const std::vector<std::uint32_t> order = del3d::hilbertOrder(at);
-    for (int sweep = 0; sweep < o.smoothingSweeps; ++sweep)
-      for (const std::uint32_t i : order)
-        if (mover.smooth(del3d::VertexId(free[i]), o.lowGradation, kSmoothingQualityFloor)) ++st.moved;
+    // every tet measured once; smoothing and flips read and keep this cache
+    improve3d::TetScores scores(s.mesh, vm);
+    mover.setScores(&scores);
+    st.moved += smoothVertices(s, mover, o);
     st.smoothingSeconds += since(t0);
     t0 = Clock::now();
-    improve3d::QualityFlips flips(s, vm, o.flipGain);
+    mover.setScores(nullptr);
+    improve3d::QualityFlips flips(s, vm, o.flipGain, &scores);
     flips.run(o.flipCandidate);
     st.flips23 += flips.counts().f23;
     st.flips32 += flips.counts().f32;

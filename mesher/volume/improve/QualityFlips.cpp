@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <span>
+#include <type_traits>
 
 #include "mesher/delaunay3d/EdgeRing.h"
 #include "mesher/delaunay3d/FlipT23.h"
@@ -16,19 +17,33 @@ namespace {
 using del3d::VertexId;
 constexpr int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 
-/// Worst score (η_M³) over tets given as ids or as vertex quadruples.
-template <class Range>
-double worstScore(const VertexMetrics& vm, const Range& tets) {
-  double w = 1e300;
-  for (const auto& t : tets) w = std::min(w, vm.score(t));
-  return w;
-}
-
 /// The flip condition: worst η_M after > worst η_M before + gain, on scores.
 bool beats(double after, double before, double gain) {
   return after > before && std::cbrt(after) > std::cbrt(before) + gain;  // cube roots only when needed
 }
 }  // namespace
+
+/// Worst score (η_M³) over tets given as ids (cached when there is a cache) or as vertex
+/// quadruples.
+template <class Range>
+double QualityFlips::worst(const Range& tets) const {
+  double w = 1e300;
+  for (const auto& t : tets) {
+    if constexpr (std::is_same_v<std::decay_t<decltype(t)>, del3d::TetId>)
+      w = std::min(w, score(t));
+    else
+      w = std::min(w, vm_.score(t));
+  }
+  return w;
+}
+
+/// Records the tets made by a flip: appended to `out`, measured into the cache.
+template <std::size_t N>
+void QualityFlips::created(const std::array<del3d::TetId, N>& tets, std::vector<del3d::TetId>& out) {
+  out.insert(out.end(), tets.begin(), tets.end());
+  if (scores_)
+    for (const del3d::TetId t : tets) scores_->update(t);
+}
 
 // Floating-point prefilters (quality first, then the exact legality of the kernel's
 // can*(): most candidate flips fail on quality, which costs no exact predicate).
@@ -50,13 +65,12 @@ bool QualityFlips::tryFace(del3d::TetId t, int i, std::vector<del3d::TetId>& cre
     // (f0, f1, f2, d) is positive; the new tets replace one f by e.
     double after = 1e300;
     for (int m = 0; m < 3; ++m) after = std::min(after, vm_.score(std::array<VertexId, 4>{f[m], f[(m + 1) % 3], e, d}));
-    if (!beats(after, std::min(vm_.score(t), vm_.score(u)), gain_)) return false;
+    if (!beats(after, std::min(score(t), score(u)), gain_)) return false;
   }
   del3d::Flip23Plan plan;
   if (!del3d::canFlip23(s_.mesh, t, i, &plan)) return false;
-  if (!(beats(worstScore(vm_, plan.newTets), worstScore(vm_, plan.oldTets), gain_))) return false;
-  const auto nt = del3d::flip23(s_.mesh, plan);
-  created.insert(created.end(), nt.begin(), nt.end());
+  if (!(beats(worst(plan.newTets), worst(plan.oldTets), gain_))) return false;
+  this->created(del3d::flip23(s_.mesh, plan), created);
   ++counts_.f23;
   return true;
 }
@@ -70,17 +84,16 @@ bool QualityFlips::tryEdge(del3d::TetId t, int i, int j, std::vector<del3d::TetI
   if (n == 3) {
     const double after =
         std::min(absScore(vm_, apex[0], apex[1], apex[2], a), absScore(vm_, apex[0], apex[1], apex[2], b));
-    if (!beats(after, worstScore(vm_, std::span<const del3d::TetId>(ring.data(), 3)), gain_)) return false;
+    if (!beats(after, worst(std::span<const del3d::TetId>(ring.data(), 3)), gain_)) return false;
     del3d::Flip32Plan plan;
     if (!del3d::canFlip32(s_.mesh, t, i, j, &plan)) return false;
-    if (!(beats(worstScore(vm_, plan.newTets), worstScore(vm_, plan.oldTets), gain_))) return false;
-    const auto nt = del3d::flip32(s_.mesh, plan);
-    created.insert(created.end(), nt.begin(), nt.end());
+    if (!(beats(worst(plan.newTets), worst(plan.oldTets), gain_))) return false;
+    this->created(del3d::flip32(s_.mesh, plan), created);
     ++counts_.f32;
     return true;
   }
   if (n != 4) return false;
-  const double before = worstScore(vm_, ring);
+  const double before = worst(ring);
   del3d::Flip44Plan best;
   double bestAfter = before;
   bool found = false;
@@ -91,12 +104,11 @@ bool QualityFlips::tryEdge(del3d::TetId t, int i, int j, std::vector<del3d::TetI
     if (!beats(pre, before, gain_)) continue;
     del3d::Flip44Plan plan;
     if (!del3d::canFlip44(s_.mesh, t, i, j, diag, &plan)) continue;
-    const double after = worstScore(vm_, plan.newTets);
+    const double after = worst(plan.newTets);
     if (after > bestAfter && beats(after, before, gain_)) bestAfter = after, best = plan, found = true;
   }
   if (!found) return false;
-  const auto nt = del3d::flip44(s_.mesh, best);
-  created.insert(created.end(), nt.begin(), nt.end());
+  this->created(del3d::flip44(s_.mesh, best), created);
   ++counts_.f44;
   return true;
 }
@@ -114,7 +126,7 @@ void QualityFlips::run(double candidateBelow) {
   std::vector<del3d::TetId> work;
   const double key = candidateBelow * candidateBelow * candidateBelow;
   for (std::uint32_t k = 0; k < s_.mesh.tetSlots(); ++k)
-    if (s_.mesh.isAlive(del3d::TetId(k)) && vm_.score(del3d::TetId(k)) < key) work.push_back(del3d::TetId(k));
+    if (s_.mesh.isAlive(del3d::TetId(k)) && score(del3d::TetId(k)) < key) work.push_back(del3d::TetId(k));
   const std::size_t cap = kMaxFlipsPerTet * work.size() + counts_.total();
   // Created tets are visited again only when they are candidates themselves (performance:
   // most flips leave good tets, whose visit finds nothing).
@@ -123,7 +135,7 @@ void QualityFlips::run(double candidateBelow) {
     created.clear();
     if (!visit(work[k], created)) continue;
     for (const del3d::TetId t : created)
-      if (s_.mesh.isAlive(t) && vm_.score(t) < key) work.push_back(t);
+      if (s_.mesh.isAlive(t) && score(t) < key) work.push_back(t);
   }
 }
 

@@ -8,10 +8,12 @@
 // run() visits the tets (all, or those below a quality: a flip only helps when one of the
 // tets it replaces is poor) and then the new ones until nothing changes (or a cap of
 // kMaxFlipsPerTet flips per initial tet is reached).
+#include <array>
 #include <cstddef>
 #include <vector>
 
 #include "mesher/volume/SolidTetMesh.h"
+#include "mesher/volume/improve/TetScores.h"
 #include "mesher/volume/improve/VertexMetrics.h"
 
 namespace aniso::improve3d {
@@ -26,7 +28,10 @@ struct FlipCounts {
 
 class QualityFlips {
  public:
-  QualityFlips(SolidTetMesh& s, const VertexMetrics& vm, double gain) : s_(s), vm_(vm), gain_(gain) {}
+  /// With `scores` the current tets' scores are read from that cache and the created tets'
+  /// are stored in it (TetScores' contract; the mesh changes only by these flips meanwhile).
+  QualityFlips(SolidTetMesh& s, const VertexMetrics& vm, double gain, TetScores* scores = nullptr)
+      : s_(s), vm_(vm), gain_(gain), scores_(scores) {}
 
   /// Tries the flips of the live tet t; on success appends the new tets to `created` and
   /// returns true (t is then dead).
@@ -39,10 +44,16 @@ class QualityFlips {
  private:
   bool tryFace(del3d::TetId t, int i, std::vector<del3d::TetId>& created);
   bool tryEdge(del3d::TetId t, int i, int j, std::vector<del3d::TetId>& created);
+  double score(del3d::TetId t) const { return scores_ ? (*scores_)[t] : vm_.score(t); }
+  template <class Range>
+  double worst(const Range& tets) const;
+  template <std::size_t N>
+  void created(const std::array<del3d::TetId, N>& tets, std::vector<del3d::TetId>& out);
 
   SolidTetMesh& s_;
   const VertexMetrics& vm_;
   double gain_;
+  TetScores* scores_;
   FlipCounts counts_;
 };
 

@@ -18,7 +18,12 @@ constexpr double kAngleMoveScoreKeep = 0.5;
 }  // namespace
 
 void VertexMover::loadStar(del3d::VertexId v) {
-  vertexStar(s_.mesh, v, star_);
+  if (incidence_) {
+    star_.clear();
+    for (const std::uint32_t t : incidence_->of(v)) star_.push_back(del3d::TetId(t));
+  } else {
+    vertexStar(s_.mesh, v, star_);
+  }
   nbrs_.clear();
   if (seen_.size() < s_.mesh.numVertices()) seen_.resize(s_.mesh.numVertices(), 0);
   if (++stamp_ == 0) {
@@ -44,11 +49,12 @@ bool VertexMover::legal(del3d::VertexId v, const Vec3& p) const {
   return true;
 }
 
-void VertexMover::quality(del3d::VertexId v, const Vec3& p, double& worst, double& mean) const {
+void VertexMover::quality(del3d::VertexId v, const Vec3& p, double& worst, double& mean) {
   worst = 1e300;
   double sum = 0;
-  for (const del3d::TetId t : star_) {
-    const double e = vm_.scoreWith(s_.mesh.tetVertices(t), v.index, p);
+  trial_.resize(star_.size());
+  for (std::size_t k = 0; k < star_.size(); ++k) {
+    const double e = trial_[k] = vm_.scoreWith(s_.mesh.tetVertices(star_[k]), v.index, p);
     worst = std::min(worst, e);
     sum += e;
   }
@@ -58,15 +64,16 @@ void VertexMover::quality(del3d::VertexId v, const Vec3& p, double& worst, doubl
 Vec3 VertexMover::laplaceTarget(del3d::VertexId v, double lowGradation) const {
   const Vec3 q = s_.mesh.point(v);
   const Mat3& mq = vm_.at(v);
-  const double nq = mq.norm();
-  double grad = 0;
+  // the gradation max_w |M_w − M_q| / |M_q| against lowGradation, on squares
+  const double limit = lowGradation * lowGradation * mq.squaredNorm();
+  bool graded = lowGradation < 0;
   Vec3 mean = Vec3::Zero();
   for (const std::uint32_t w : nbrs_) {
     mean += s_.mesh.point(del3d::VertexId(w));
-    grad = std::max(grad, (vm_.at(del3d::VertexId(w)) - mq).norm() / nq);
+    if (!graded) graded = (vm_.at(del3d::VertexId(w)) - mq).squaredNorm() > limit;
   }
   mean /= static_cast<double>(nbrs_.size());
-  if (grad <= lowGradation) return mean;
+  if (!graded) return mean;
   // eq. 4.3: x^M = mean of M_i (P_i − Q), M_i the mid-edge tensor scaled to det M_Q.
   const double detQ = mq.determinant();
   Vec3 xm = Vec3::Zero();
@@ -91,7 +98,18 @@ bool VertexMover::smooth(del3d::VertexId v, double lowGradation, double qualityF
   const Vec3 q = s_.mesh.point(v);
   const Vec3 target = laplaceTarget(v, lowGradation);
   double w0, m0;
-  quality(v, q, w0, m0);
+  if (scores_) {
+    w0 = 1e300;
+    double sum = 0;
+    for (const del3d::TetId t : star_) {
+      const double e = (*scores_)[t];
+      w0 = std::min(w0, e);
+      sum += e;
+    }
+    m0 = sum / static_cast<double>(star_.size());
+  } else {
+    quality(v, q, w0, m0);
+  }
   const double floor = qualityFloor * qualityFloor * qualityFloor;  // scores are η³
   for (const double step : {1.0, 0.5}) {
     const Vec3 p = q + step * (target - q);
@@ -100,7 +118,18 @@ bool VertexMover::smooth(del3d::VertexId v, double lowGradation, double qualityF
     quality(v, p, w1, m1);  // floating point first: most rejected moves need no exact test
     const bool better = w0 < floor ? w1 > w0 : (w1 >= floor && m1 >= m0);
     if (better && legal(v, p)) {
+      const Mat3 before = vm_.at(v);
       move(v, p);
+      if (scores_) {
+        // the trial scores hold when v's tensor did not change (the star's metrics are the same)
+        const bool same = vm_.at(v) == before;
+        for (std::size_t k = 0; k < star_.size(); ++k) {
+          if (same)
+            scores_->set(star_[k], trial_[k]);
+          else
+            scores_->update(star_[k]);
+        }
+      }
       return true;
     }
   }

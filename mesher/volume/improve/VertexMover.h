@@ -22,7 +22,9 @@
 #include <vector>
 
 #include "mesher/volume/SolidTetMesh.h"
+#include "mesher/volume/improve/TetScores.h"
 #include "mesher/volume/improve/VertexMetrics.h"
+#include "mesher/volume/improve/VertexTets.h"
 
 namespace aniso::improve3d {
 
@@ -30,7 +32,15 @@ class VertexMover {
  public:
   VertexMover(SolidTetMesh& s, VertexMetrics& vm) : s_(s), vm_(vm) {}
 
+  /// With a score cache (setScores) the star's current scores are read from it and the
+  /// cache is kept exact on every accepted move (TetScores' contract).
   bool smooth(del3d::VertexId v, double lowGradation, double qualityFloor);
+  /// The cache smooth() reads and updates (nullptr: none). relocate() must not be used
+  /// while one is set (it leaves the cache stale).
+  void setScores(TetScores* scores) { scores_ = scores; }
+  /// Stars read from this incidence instead of walked (nullptr: walked); it must stay
+  /// valid (no topology change) while set.
+  void setIncidence(const VertexTets* incidence) { incidence_ = incidence; }
   /// angles: maximise the star's smallest min(θ_min, 180° − θ_max) (dihedral angles in
   /// each tet's metric) instead of its worst η_M, keeping the worst η_M³ above half its
   /// value.
@@ -39,7 +49,8 @@ class VertexMover {
  private:
   void loadStar(del3d::VertexId v);
   bool legal(del3d::VertexId v, const Vec3& p) const;
-  void quality(del3d::VertexId v, const Vec3& p, double& worst, double& mean) const;
+  /// Worst and mean score of the star with v at p; the per-tet scores are left in trial_.
+  void quality(del3d::VertexId v, const Vec3& p, double& worst, double& mean);
   Vec3 laplaceTarget(del3d::VertexId v, double lowGradation) const;
   Vec3 worstApex(del3d::VertexId v) const;
   double angleMeasure(del3d::VertexId v, const Vec3& p) const;
@@ -47,7 +58,10 @@ class VertexMover {
 
   SolidTetMesh& s_;
   VertexMetrics& vm_;
+  TetScores* scores_ = nullptr;
+  const VertexTets* incidence_ = nullptr;
   std::vector<del3d::TetId> star_;
+  std::vector<double> trial_;  ///< per star tet: the score of the last quality() call
   std::vector<std::uint32_t> nbrs_;  ///< the star's other vertices, in discovery order
   std::vector<std::uint32_t> seen_;  ///< per vertex: stamp_ when already in nbrs_
   std::uint32_t stamp_ = 0;

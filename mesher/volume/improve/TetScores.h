@@ -1,0 +1,38 @@
+#pragma once
+// Per-tet cache of VertexMetrics::score (the signed η_M³) for the smoothing and flipping of
+// one improvement pass (sec. 5.6): every live tet is measured once when the cache is built;
+// afterwards a tet's score is read, not recomputed, so a vertex star or an edge ring costs
+// no mean-ratio evaluation for its current configuration. Contract: the owner keeps it
+// exact — update() for every tet created (flips) and for every tet whose vertex moved or
+// whose vertex's tensor changed (smoothing); the Euclidean guard of VertexMetrics must stay
+// off while it is used (the cached value is the plain metric score). valid() recomputes
+// every live tet and compares, for tests. Slots beyond the built size are added on update.
+#include <cstddef>
+#include <vector>
+
+#include "mesher/delaunay3d/TetMesh.h"
+#include "mesher/volume/improve/VertexMetrics.h"
+
+namespace aniso::improve3d {
+
+class TetScores {
+ public:
+  TetScores(const del3d::TetMesh& mesh, const VertexMetrics& vm);
+  double operator[](del3d::TetId t) const { return score_[t.index]; }
+  /// Recomputes t's score.
+  void update(del3d::TetId t) { set(t, vm_.score(t)); }
+  /// Stores a score computed elsewhere (it must equal vm.score(t)).
+  void set(del3d::TetId t, double score) {
+    if (t.index >= score_.size()) score_.resize(mesh_.tetSlots(), 0.0);
+    score_[t.index] = score;
+  }
+  /// True when every live tet's cached score equals vm.score (exactly).
+  bool valid() const;
+
+ private:
+  const del3d::TetMesh& mesh_;
+  const VertexMetrics& vm_;
+  std::vector<double> score_;
+};
+
+}  // namespace aniso::improve3d

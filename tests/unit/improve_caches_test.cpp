@@ -1,0 +1,101 @@
+// Tests of the caches of the volume improvement (mesher/volume/improve/TetScores.h,
+// VertexTets.h) and of the acos-free dihedral test (TetQuality.h dihedralCosineOutside).
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "mesher/control/CSAnalytic3d.h"
+#include "mesher/volume/TetQuality.h"
+#include "mesher/volume/VolumeRefinement.h"
+#include "mesher/volume/improve/QualityFlips.h"
+#include "mesher/volume/improve/TetScores.h"
+#include "mesher/volume/improve/TetStar.h"
+#include "mesher/volume/improve/VertexMover.h"
+#include "mesher/volume/improve/VertexTets.h"
+#include "volume_refine_fixture.h"
+
+using namespace aniso;
+using namespace aniso::testing;
+
+namespace {
+
+constexpr double kDegToRad = 0.017453292519943295;
+
+TEST(DihedralCosineOutside, AgreesWithTheAngles) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int outside = 0, inside = 0;
+  for (int k = 0; k < 4000; ++k) {
+    Vec3 p[4];
+    for (auto& q : p) q = Vec3(u(rng), u(rng), u(rng));
+    if (k % 3 == 0) p[3] = 0.5 * (p[0] + p[1]) + 0.02 * (p[3] - p[2]);  // flat ones too
+    const DihedralRange r = tetDihedralRange(p[0], p[1], p[2], p[3]);
+    for (const double lo : {5.0, 15.0, 30.0})
+      for (const double hi : {175.0, 165.0}) {
+        const bool expected = r.minDeg < lo || r.maxDeg > hi;
+        // angles within 1e-9° of a threshold may fall either way
+        if (std::abs(r.minDeg - lo) < 1e-9 || std::abs(r.maxDeg - hi) < 1e-9) continue;
+        EXPECT_EQ(dihedralCosineOutside(p[0], p[1], p[2], p[3], std::cos(lo * kDegToRad), std::cos(hi * kDegToRad)),
+                  expected)
+            << k << " " << r.minDeg << " " << r.maxDeg;
+        ++(expected ? outside : inside);
+      }
+    // either orientation
+    EXPECT_EQ(dihedralCosineOutside(p[0], p[2], p[1], p[3], std::cos(15 * kDegToRad), std::cos(165 * kDegToRad)),
+              dihedralCosineOutside(p[0], p[1], p[2], p[3], std::cos(15 * kDegToRad), std::cos(165 * kDegToRad)));
+  }
+  EXPECT_GT(outside, 1000);  // both answers are exercised
+  EXPECT_GT(inside, 1000);
+}
+
+TEST(VertexTets, RowsAreTheStars) {
+  std::set<Triple> boundary;
+  SolidTetMesh s = cubeSolid(5, boundary);
+  const CSAnalytic3d cs(unitBox(), [](const Vec3&) { return Metric3d::isotropic(0.2); });
+  refineVolume(s, cs);
+  const improve3d::VertexTets inc(s.mesh);
+  ASSERT_EQ(inc.numVertices(), s.mesh.numVertices());
+  std::vector<del3d::TetId> star;
+  for (std::uint32_t v = 0; v < s.mesh.numVertices(); ++v) {
+    improve3d::vertexStar(s.mesh, del3d::VertexId(v), star);
+    std::vector<std::uint32_t> walked;
+    for (const del3d::TetId t : star) walked.push_back(t.index);
+    std::sort(walked.begin(), walked.end());
+    const auto row = inc.of(del3d::VertexId(v));
+    EXPECT_EQ(std::vector<std::uint32_t>(row.begin(), row.end()), walked) << v;
+  }
+}
+
+// Smoothing and flips keep the score cache exact (TetScores' contract), in a graded
+// anisotropic field where a moved vertex's tensor changes.
+TEST(TetScores, StaysExactThroughSmoothingAndFlips) {
+  std::set<Triple> boundary;
+  SolidTetMesh s = cubeSolid(6, boundary);
+  const CSAnalytic3d cs(unitBox(), [](const Vec3& x) {
+    return Metric3d::fromDirections(Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), 0.08 + 0.1 * x.x(), 0.15,
+                                    0.1 + 0.05 * x.z());
+  });
+  refineVolume(s, cs);
+  s.node.resize(s.mesh.numVertices(), -1);
+  improve3d::VertexMetrics vm(s.mesh, cs);
+  improve3d::TetScores scores(s.mesh, vm);
+  ASSERT_TRUE(scores.valid());
+  improve3d::VertexMover mover(s, vm);
+  mover.setScores(&scores);
+  {
+    const improve3d::VertexTets inc(s.mesh);
+    mover.setIncidence(&inc);
+    std::size_t moved = 0;
+    for (std::uint32_t v = 0; v < s.mesh.numVertices(); ++v) moved += mover.smooth(del3d::VertexId(v), 0.05, 0.3);
+    EXPECT_GT(moved, 0u);
+    mover.setIncidence(nullptr);
+  }
+  EXPECT_TRUE(scores.valid());
+  improve3d::QualityFlips flips(s, vm, 1e-3, &scores);
+  flips.run(2.0);
+  EXPECT_GT(flips.counts().total(), 0u);
+  EXPECT_TRUE(scores.valid());
+  EXPECT_TRUE(checkSolid(s, boundary).empty()) << joined(checkSolid(s, boundary));
+}
+
+}  // namespace
