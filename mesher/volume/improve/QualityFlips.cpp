@@ -43,6 +43,21 @@ void QualityFlips::created(const std::array<del3d::TetId, N>& tets, std::vector<
   out.insert(out.end(), tets.begin(), tets.end());
   if (scores_)
     for (const del3d::TetId t : tets) scores_->update(t);
+  if (!createdAt_.empty()) {
+    createdAt_.resize(s_.mesh.tetSlots(), 0);
+    failedAt_.resize(s_.mesh.tetSlots(), 0);
+    for (const del3d::TetId t : tets) createdAt_[t.index] = epoch() + 1;  // the flip is counted after this
+  }
+}
+
+bool QualityFlips::triedBefore(std::span<const del3d::TetId> tets) const {
+  if (createdAt_.empty()) return false;
+  for (const del3d::TetId r : tets) {
+    const std::uint32_t f = failedAt_[r.index];
+    if (f == 0 || f < createdAt_[r.index]) continue;  // no failed visit of this tet
+    if (std::all_of(tets.begin(), tets.end(), [&](del3d::TetId q) { return createdAt_[q.index] <= f; })) return true;
+  }
+  return false;
 }
 
 // Floating-point prefilters (quality first, then the exact legality of the kernel's
@@ -59,6 +74,8 @@ bool QualityFlips::tryFace(del3d::TetId t, int i, std::vector<del3d::TetId>& cre
   if (s_.mesh.isConstrained(t, i) || !s_.mesh.neighbour(t, i).valid()) return false;
   {
     const del3d::TetId u = s_.mesh.neighbour(t, i);
+    const del3d::TetId pair[2] = {t, u};
+    if (triedBefore(pair)) return false;
     const VertexId d = s_.mesh.vertex(t, i), e = s_.mesh.vertex(u, del3d::codeFace(s_.mesh.adjacentCode(t, i)));
     VertexId f[3];
     for (int m = 0; m < 3; ++m) f[m] = s_.mesh.vertex(t, del3d::kFaceVertex[i][m]);
@@ -79,7 +96,7 @@ bool QualityFlips::tryEdge(del3d::TetId t, int i, int j, std::vector<del3d::TetI
   std::array<del3d::TetId, 4> ring;
   std::array<del3d::VertexId, 4> apex;
   const int n = del3d::closedEdgeRing(s_.mesh, t, i, j, ring, apex);
-  if (n < 3) return false;
+  if (n < 3 || n > 4 || triedBefore(std::span<const del3d::TetId>(ring.data(), n))) return false;
   const VertexId a = s_.mesh.vertex(t, i), b = s_.mesh.vertex(t, j);
   if (n == 3) {
     const double after =
@@ -128,15 +145,22 @@ void QualityFlips::run(double candidateBelow) {
   for (std::uint32_t k = 0; k < s_.mesh.tetSlots(); ++k)
     if (s_.mesh.isAlive(del3d::TetId(k)) && score(del3d::TetId(k)) < key) work.push_back(del3d::TetId(k));
   const std::size_t cap = kMaxFlipsPerTet * work.size() + counts_.total();
+  failedAt_.assign(s_.mesh.tetSlots(), 0);
+  createdAt_.assign(s_.mesh.tetSlots(), 0);
   // Created tets are visited again only when they are candidates themselves (performance:
   // most flips leave good tets, whose visit finds nothing).
   std::vector<del3d::TetId> created;
   for (std::size_t k = 0; k < work.size() && counts_.total() < cap; ++k) {
     created.clear();
-    if (!visit(work[k], created)) continue;
+    if (!visit(work[k], created)) {
+      if (s_.mesh.isAlive(work[k])) failedAt_[work[k].index] = epoch();
+      continue;
+    }
     for (const del3d::TetId t : created)
       if (s_.mesh.isAlive(t) && score(t) < key) work.push_back(t);
   }
+  failedAt_.clear();
+  createdAt_.clear();
 }
 
 }  // namespace aniso::improve3d

@@ -7,9 +7,13 @@
 // VertexMetrics). visit() tries every flip of one tet and applies the first beneficial one;
 // run() visits the tets (all, or those below a quality: a flip only helps when one of the
 // tets it replaces is poor) and then the new ones until nothing changes (or a cap of
-// kMaxFlipsPerTet flips per initial tet is reached).
+// kMaxFlipsPerTet flips per initial tet is reached). run() remembers the visits that found
+// nothing: a face or an edge whose tets all existed when one of them was visited in vain was
+// tried then on the same tets (the mesh changes only by run()'s flips), so it is skipped.
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include "mesher/volume/SolidTetMesh.h"
@@ -45,6 +49,10 @@ class QualityFlips {
   bool tryFace(del3d::TetId t, int i, std::vector<del3d::TetId>& created);
   bool tryEdge(del3d::TetId t, int i, int j, std::vector<del3d::TetId>& created);
   double score(del3d::TetId t) const { return scores_ ? (*scores_)[t] : vm_.score(t); }
+  /// The flip epoch: 1 + the number of flips made.
+  std::uint32_t epoch() const { return static_cast<std::uint32_t>(counts_.total() + 1); }
+  /// run()'s memo: true when one of `tets` was visited in vain while all of them existed.
+  bool triedBefore(std::span<const del3d::TetId> tets) const;
   template <class Range>
   double worst(const Range& tets) const;
   template <std::size_t N>
@@ -55,6 +63,9 @@ class QualityFlips {
   double gain_;
   TetScores* scores_;
   FlipCounts counts_;
+  /// Per slot, during run() only: the epoch at which the visit of its tet found nothing (0:
+  /// none) and the epoch at which its tet was made (0: before run()).
+  std::vector<std::uint32_t> failedAt_, createdAt_;
 };
 
 }  // namespace aniso::improve3d

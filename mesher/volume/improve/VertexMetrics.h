@@ -53,6 +53,8 @@ class VertexMetrics {
   /// Euclidean only when `isotropicTensor`.
   double scorePoints(const Vec3* p, const Mat3& m, bool isotropicTensor) const;
   bool isIsotropic(del3d::VertexId v) const { return iso_[v.index] != 0; }
+  /// The tet with vertex ids v is measured in Euclidean space (its four tensors isotropic).
+  bool isIsotropic(const std::uint32_t* v) const { return isotropic(v); }
   /// A sliver: metric smallest dihedral below metricAngle, or a Euclidean dihedral angle
   /// below euclideanAngle or above 180° − euclideanAngle (degrees).
   bool isSliver(del3d::TetId t, double metricAngle, double euclideanAngle) const {

@@ -119,12 +119,15 @@ bool VertexMover::smooth(del3d::VertexId v, double lowGradation, double qualityF
     const bool better = w0 < floor ? w1 > w0 : (w1 >= floor && m1 >= m0);
     if (better && legal(v, p)) {
       const Mat3 before = vm_.at(v);
+      const bool wasIsotropic = vm_.isIsotropic(v);
       move(v, p);
       if (scores_) {
-        // the trial scores hold when v's tensor did not change (the star's metrics are the same)
+        // A trial score holds when the tet's metric did not change: v's tensor is the same,
+        // or the tet is isotropic now and v was before (its score is Euclidean, whatever the
+        // scales).
         const bool same = vm_.at(v) == before;
         for (std::size_t k = 0; k < star_.size(); ++k) {
-          if (same)
+          if (same || (wasIsotropic && vm_.isIsotropic(s_.mesh.tetVertices(star_[k]))))
             scores_->set(star_[k], trial_[k]);
           else
             scores_->update(star_[k]);
