@@ -61,29 +61,19 @@ double tetMinDihedral(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d
   return std::acos(cmax) * kRadToDeg;
 }
 
-namespace {
-/// x / sqrt(p) > bound, for p > 0, without the square root.
-bool ratioAbove(double x, double p, double bound) {
-  if (bound >= 0) return x > 0 && x * x > bound * bound * p;
-  return x >= 0 || x * x < bound * bound * p;
-}
-}  // namespace
-
 bool dihedralCosineOutside(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, double cosAbove,
                            double cosBelow) {
   const Vec3 n[4] = {(c - b).cross(d - b), (c - a).cross(d - a), (b - a).cross(d - a), (b - a).cross(c - a)};
   const double sq[4] = {n[0].squaredNorm(), n[1].squaredNorm(), n[2].squaredNorm(), n[3].squaredNorm()};
+  const double above2 = cosAbove * cosAbove, below2 = cosBelow * cosBelow;
   for (int i = 0; i < 4; ++i)
     for (int j = i + 1; j < 4; ++j) {
-      // the true cosine is −n_i·n_j / (|n_i| |n_j|) for pairs of equal parity, +n_i·n_j
-      // / (|n_i| |n_j|) for the others (cosines() below), whatever the volume's sign
-      const double dot = ((i ^ j) & 1) ? n[i].dot(n[j]) : -n[i].dot(n[j]);
-      const double p = sq[i] * sq[j];
-      if (!(p > 0)) {
-        if (0.0 > cosAbove || 0.0 < cosBelow) return true;
-        continue;
-      }
-      if (ratioAbove(dot, p, cosAbove) || ratioAbove(-dot, p, -cosBelow)) return true;
+      // the true cosine is x / (|n_i| |n_j|) with x = −n_i·n_j for pairs of equal parity
+      // and +n_i·n_j for the others (cosines() below), whatever the volume's sign; it is
+      // above cosAbove ≥ 0 when x > 0 and x² > cosAbove² |n_i|² |n_j|², below cosBelow ≤ 0
+      // when x < 0 and x² > cosBelow² |n_i|² |n_j|² (a zero normal: x = 0, neither)
+      const double x = ((i ^ j) & 1) ? n[i].dot(n[j]) : -n[i].dot(n[j]);
+      if (x * x > (x > 0 ? above2 : below2) * (sq[i] * sq[j])) return true;
     }
   return false;
 }

@@ -41,8 +41,10 @@ double tetMinDihedral(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d
 /// True when a dihedral angle of (a, b, c, d) has its cosine above cosAbove (an angle
 /// below acos(cosAbove)) or below cosBelow (an angle above acos(cosBelow)): the test of
 /// tetDihedralRange's angles against thresholds without acos and without normalising the
-/// face normals (cosines compared through their squares). A face of zero area gives the
-/// cosine 0 for its pairs, as tetDihedralRange does. Either sign of the volume.
+/// face normals (cosines compared through their squares). Requires cosAbove ≥ 0 ≥ cosBelow
+/// (thresholds at most 90°, at least 90°; cosBelow < −1 disables the large-angle test). A
+/// face of zero area gives the cosine 0 for its pairs, as tetDihedralRange does. Either sign
+/// of the volume.
 bool dihedralCosineOutside(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, double cosAbove,
                            double cosBelow);
 /// meshq.py's per-tet "dihedral" minimum (see above), for comparing with the referee.

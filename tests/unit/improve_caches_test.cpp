@@ -2,9 +2,11 @@
 // VertexTets.h) and of the acos-free dihedral test (TetQuality.h dihedralCosineOutside).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 #include "mesher/control/CSAnalytic3d.h"
+#include "mesher/predicates/Predicates.h"
 #include "mesher/volume/TetQuality.h"
 #include "mesher/volume/VolumeRefinement.h"
 #include "mesher/volume/improve/QualityFlips.h"
@@ -46,6 +48,27 @@ TEST(DihedralCosineOutside, AgreesWithTheAngles) {
   }
   EXPECT_GT(outside, 1000);  // both answers are exercised
   EXPECT_GT(inside, 1000);
+}
+
+// A certified score has the sign of orient3d (the convention legal() relies on), and the
+// certificate holds for flat tets down to the threshold.
+TEST(VertexMetrics, OrientationCertificateAgreesWithOrient3d) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  del3d::TetMesh mesh;
+  const CSAnalytic3d cs(unitBox(), [](const Vec3&) { return Metric3d::isotropic(0.1); });
+  improve3d::VertexMetrics vm(mesh, cs);
+  int certified = 0;
+  for (int k = 0; k < 20000; ++k) {
+    Vec3 p[4];
+    for (auto& q : p) q = Vec3(u(rng), u(rng), u(rng)) * std::pow(10.0, (k % 7) - 3);
+    if (k % 2) p[3] = p[0] + 0.3 * (p[1] - p[0]) + 0.6 * (p[2] - p[0]) + std::pow(10.0, -(k % 9)) * (p[3] - p[0]);
+    const double s = vm.scorePoints(p, Mat3::Identity(), true);
+    if (s <= improve3d::kOrientationCertificate) continue;
+    ++certified;
+    EXPECT_GT(predicates::orient3d(p[0].data(), p[1].data(), p[2].data(), p[3].data()), 0) << k;
+  }
+  EXPECT_GT(certified, 5000);
 }
 
 TEST(VertexTets, RowsAreTheStars) {

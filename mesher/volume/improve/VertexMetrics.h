@@ -28,6 +28,16 @@ namespace aniso::improve3d {
 /// sin of the regular tet's dihedral angle acos(1/3).
 inline constexpr double kRegularDihedralSine = 0.9428090415820634;
 
+/// A Euclidean score above this certifies the tet's positive orientation (the filter stage
+/// of orient3d, VertexMetrics::certifiesOrientation). Error analysis: the score is
+/// s = 432 D² / Σ³ · sign(D), D = (p2−p1)·((p3−p1)×(p4−p1)) evaluated in floating point from
+/// the coordinates, Σ the sum of the six squared edge lengths. Shewchuk's bound for that
+/// evaluation is |D̃ − D| ≤ (7 + 56ε) ε · permanent ≤ 1.6e−15 · S^{3/2} with S the sum of
+/// the three squared edge vectors (permanent ≤ ‖a‖₁‖b‖₁‖c‖₁ ≤ S^{3/2}), and S ≤ Σ; so
+/// s > 1.1e−27 (with rounding of s itself) implies D̃ > |D̃ − D|, D > 0. 1e−12 (η > 1e−4)
+/// leaves a margin of 15 orders of magnitude; tets below it take the exact predicate.
+inline constexpr double kOrientationCertificate = 1e-12;
+
 class VertexMetrics {
  public:
   VertexMetrics(const del3d::TetMesh& mesh, const ControlSpace3d& cs) : mesh_(mesh), cs_(cs) { sync(); }
@@ -53,6 +63,13 @@ class VertexMetrics {
   /// Euclidean only when `isotropicTensor`.
   double scorePoints(const Vec3* p, const Mat3& m, bool isotropicTensor) const;
   bool isIsotropic(del3d::VertexId v) const { return iso_[v.index] != 0; }
+  /// True when `score`, computed by score()/scoreWith() for the tet with vertex ids v (in
+  /// the current guard mode), certifies that the tet is positively oriented in space: it is
+  /// (or bounds from above) the Euclidean score — the guard is on or the tet is
+  /// isotropic — and exceeds kOrientationCertificate. False: decide with orient3d.
+  bool certifiesOrientation(const std::uint32_t* v, double score) const {
+    return score > kOrientationCertificate && (guardEuclidean_ || isotropic(v));
+  }
   /// The tet with vertex ids v is measured in Euclidean space (its four tensors isotropic).
   bool isIsotropic(const std::uint32_t* v) const { return isotropic(v); }
   /// A sliver: metric smallest dihedral below metricAngle, or a Euclidean dihedral angle

@@ -38,10 +38,11 @@ void VertexMover::loadStar(del3d::VertexId v) {
     }
 }
 
-bool VertexMover::legal(del3d::VertexId v, const Vec3& p) const {
+bool VertexMover::legal(del3d::VertexId v, const Vec3& p, bool trialScored) const {
   const double xyz[3] = {p.x(), p.y(), p.z()};
-  for (const del3d::TetId t : star_) {
-    const std::uint32_t* tv = s_.mesh.tetVertices(t);
+  for (std::size_t k = 0; k < star_.size(); ++k) {
+    const std::uint32_t* tv = s_.mesh.tetVertices(star_[k]);
+    if (trialScored && vm_.certifiesOrientation(tv, trial_[k])) continue;
     const double* c[4];
     for (int i = 0; i < 4; ++i) c[i] = tv[i] == v.index ? xyz : s_.mesh.coords(del3d::VertexId(tv[i]));
     if (predicates::orient3d(c[0], c[1], c[2], c[3]) <= 0) return false;
@@ -117,7 +118,7 @@ bool VertexMover::smooth(del3d::VertexId v, double lowGradation, double qualityF
     double w1, m1;
     quality(v, p, w1, m1);  // floating point first: most rejected moves need no exact test
     const bool better = w0 < floor ? w1 > w0 : (w1 >= floor && m1 >= m0);
-    if (better && legal(v, p)) {
+    if (better && legal(v, p, true)) {
       const Mat3 before = vm_.at(v);
       const bool wasIsotropic = vm_.isIsotropic(v);
       move(v, p);
@@ -192,7 +193,7 @@ bool VertexMover::relocate(del3d::VertexId v, bool angles) {
       if (!(w > kAngleMoveScoreKeep * worst0)) return;
       w = angleMeasure(v, p);
     }
-    if (w > best && legal(v, p)) best = w, bestP = p;
+    if (w > best && legal(v, p, true)) best = w, bestP = p;
   };
   consider(laplaceTarget(v, -1.0));
   const Vec3 apex = worstApex(v);

@@ -48,7 +48,10 @@ class VertexMover {
 
  private:
   void loadStar(del3d::VertexId v);
-  bool legal(del3d::VertexId v, const Vec3& p) const;
+  /// Every star tet positive with v at p; right after quality(v, p) (`trialScored`) the
+  /// trial scores that certify the orientation (VertexMetrics::certifiesOrientation) stand
+  /// for orient3d.
+  bool legal(del3d::VertexId v, const Vec3& p, bool trialScored) const;
   /// Worst and mean score of the star with v at p; the per-tet scores are left in trial_.
   void quality(del3d::VertexId v, const Vec3& p, double& worst, double& mean);
   Vec3 laplaceTarget(del3d::VertexId v, double lowGradation) const;
