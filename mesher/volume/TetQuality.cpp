@@ -119,17 +119,59 @@ void cosines(const Vec3 n[4], double& trueMin, double& trueMax, double& refereeM
 
 }  // namespace
 
+namespace {
+
+/// The per-vertex tensors the report measures with, as refine3d::VertexTensors keeps them:
+/// an isotropic tensor is s·I (its scale), another the full matrix. Queried from the
+/// control space, or read from the improvement's VertexMetrics (same values: both store
+/// cs.getMetric at the vertex's position and reduce s·I within isotropicScale's tolerance
+/// to its scale).
+class ReportTensors {
+ public:
+  ReportTensors(const del3d::TetMesh& mesh, const ControlSpace3d& cs, const improve3d::VertexMetrics* metrics)
+      : metrics_(metrics) {
+    if (!metrics) {
+      queried_ = std::make_unique<refine3d::VertexTensors>(mesh, cs);
+      return;
+    }
+    scale_.resize(mesh.numVertices(), 0.0);
+    for (std::uint32_t v = 0; v < scale_.size(); ++v)
+      if (metrics->isIsotropic(del3d::VertexId(v))) scale_[v] = isotropicScale(metrics->at(del3d::VertexId(v)));
+  }
+  double scale(del3d::VertexId v) const { return queried_ ? queried_->scale(v) : scale_[v.index]; }
+  Mat3 at(del3d::VertexId v) const {
+    if (queried_) return queried_->at(v);
+    const double s = scale_[v.index];
+    return s > 0 ? Mat3(s * Mat3::Identity()) : metrics_->at(v);
+  }
+  bool tetIsotropic(const std::uint32_t* v) const {
+    return scale(del3d::VertexId(v[0])) > 0 && scale(del3d::VertexId(v[1])) > 0 && scale(del3d::VertexId(v[2])) > 0 &&
+           scale(del3d::VertexId(v[3])) > 0;
+  }
+  Mat3 tetMetric(const std::uint32_t* v) const {
+    return 0.25 * (at(del3d::VertexId(v[0])) + at(del3d::VertexId(v[1])) + at(del3d::VertexId(v[2])) +
+                   at(del3d::VertexId(v[3])));
+  }
+
+ private:
+  const improve3d::VertexMetrics* metrics_;
+  std::unique_ptr<refine3d::VertexTensors> queried_;
+  std::vector<double> scale_;
+};
+
+}  // namespace
+
 // One pass: the angles are compared as cosines (acos is decreasing), converted once at the
 // end. The metric of a tet is the mean of its vertices' tensors and that of an edge the mean
 // of its ends' (as the refinement's edge check and the improvement measure them): one
 // control-space query per vertex instead of one per tet and one per edge.
 void accumulateTetQuality(const SolidTetMesh& s, const ControlSpace3d* cs, TetQualitySummary& out,
-                          const VolumeMetricSpace* volume) {
+                          const VolumeMetricSpace* volume, const improve3d::VertexMetrics* metrics) {
   const del3d::TetMesh& mesh = s.mesh;
   const double cosSliver = std::cos(kSliverDihedralDeg / kRadToDeg);
   double cmin = 1, cmax = -1, refereeCmax = -1;
-  std::unique_ptr<refine3d::VertexTensors> vt;
-  if (cs) vt = std::make_unique<refine3d::VertexTensors>(mesh, *cs);
+  std::unique_ptr<ReportTensors> vt;
+  if (cs) vt = std::make_unique<ReportTensors>(mesh, *cs, metrics);
   for (std::uint32_t k = 0; k < mesh.tetSlots(); ++k) {
     const del3d::TetId t(k);
     if (!mesh.isAlive(t)) continue;
@@ -151,8 +193,7 @@ void accumulateTetQuality(const SolidTetMesh& s, const ControlSpace3d* cs, TetQu
     refereeCmax = std::max(refereeCmax, ref);
     if (hi > cosSliver) ++out.belowDihedral;
     if (!vt) continue;
-    double scale;
-    if (vt->tetScale(tv, scale)) {
+    if (vt->tetIsotropic(tv)) {
       out.etaM.add(eta);  // a mean of s·I tensors is isotropic: η_M = η
     } else {
       const Mat3 m = vt->tetMetric(tv);

@@ -24,6 +24,7 @@
 #include "mesher/metric/QualityStats.h"
 #include "mesher/volume/SolidTetMesh.h"
 #include "mesher/volume/VolumeControlSpace.h"
+#include "mesher/volume/improve/VertexMetrics.h"
 
 namespace aniso {
 
@@ -75,7 +76,11 @@ inline constexpr double kSliverDihedralDeg = 5.0;
 /// VolumeControlSpace.h, usually cs itself) muMUser measures the edges in the user's metric
 /// (each vertex's tensor times volume->lengthFactorAt, the edge in the mean of its ends'),
 /// without it muMUser = muM.
+/// With `metrics` (the improvement's per-vertex tensors of cs, current for every vertex of
+/// s: improveVolume's VertexMetrics) the vertex tensors are read from it instead of being
+/// queried again; the result is the same.
 void accumulateTetQuality(const SolidTetMesh& s, const ControlSpace3d* cs, TetQualitySummary& out,
-                          const VolumeMetricSpace* volume = nullptr);
+                          const VolumeMetricSpace* volume = nullptr,
+                          const improve3d::VertexMetrics* metrics = nullptr);
 
 }  // namespace aniso

@@ -1,6 +1,7 @@
 #include "mesher/volume/VolumeImprovement.h"
 
 #include <chrono>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,10 +48,14 @@ std::size_t smoothVertices(const SolidTetMesh& s, improve3d::VertexMover& mover,
 
 }  // namespace
 
-VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, const VolumeImproveOptions& o) {
+VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, const VolumeImproveOptions& o,
+                                 improve3d::VertexMetrics* metrics) {
   VolumeImproveStats st;
   s.node.resize(s.mesh.numVertices(), -1);
-  improve3d::VertexMetrics vm(s.mesh, cs);
+  std::optional<improve3d::VertexMetrics> own;
+  if (!metrics) metrics = &own.emplace(s.mesh, cs);
+  improve3d::VertexMetrics& vm = *metrics;
+  vm.sync();
   improve3d::VertexMover mover(s, vm);
   for (int pass = 0; pass < o.passes; ++pass) {
     auto t0 = Clock::now();
@@ -82,6 +87,7 @@ VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, cons
   } else {
     st.sliversBefore = st.sliversAfter = improve3d::countSlivers(s, vm, o.sliverAngleDeg, o.euclideanSliverAngleDeg);
   }
+  vm.sync();
   st.sliverSeconds = since(t0);
   logDebug("volume improvement: smoothing " + std::to_string(st.smoothingSeconds) + " s (" + std::to_string(st.moved) +
            " moves), flips " + std::to_string(st.flipSeconds) + " s (" +

@@ -29,6 +29,7 @@
 
 #include "mesher/control/ControlSpace3d.h"
 #include "mesher/volume/SolidTetMesh.h"
+#include "mesher/volume/improve/VertexMetrics.h"
 
 namespace aniso {
 
@@ -62,6 +63,10 @@ struct VolumeImproveStats {
   double smoothingSeconds = 0, flipSeconds = 0, sliverSeconds = 0;  ///< wall time of the steps
 };
 
-VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, const VolumeImproveOptions& o = {});
+/// `metrics` (optional): the per-vertex tensors to use, built on s.mesh and cs by the caller;
+/// afterwards they are current for every vertex (moved ones re-queried, new ones added), so
+/// that the quality report can read them (accumulateTetQuality) instead of querying again.
+VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, const VolumeImproveOptions& o = {},
+                                 improve3d::VertexMetrics* metrics = nullptr);
 
 }  // namespace aniso

@@ -173,9 +173,10 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
     p.outcome.counters.emplace_back("refinement_abandoned", static_cast<double>(rs.abandoned));
     if (!validated(p, in, bt.tets, b, "refinement")) return p;
   }
+  std::optional<improve3d::VertexMetrics> metrics;  // the improvement's, read by the report
   if (in.improve && cs) {
     t0 = Clock::now();
-    const VolumeImproveStats is = improveVolume(bt.tets, *cs);
+    const VolumeImproveStats is = improveVolume(bt.tets, *cs, {}, &metrics.emplace(bt.tets.mesh, *cs));
     p.outcome.times.emplace_back("volume improvement", since(t0));
     p.outcome.counters.emplace_back("improvement_moved", static_cast<double>(is.moved));
     p.outcome.counters.emplace_back("improvement_flips", static_cast<double>(is.flips23 + is.flips32 + is.flips44));
@@ -187,7 +188,7 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
   }
   if (in.quality) {
     t0 = Clock::now();
-    accumulateTetQuality(bt.tets, cs.get(), p.outcome.quality, cs.get());
+    accumulateTetQuality(bt.tets, cs.get(), p.outcome.quality, cs.get(), metrics ? &*metrics : nullptr);
     p.outcome.times.emplace_back("volume quality", since(t0));
   }
   extract(bt.tets, p);

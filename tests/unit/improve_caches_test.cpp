@@ -8,6 +8,7 @@
 #include "mesher/control/CSAnalytic3d.h"
 #include "mesher/predicates/Predicates.h"
 #include "mesher/volume/TetQuality.h"
+#include "mesher/volume/VolumeImprovement.h"
 #include "mesher/volume/VolumeRefinement.h"
 #include "mesher/volume/improve/QualityFlips.h"
 #include "mesher/volume/improve/TetScores.h"
@@ -123,6 +124,39 @@ TEST(TetScores, StaysExactThroughSmoothingAndFlips) {
                                     0.1 + 0.05 * x.z());
   }));
   checkCacheStaysExact(
+      CSAnalytic3d(unitBox(), [](const Vec3& x) { return Metric3d::isotropic(0.06 + 0.12 * x.z()); }));
+}
+
+}  // namespace
+
+namespace {
+
+// The report reads the improvement's tensors (accumulateTetQuality with metrics) and gets
+// exactly what it gets by querying the control space again.
+void checkReportFromImprovementTensors(const ControlSpace3d& cs) {
+  std::set<Triple> boundary;
+  SolidTetMesh s = cubeSolid(6, boundary);
+  refineVolume(s, cs);
+  improve3d::VertexMetrics vm(s.mesh, cs);
+  improveVolume(s, cs, {}, &vm);
+  TetQualitySummary queried, read;
+  accumulateTetQuality(s, &cs, queried);
+  accumulateTetQuality(s, &cs, read, nullptr, &vm);
+  EXPECT_EQ(read.tets, queried.tets);
+  EXPECT_EQ(read.etaM.mean(), queried.etaM.mean());
+  EXPECT_EQ(read.etaM.min(), queried.etaM.min());
+  EXPECT_EQ(read.muM.count(), queried.muM.count());
+  EXPECT_EQ(read.muM.mean(), queried.muM.mean());
+  EXPECT_EQ(read.muM.max(), queried.muM.max());
+  EXPECT_EQ(read.muMUser.mean(), queried.muMUser.mean());
+}
+
+TEST(TetQuality, ReadsTheImprovementsTensors) {
+  checkReportFromImprovementTensors(CSAnalytic3d(unitBox(), [](const Vec3& x) {
+    return Metric3d::fromDirections(Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), 0.08 + 0.1 * x.x(), 0.15,
+                                    0.1 + 0.05 * x.z());
+  }));
+  checkReportFromImprovementTensors(
       CSAnalytic3d(unitBox(), [](const Vec3& x) { return Metric3d::isotropic(0.06 + 0.12 * x.z()); }));
 }
 
