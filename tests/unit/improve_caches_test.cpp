@@ -24,6 +24,17 @@ namespace {
 
 constexpr double kDegToRad = 0.017453292519943295;
 
+/// Graded fields in which a moved vertex's tensor changes.
+CSAnalytic3d gradedAnisotropic() {
+  return CSAnalytic3d(unitBox(), [](const Vec3& x) {
+    return Metric3d::fromDirections(Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), 0.08 + 0.1 * x.x(), 0.15,
+                                    0.1 + 0.05 * x.z());
+  });
+}
+CSAnalytic3d gradedIsotropic() {
+  return CSAnalytic3d(unitBox(), [](const Vec3& x) { return Metric3d::isotropic(0.06 + 0.12 * x.z()); });
+}
+
 TEST(DihedralCosineOutside, AgreesWithTheAngles) {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -119,12 +130,8 @@ void checkCacheStaysExact(const ControlSpace3d& cs) {
 }
 
 TEST(TetScores, StaysExactThroughSmoothingAndFlips) {
-  checkCacheStaysExact(CSAnalytic3d(unitBox(), [](const Vec3& x) {
-    return Metric3d::fromDirections(Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), 0.08 + 0.1 * x.x(), 0.15,
-                                    0.1 + 0.05 * x.z());
-  }));
-  checkCacheStaysExact(
-      CSAnalytic3d(unitBox(), [](const Vec3& x) { return Metric3d::isotropic(0.06 + 0.12 * x.z()); }));
+  checkCacheStaysExact(gradedAnisotropic());
+  checkCacheStaysExact(gradedIsotropic());
 }
 
 }  // namespace
@@ -152,12 +159,8 @@ void checkReportFromImprovementTensors(const ControlSpace3d& cs) {
 }
 
 TEST(TetQuality, ReadsTheImprovementsTensors) {
-  checkReportFromImprovementTensors(CSAnalytic3d(unitBox(), [](const Vec3& x) {
-    return Metric3d::fromDirections(Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), 0.08 + 0.1 * x.x(), 0.15,
-                                    0.1 + 0.05 * x.z());
-  }));
-  checkReportFromImprovementTensors(
-      CSAnalytic3d(unitBox(), [](const Vec3& x) { return Metric3d::isotropic(0.06 + 0.12 * x.z()); }));
+  checkReportFromImprovementTensors(gradedAnisotropic());
+  checkReportFromImprovementTensors(gradedIsotropic());
 }
 
 }  // namespace
