@@ -12,9 +12,10 @@ constexpr double kU = 0x1p-53;
 constexpr double kSqrt3 = 1.7320508075688774;  // rounded up
 /// η of the certificate (Circumsphere.h).
 constexpr double kEta = 0x1p-30;
-/// Magnitudes for which the first-order bounds hold (no underflow or overflow on the way).
-constexpr double kMinL = 0x1p-400, kMaxL = 0x1p400;
-constexpr double kMinR2 = 0x1p-800, kMaxR2 = 0x1p800;
+/// Magnitudes for which the first-order bounds hold and the squared certificate below stays
+/// finite (no underflow or overflow on the way; an underflow of its right side only refuses).
+constexpr double kMinL = 0x1p-200, kMaxL = 0x1p200;
+constexpr double kMinR2 = 0x1p-400, kMaxR2 = 0x1p400;
 
 /// circumcentreOffset, also returning det and L (the largest squared edge length at a).
 bool offset(const double* a, const double* b, const double* c, const double* d, double centre[3], double& det,
@@ -59,10 +60,12 @@ CachedSphere cachedSphere(const double* a, const double* b, const double* c, con
   const double m = std::max({std::fabs(o[0]), std::fabs(o[1]), std::fabs(o[2])});
   const double cmax = std::max({std::fabs(s.centre[0]), std::fabs(s.centre[1]), std::fabs(s.centre[2])});
   const double detError = 12 * kU * kSqrt3 * l32;
-  const double eo = kSqrt3 * ((42 * kU * l * l + 42 * kU * m * l32) / absDet + kU * m);
-  const double ec = eo + kSqrt3 * kU * cmax;
+  // E_c ≤ η r̃ multiplied by |d̂et| and squared (no division, no root; the few roundings of
+  // this comparison are far inside the factor 2.6 between τ and the bound).
+  const double ecDet = kSqrt3 * ((42 * kU * l * l + 42 * kU * m * l32) + kU * (m + cmax) * absDet);
+  const double etaDet = kEta * absDet, lhs = ecDet * ecDet;
   const bool certified = l >= kMinL && l <= kMaxL && r2 >= kMinR2 && r2 <= kMaxR2 && detError <= 0.5 * absDet &&
-                         ec <= kEta * std::sqrt(r2) && std::isfinite(cmax);
+                         std::isfinite(lhs) && lhs <= etaDet * etaDet * r2;
   s.radius2 = certified ? r2 : -r2;
   return s;
 }

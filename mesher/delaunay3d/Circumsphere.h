@@ -16,8 +16,10 @@
 // and, when |d̂et − det| ≤ |d̂et| / 2, the computed offset and centre c̃ = a + õ satisfy
 //   |õ − o| ≤ e_o = √3 ((42u L² + 42u m L^{3/2}) / |d̂et| + u m),  m = max_k |õ_k|,
 //   |c̃ − c| ≤ E_c = e_o + √3 u max_k |c̃_k|.
-// A sphere is certified when E_c ≤ η r̃ (η = 2^−30) and its magnitudes are far from
-// underflow and overflow. For such a sphere and any p, with y = p − c̃ (rounded),
+// A sphere is certified when E_c ≤ η r̃ (η = 2^−30; evaluated as (E_c |d̂et|)² ≤
+// (η |d̂et|)² r̃²) and its magnitudes are far from underflow and overflow (L in
+// [2^−200, 2^200], r̃² in [2^−400, 2^400]). For such a sphere and any p, with y = p − c̃
+// (rounded),
 //   |D̃ − D| ≤ 2 E_c |y| + E_c² + e_o (2 r̃ + e_o) + 3.1u r̃² + 5.1u |y|² + u |D̃|
 //           ≤ (3η + 2η² + 5.1u)(r̃² + |y|²) + u |D̃|,
 // where D = |p − c|² − R² is the exact power of p (its sign is the exact in-sphere sign:

@@ -433,14 +433,16 @@ InsertResult Inserter::insert(const Vec3& p, const InsertOptions& options) {
   p_[1] = p.y();
   p_[2] = p.z();
   m_ = (transform && !transform->isIdentity(0.0)) ? transform : nullptr;
-  if (!start.valid() || !mesh_.isAlive(start)) start = mesh_.isAlive(last_) ? last_ : TetId();
-  for (std::uint32_t k = 0; !start.valid() && k < mesh_.tetSlots(); ++k)
-    if (mesh_.isAlive(TetId(k))) start = TetId(k);
-  if (!start.valid()) {
-    res.status = InsertStatus::Outside;
-    return res;
+  if (!options.located) {
+    if (!start.valid() || !mesh_.isAlive(start)) start = mesh_.isAlive(last_) ? last_ : TetId();
+    for (std::uint32_t k = 0; !start.valid() && k < mesh_.tetSlots(); ++k)
+      if (mesh_.isAlive(TetId(k))) start = TetId(k);
+    if (!start.valid()) {
+      res.status = InsertStatus::Outside;
+      return res;
+    }
   }
-  const LocateResult loc = locate(mesh_, p_, start, rng_);
+  const LocateResult loc = options.located ? *options.located : locate(mesh_, p_, start, rng_);
   res.walkSteps = loc.steps;
   res.tet = loc.tet;
   if (loc.status == LocateStatus::Outside) {

@@ -63,6 +63,9 @@ struct InsertOptions {
   /// Refinement mode (thesis sec. 5.2.1): cancel the insertion, status Pointless, unless
   /// this tet is in the final cavity (the point was meant to improve it).
   TetId mustRemove;
+  /// The caller's locate() of this very point in the current mesh, if it has one (the walk
+  /// is then not repeated; `start` is ignored).
+  const LocateResult* located = nullptr;
 };
 
 struct InsertResult {
@@ -80,7 +83,7 @@ class Inserter {
   /// Inserts p (see InsertOptions).
   InsertResult insert(const Vec3& p, const InsertOptions& options);
   InsertResult insert(const Vec3& p, TetId start = TetId(), const Mat3* transform = nullptr) {
-    return insert(p, InsertOptions{start, transform, TetId()});
+    return insert(p, InsertOptions{start, transform, TetId(), nullptr});
   }
 
   /// Tets created by the last successful insertion (they may reuse freed slots).

@@ -193,6 +193,7 @@ Refiner::Outcome Refiner::tryInsert(const Vec3& p, TetId k, bool mle) {
   if (mle && nearHull(p, mp, loc.tet)) return Outcome::Close;
   del3d::InsertOptions io;
   io.start = loc.tet;
+  io.located = &loc;
   // An isotropic M(P) = I/h gives the same in-sphere signs as the identity, exactly.
   io.transform = isotropicScale(mp.matrix()) > 0 ? nullptr : &mp.matrix();
   io.mustRemove = k;

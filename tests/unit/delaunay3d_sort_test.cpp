@@ -2,6 +2,8 @@
 // walk-seeding octree.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <algorithm>
 #include <numeric>
 #include <random>
@@ -75,6 +77,32 @@ TEST(Delaunay3dSort, HilbertAndBrioOrdersArePermutations) {
   EXPECT_LT(lastAlong, 0.15 * random);
   EXPECT_TRUE(hilbertOrder(std::vector<Vec3>{}).empty());
   EXPECT_TRUE(isPermutation(brioOrder(std::vector<Vec3>(5, Vec3(1, 1, 1))), 5));
+}
+
+TEST(Delaunay3dSort, LargeHilbertOrderKeepsTiesInIndexOrderAndNonFiniteLast) {
+  // Above the radix threshold: equal keys (repeated points) in increasing index order,
+  // non-finite points last in index order, as the pair sort of smaller inputs does.
+  std::vector<Vec3> pts = randomPoints(6000, 3);
+  for (std::size_t k = 0; k < 300; ++k) pts.push_back(pts[(k * 37) % 6000]);
+  for (int k = 0; k < 7; ++k) pts.insert(pts.begin() + 1000 * k, Vec3(std::nan(""), 0, 0));
+  const auto h = hilbertOrder(pts);
+  ASSERT_TRUE(isPermutation(h, pts.size()));
+  std::vector<std::size_t> position(pts.size());
+  for (std::size_t k = 0; k < h.size(); ++k) position[h[k]] = k;
+  for (std::size_t k = 0; k < 7; ++k) EXPECT_EQ(h[pts.size() - 7 + k], 1000 * k);
+  for (std::size_t a = 0; a < pts.size(); ++a) {
+    if (!pts[a].allFinite()) continue;
+    for (std::size_t b = a + 1; b < pts.size(); ++b) {
+      if (pts[b] == pts[a]) {
+        EXPECT_LT(position[a], position[b]);
+      }
+    }
+  }
+  double along = 0, random = 0;
+  for (std::size_t k = 1; k + 7 < h.size(); ++k) along += (pts[h[k]] - pts[h[k - 1]]).norm();
+  const std::vector<Vec3> plain = randomPoints(6000, 3);
+  for (std::size_t k = 1; k < plain.size(); ++k) random += (plain[k] - plain[k - 1]).norm();
+  EXPECT_LT(along, 0.1 * random);
 }
 
 TEST(Delaunay3dSort, SeedOctreeShortensUnsortedWalks) {
