@@ -24,6 +24,9 @@ constexpr int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 /// edgeLengthMax / kEdgePrefilter there are the midpoint metrics queried (gradation γ_M ≤ 4
 /// changes a length by far less than this factor across one element).
 constexpr double kEdgePrefilter = 1.3;
+/// A CCS point in an anisotropic M_K is cancelled when a vertex near it lies inside K's
+/// circumsphere in M_K by more than this fraction of the radius (see the header).
+constexpr double kCircumsphereMargin = 0.99;
 /// Floor of the predicted count in the vertex budget (small or coarse solids).
 constexpr double kMinBudgetTets = 1e5;
 /// Arrays reserved for this multiple of the eq. 6.2 prediction, which under-estimates (unit
@@ -66,8 +69,14 @@ class Refiner {
   void process(const refine3d::RefineQueue::Entry& e);
   bool longestInnerEdgeMidpoint(TetId k, const Mat3& m, const TetPoints& tp, Vec3& out) const;
   enum class Outcome { Inserted, Outside, Close, Metric, Refused };
-  Outcome tryInsert(const Vec3& p, TetId k, bool mle);
+  /// sphere: for a CCS point in an anisotropic M_K, M_K and K's circumradius in it.
+  struct Sphere {
+    const Mat3* metric = nullptr;
+    double radius = 0;
+  };
+  Outcome tryInsert(const Vec3& p, TetId k, bool mle, const Sphere& sphere);
   bool nearHull(const Vec3& p, const Metric3d& m, TetId c) const;
+  bool insideSphere(const Vec3& p, const Sphere& sphere, TetId c) const;
 
   SolidTetMesh& s_;
   del3d::TetMesh& mesh_;
@@ -96,9 +105,9 @@ double Refiner::evaluate(TetId t) {
   ++st_.evaluated;
   const std::uint32_t* tv = mesh_.tetVertices(t);
   double scale;
-  if (vt_.tetScale(tv, scale)) return evaluateIsotropic(t, tv, scale);
+  if (vt_.tetLengthScale(tv, scale)) return evaluateIsotropic(t, tv, scale);
   const TetPoints tp = pointsOf(mesh_, t);
-  const Mat3 m = vt_.tetMetric(tv);
+  const Mat3 m = vt_.tetLengthMetric(tv);
   double q = refine3d::metricSphereQuality(m, tp.p[0], tp.p[1], tp.p[2], tp.p[3]);
   if (q < o_.qualityThreshold) return q;
   // 5.5.1: a tet of good q with a too long edge is refined all the same.
@@ -108,7 +117,7 @@ double Refiner::evaluate(TetId t) {
     if (s_.isFixed(VertexId(tv[e[0]])) && s_.isFixed(VertexId(tv[e[1]]))) continue;
     const Vec3 d = tp.p[e[1]] - tp.p[e[0]];
     if ((m * d).norm() * kEdgePrefilter <= o_.edgeLengthMax) continue;
-    const Mat3 mid = 0.5 * (vt_.at(VertexId(tv[e[0]])) + vt_.at(VertexId(tv[e[1]])));
+    const Mat3 mid = vt_.edgeLengthMetric(VertexId(tv[e[0]]), VertexId(tv[e[1]]));
     if ((mid * d).norm() > o_.edgeLengthMax) return 0.95 * o_.qualityThreshold;
   }
   return q;
@@ -116,7 +125,7 @@ double Refiner::evaluate(TetId t) {
 
 // evaluate() for a tet whose vertices are all isotropic: its metric is scale·I, so q(K) is
 // (R_I / (scale·R))³ with R the Euclidean circumradius and a metric length scale·|d| (an
-// edge's midpoint metric is the mean of its ends' scales). Runs for every new tet (26 per
+// edge's midpoint metric is eq. 2.18 of its ends' scales). Runs for every new tet (26 per
 // insertion on the cube): R comes from the Inserter's sphere cache, the edges from the raw
 // coordinates.
 double Refiner::evaluateIsotropic(TetId t, const std::uint32_t* tv, double scale) const {
@@ -141,7 +150,8 @@ double Refiner::evaluateIsotropic(TetId t, const std::uint32_t* tv, double scale
     if (l2 <= shortEnough * shortEnough) continue;
     const VertexId va(tv[e[0]]), vb(tv[e[1]]);
     if (s_.isFixed(va) && s_.isFixed(vb)) continue;
-    if (0.5 * (vt_.scale(va) + vt_.scale(vb)) * std::sqrt(l2) > o_.edgeLengthMax) return 0.95 * o_.qualityThreshold;
+    if (refine3d::edgeLengthScale(vt_.scale(va), vt_.scale(vb)) * std::sqrt(l2) > o_.edgeLengthMax)
+      return 0.95 * o_.qualityThreshold;
   }
   return q;
 }
@@ -182,7 +192,29 @@ bool Refiner::nearHull(const Vec3& p, const Metric3d& m, TetId c) const {
   return false;
 }
 
-Refiner::Outcome Refiner::tryInsert(const Vec3& p, TetId k, bool mle) {
+// Is a vertex of tet c, of its neighbours or of theirs closer to p than
+// kCircumsphereMargin · sphere.radius in sphere.metric?
+bool Refiner::insideSphere(const Vec3& p, const Sphere& sphere, TetId c) const {
+  const double r = kCircumsphereMargin * sphere.radius;
+  auto inside = [&](TetId t) {
+    for (int i = 0; i < 4; ++i)
+      if ((*sphere.metric * (mesh_.point(mesh_.vertex(t, i)) - p)).norm() < r) return true;
+    return false;
+  };
+  if (inside(c)) return true;
+  for (int i = 0; i < 4; ++i) {
+    const TetId n = mesh_.neighbour(c, i);
+    if (!n.valid()) continue;
+    if (inside(n)) return true;
+    for (int j = 0; j < 4; ++j) {
+      const TetId n2 = mesh_.neighbour(n, j);
+      if (n2.valid() && n2 != c && inside(n2)) return true;
+    }
+  }
+  return false;
+}
+
+Refiner::Outcome Refiner::tryInsert(const Vec3& p, TetId k, bool mle, const Sphere& sphere) {
   const double xyz[3] = {p.x(), p.y(), p.z()};
   const del3d::LocateResult loc = del3d::locate(mesh_, xyz, k, rng_);
   if (loc.status == del3d::LocateStatus::Outside) return Outcome::Outside;
@@ -191,6 +223,7 @@ Refiner::Outcome Refiner::tryInsert(const Vec3& p, TetId k, bool mle) {
   for (int i = 0; i < 4; ++i)
     if (mp.length(mesh_.point(mesh_.vertex(loc.tet, i)) - p) < o_.minVertexDistance) return Outcome::Close;
   if (mle && nearHull(p, mp, loc.tet)) return Outcome::Close;
+  if (sphere.metric && insideSphere(p, sphere, loc.tet)) return Outcome::Close;
   del3d::InsertOptions io;
   io.start = loc.tet;
   io.located = &loc;
@@ -219,15 +252,18 @@ Refiner::Outcome Refiner::tryInsert(const Vec3& p, TetId k, bool mle) {
 
 bool Refiner::refine(TetId k, double q) {
   const TetPoints tp = pointsOf(mesh_, k);
-  const Mat3 m = vt_.tetMetric(mesh_.tetVertices(k));
+  const Mat3 m = vt_.tetLengthMetric(mesh_.tetVertices(k));
   const bool mleFirst = q < o_.methodSwitch;
-  for (int attempt = 0; attempt < 2; ++attempt) {
-    const bool mle = (attempt == 0) == mleFirst;
+  const bool anisotropic = !(isotropicScale(m) > 0);
+  for (int attempt = 0; attempt < (mleFirst ? 2 : 1); ++attempt) {
+    const bool mle = attempt == 0 && mleFirst;
     Vec3 p;
     const bool placed = mle ? longestInnerEdgeMidpoint(k, m, tp, p)
                             : refine3d::metricCircumcentre(m, tp.p[0], tp.p[1], tp.p[2], tp.p[3], p);
     if (!placed) continue;
-    switch (tryInsert(p, k, mle)) {
+    Sphere sphere;
+    if (!mle && anisotropic) sphere = {&m, (m * (tp.p[0] - p)).norm()};
+    switch (tryInsert(p, k, mle, sphere)) {
       case Outcome::Inserted:
         ++(mle ? st_.insertedMLE : st_.insertedCCS);
         return true;

@@ -3,12 +3,17 @@
 //
 // Every live tet K gets q(K) = S_oI / S_oK (eq. 5.2): the volume of the circumsphere of
 // the ideal (unit, regular) tet over that of K, both in the metric M_K at K's centroid;
-// q = (R_I / R_K)³ with R_I = √6/4. M_K is interpolated linearly from the vertices'
-// tensors (refine/VertexTensors.h: one control-space call per vertex, the one made for the
-// insertion reused, not one per evaluated tet — measured 3.5 evaluations per final tet; a
-// tet with four isotropic vertices takes a scalar fast path).
+// q = (R_I / R_K)³ with R_I = √6/4. M_K is interpolated from the vertices' tensors by
+// eq. 2.18, as the control space interpolates (the inverse of the mean of their length
+// tensors: refine/VertexTensors.h tetLengthMetric; one control-space call per vertex, the one
+// made for the insertion reused, not one per evaluated tet — measured 3.5 evaluations per
+// final tet; a tet with four isotropic vertices takes a scalar fast path). The mean of the
+// tensors themselves is ruled by the finest vertex where the size grades (a harmonic mean
+// of the sizes): measured so, the tets next to a fine boundary looked too large, and
+// the points inserted for them, each with the coarser metric of its place, ended closer
+// than a unit apart (CYLINDER2: interior edges 0.69 in M_v, μ_M 0.82).
 // When q(K) ≥ q_t but an edge of K is longer than edgeLengthMax in the metric at its
-// midpoint (the mean of its ends' tensors), q(K) = 0.95 q_t (5.5.1);
+// midpoint (eq. 2.18 of its ends' tensors), q(K) = 0.95 q_t (5.5.1);
 // edges joining two surface nodes are not checked (a boundary edge cannot be shortened by
 // inner nodes: the check would refine around it without end).
 // Tets with q < q_t go into a queue, worst first (refine/RefineQueue.h: a bucket queue, worst
@@ -31,13 +36,19 @@
 //     face of its containing tet: halving an edge from a node near the boundary would
 //     otherwise make ever flatter tets at the boundary, without end (a CCS point is at
 //     least the circumradius away from the vertices, and outside for such flat tets);
+//   - (CCS in an anisotropic M_K) a vertex of the containing tet, of its neighbours or of
+//     theirs lies inside K's circumsphere in M_K (closer to P than kCircumsphereMargin
+//     R_K): the triangulation is Delaunay only in the metric of each point at its
+//     insertion, not in M_K, so the circumcentre may land next to a vertex (isotropic
+//     metrics: the constrained Delaunay triangulation leaves the sphere empty, no test);
 //   - the metric at P differs so much from M_K that K would not be in the cavity
 //     (Inserter status Pointless, sec. 5.5.2 third rule); or the Inserter refuses.
-// A cancelled MLE falls back to CCS, a CCS cancelled for another reason than "outside"
-// to MLE (an outside circumcentre marks a tet at the boundary, which a point on an inner
-// edge next to the boundary would only replace by flatter ones); when both fail K is
-// postponed: its q is raised by postponeFactor (thesis: "moved further down the heap")
-// and it is retried, at most maxPostpones times, after other insertions.
+// A cancelled MLE falls back to CCS; a cancelled CCS does not fall back to MLE (the
+// midpoint of the longest edge of a tet whose circumcentre was refused lands 0.2-0.5 in
+// the metric from other vertices in anisotropic layers: CYLINDER2 μ_M 0.82 -> 0.86, η_M
+// 0.800 -> 0.811 without that fallback). When no point is inserted K is postponed: its q
+// is raised by postponeFactor (thesis: "moved further down the heap") and it is retried,
+// at most maxPostpones times, after other insertions.
 // New vertices are free (node = −1, SolidTetMesh::addFreeVertex semantics); fixed vertices
 // and constrained faces are untouched, so validateSolidTetMesh holds afterwards.
 // Order: the queue is consumed in batches — the worst queue.size() / batchDivisor entries

@@ -1,5 +1,7 @@
 #include "mesher/volume/refine/VertexTensors.h"
 
+#include <Eigen/LU>
+
 namespace aniso::refine3d {
 
 void VertexTensors::store(std::size_t v, const Mat3& m) {
@@ -34,6 +36,20 @@ void VertexTensors::add(del3d::VertexId v, const Mat3& m) {
 Mat3 VertexTensors::tetMetric(const std::uint32_t* v) const {
   return 0.25 * (at(del3d::VertexId(v[0])) + at(del3d::VertexId(v[1])) + at(del3d::VertexId(v[2])) +
                  at(del3d::VertexId(v[3])));
+}
+
+Mat3 VertexTensors::tetLengthMetric(const std::uint32_t* v) const {
+  double s;
+  if (tetLengthScale(v, s)) return s * Mat3::Identity();
+  Mat3 lengths = Mat3::Zero();
+  for (int i = 0; i < 4; ++i) lengths += at(del3d::VertexId(v[i])).inverse();
+  return (0.25 * lengths).inverse();
+}
+
+Mat3 VertexTensors::edgeLengthMetric(del3d::VertexId a, del3d::VertexId b) const {
+  const double sa = scale(a), sb = scale(b);
+  if (sa > 0 && sb > 0) return edgeLengthScale(sa, sb) * Mat3::Identity();
+  return (0.5 * (at(a).inverse() + at(b).inverse())).inverse();
 }
 
 std::size_t VertexTensors::memoryBytes() const {

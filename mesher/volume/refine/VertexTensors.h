@@ -41,6 +41,22 @@ class VertexTensors {
   }
   /// The mean of the four vertices' tensors.
   Mat3 tetMetric(const std::uint32_t* v) const;
+  /// The metric of the tet by eq. 2.18, the control space's own interpolation
+  /// (MetricInterpolation.h): the inverse of the mean of the four vertices' length tensors
+  /// (inverse transformation tensors). Where the size grades, the mean of the tensors is
+  /// ruled by the finest vertex (a harmonic mean of the sizes) and measures the tet finer
+  /// than the control space at its centroid; eq. 2.18 averages the sizes.
+  Mat3 tetLengthMetric(const std::uint32_t* v) const;
+  /// True, with s = 4 / Σ 1/s_i (eq. 2.18 for tensors s_i·I), when the four vertices are
+  /// isotropic.
+  bool tetLengthScale(const std::uint32_t* v, double& s) const {
+    const double a = scale_[v[0]], b = scale_[v[1]], c = scale_[v[2]], d = scale_[v[3]];
+    if (!(a > 0 && b > 0 && c > 0 && d > 0)) return false;
+    s = 4.0 / (1.0 / a + 1.0 / b + 1.0 / c + 1.0 / d);
+    return true;
+  }
+  /// Eq. 2.18 at the midpoint of the edge (a, b).
+  Mat3 edgeLengthMetric(del3d::VertexId a, del3d::VertexId b) const;
   /// Bytes held (capacities).
   std::size_t memoryBytes() const;
 
@@ -53,6 +69,9 @@ class VertexTensors {
   std::vector<std::uint32_t> index_;  // per vertex, used when scale_ is 0
   std::vector<Mat3> aniso_;
 };
+
+/// Eq. 2.18 at the midpoint of an edge whose ends have the isotropic scales a and b.
+inline double edgeLengthScale(double a, double b) { return 2.0 / (1.0 / a + 1.0 / b); }
 
 /// Eq. 6.2 over the live tets of `mesh` with M_K the mean of the vertices' tensors in vt
 /// (predictTetCount of VolumeRefinement.h; defined there).
