@@ -1,5 +1,6 @@
 // Tests of the refinement's data structures (mesher/volume/refine/): the per-vertex tensor
-// store (VertexTensors.h: isotropic tensors kept as a scale, the scalar fast path of a tet)
+// store (VertexTensors.h: isotropic tensors kept as a scale, the scalar fast path of a tet,
+// the eq. 2.18 metric of a tet and of an edge)
 // and the bucket queue's compaction of stale entries (RefineQueue.h).
 #include <gtest/gtest.h>
 
@@ -67,6 +68,33 @@ TEST(VolumeRefineStore, AllIsotropicTetHasAScalarMetric) {
   const VertexId v = m.addVertex(Vec3(0.2, 0.2, 0.2));
   vt.add(v, Metric3d::isotropic(0.125).matrix());
   EXPECT_DOUBLE_EQ(vt.scale(v), 8.0);
+}
+
+TEST(VolumeRefineStore, LengthMetricAveragesTheSizes) {
+  // Eq. 2.18: the tet's metric is the inverse of the mean of the vertices' length tensors,
+  // as the control space interpolates, not the mean of the tensors (which the finest vertex
+  // rules: sizes 0.1 and 0.4 give 0.16 by the tensors, 0.25 by eq. 2.18).
+  const CSAnalytic3d iso(box(), [](const Vec3& p) { return Metric3d::isotropic(p.x() > 0.5 ? 0.4 : 0.1); });
+  const del3d::TetMesh m = oneTet(0.0);
+  const refine3d::VertexTensors vt(m, iso);
+  const std::uint32_t tv[4] = {0, 1, 2, 3};  // sizes 0.1, 0.4, 0.1, 0.1
+  double s = 0;
+  ASSERT_TRUE(vt.tetLengthScale(tv, s));
+  EXPECT_NEAR(1.0 / s, 0.25 * (0.1 + 0.4 + 0.1 + 0.1), 1e-14);
+  EXPECT_LT((vt.tetLengthMetric(tv) - s * Mat3::Identity()).norm(), 1e-12);
+  EXPECT_NEAR(1.0 / refine3d::edgeLengthScale(vt.scale(VertexId(0)), vt.scale(VertexId(1))), 0.25, 1e-14);
+  EXPECT_NEAR(1.0 / (0.5 * (vt.scale(VertexId(0)) + vt.scale(VertexId(1)))), 0.16, 1e-14);
+
+  // Anisotropic: the same axes, each size averaged on its own.
+  const Metric3d fine = Metric3d::fromDirections(Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ(), 0.1, 0.2, 1.0);
+  const Metric3d coarse = Metric3d::fromDirections(Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ(), 0.3, 0.2, 2.0);
+  const CSAnalytic3d an(box(), [&](const Vec3& p) { return p.x() > 0.5 ? coarse : fine; });
+  const refine3d::VertexTensors va(m, an);
+  ASSERT_FALSE(va.tetLengthScale(tv, s));
+  const Mat3 expected = Vec3(1 / 0.15, 1 / 0.2, 1 / 1.25).asDiagonal();
+  EXPECT_LT((va.tetLengthMetric(tv) - expected).norm(), 1e-10);
+  const Mat3 edge = Vec3(1 / 0.2, 1 / 0.2, 1 / 1.5).asDiagonal();
+  EXPECT_LT((va.edgeLengthMetric(VertexId(0), VertexId(1)) - edge).norm(), 1e-10);
 }
 
 TEST(VolumeRefineStore, CompactionDropsOnlyStaleEntries) {
