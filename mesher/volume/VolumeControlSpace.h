@@ -28,13 +28,19 @@
 // have interior edges of about 1.45 h). buildVolumeControlSpace returns the user's metric M
 // (the one the surface was meshed in); the tetrahedra are made, improved and measured in
 // M_v (VolumeMetricSpace): M at the solid's surface nodes and M / f everywhere else
-// (transformation tensor; metric tensor 𝓜 / f²). Every consumer measures a tet in the mean
-// of its vertices' tensors (η_M, μ_M, q(K) of eq. 5.2, the l_M > 1.5 edge check, the
-// eq. 6.1/6.2 predictions, the improvement), so the size grades linearly from h at the
-// boundary to f·h one layer of tets inside: the tets on a boundary triangle are shaped for
-// it, not for a surface 1/f too fine (measured on the unit cube at size 0.02 with M / f up to
-// the boundary: tets with a boundary node mean ratio 0.844 against 0.873 inside; on
-// submarine.stp 0.84 on boundary triangles, 0.78-0.81 overall, below the 0.80 bar).
+// (transformation tensor; metric tensor 𝓜 / f²). Every consumer measures a tet from its
+// vertices' tensors (η_M, μ_M, the eq. 6.1/6.2 predictions and the improvement in their mean;
+// the refinement's q(K) of eq. 5.2 and l_M > 1.5 edge check by eq. 2.18, the mean of their
+// length tensors, VolumeRefinement.h), so the size grades from h at the boundary to f·h one
+// layer of tets inside: the tets on a boundary triangle are shaped for it, not for a surface
+// 1/f too fine (measured on the unit cube at size 0.02 with M / f up to the boundary: tets
+// with a boundary node mean ratio 0.844 against 0.873 inside; on submarine.stp 0.84 on
+// boundary triangles, 0.78-0.81 overall, below the 0.80 bar).
+// The step from M to M / f at the surface nodes is not what kept μ_M below 1 on graded
+// meshes (CYLINDER2: μ_M 0.82 in M_v, interior edges 0.69): with f = 1 it was 0.84, and
+// with f graded from 1 at the surface to 1.4 over 0.5-3 local sizes 0.79-0.82; the cause
+// was the refinement measuring tets in the mean of the vertices' tensors (see
+// VolumeRefinement.h).
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -59,7 +65,8 @@ namespace aniso {
 /// - / 0.803 / 0.801 / 0.7997; with the gradation held in M_v (volumeGradation) at 1.4:
 /// U_Joint_2 0.808, ellipses.brep 0.801 (0.798 without; 0.8075 at f = 1). 1.4 lands at
 /// 1.12 x HXT's count on the cube (uniform: the gradation does not change it).
-/// CYLINDER2 (r 1, l 10, γ_a 10): η_M 0.800 at the defaults, 0.771 at γ_c 0.05.
+/// CYLINDER2 (r 1, l 10, γ_a 10; tests/cli/cylinder2_test.py): η_M 0.786, μ_M 0.974 in M_v at
+/// the defaults (0.800 / 0.821 with the refinement in the mean of the vertex tensors).
 inline constexpr double kVolumeLengthFactor = 1.4;
 
 /// M_v of the convention above: the metric of `user` with every requested length times
