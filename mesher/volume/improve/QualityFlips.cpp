@@ -64,9 +64,19 @@ bool QualityFlips::triedBefore(std::span<const del3d::TetId> tets) const {
 // can*(): most candidate flips fail on quality, which costs no exact predicate).
 
 namespace {
-// |η_M³| of (a, b, c, d) whatever its orientation (the legality check rejects inverted ones).
-double absScore(const VertexMetrics& vm, VertexId a, VertexId b, VertexId c, VertexId d) {
-  return std::abs(vm.score(std::array<VertexId, 4>{a, b, c, d}));
+using Quad = std::array<VertexId, 4>;
+/// The smallest score of the tets (|η_M³| with `absolute`: whatever the orientation, the
+/// legality check rejects inverted ones), or the first one not above `before` (a flip to
+/// these tets cannot beat `before` then: the rest need not be measured).
+template <std::size_t N>
+double worstAbove(const VertexMetrics& vm, const std::array<Quad, N>& tets, double before, bool absolute) {
+  double w = 1e300;
+  for (const Quad& q : tets) {
+    const double e = absolute ? std::abs(vm.score(q)) : vm.score(q);
+    if (!(e > before)) return e;
+    w = std::min(w, e);
+  }
+  return w;
 }
 }  // namespace
 
@@ -80,9 +90,9 @@ bool QualityFlips::tryFace(del3d::TetId t, int i, std::vector<del3d::TetId>& cre
     VertexId f[3];
     for (int m = 0; m < 3; ++m) f[m] = s_.mesh.vertex(t, del3d::kFaceVertex[i][m]);
     // (f0, f1, f2, d) is positive; the new tets replace one f by e.
-    double after = 1e300;
-    for (int m = 0; m < 3; ++m) after = std::min(after, vm_.score(std::array<VertexId, 4>{f[m], f[(m + 1) % 3], e, d}));
-    if (!beats(after, std::min(score(t), score(u)), gain_)) return false;
+    const double before = std::min(score(t), score(u));
+    const std::array<Quad, 3> next{Quad{f[0], f[1], e, d}, Quad{f[1], f[2], e, d}, Quad{f[2], f[0], e, d}};
+    if (!beats(worstAbove(vm_, next, before, false), before, gain_)) return false;
   }
   del3d::Flip23Plan plan;
   if (!del3d::canFlip23(s_.mesh, t, i, &plan)) return false;
@@ -99,9 +109,9 @@ bool QualityFlips::tryEdge(del3d::TetId t, int i, int j, std::vector<del3d::TetI
   if (n < 3 || n > 4 || triedBefore(std::span<const del3d::TetId>(ring.data(), n))) return false;
   const VertexId a = s_.mesh.vertex(t, i), b = s_.mesh.vertex(t, j);
   if (n == 3) {
-    const double after =
-        std::min(absScore(vm_, apex[0], apex[1], apex[2], a), absScore(vm_, apex[0], apex[1], apex[2], b));
-    if (!beats(after, worst(std::span<const del3d::TetId>(ring.data(), 3)), gain_)) return false;
+    const double before = worst(std::span<const del3d::TetId>(ring.data(), 3));
+    const std::array<Quad, 2> next{Quad{apex[0], apex[1], apex[2], a}, Quad{apex[0], apex[1], apex[2], b}};
+    if (!beats(worstAbove(vm_, next, before, true), before, gain_)) return false;
     del3d::Flip32Plan plan;
     if (!del3d::canFlip32(s_.mesh, t, i, j, &plan)) return false;
     if (!(beats(worst(plan.newTets), worst(plan.oldTets), gain_))) return false;
@@ -116,9 +126,8 @@ bool QualityFlips::tryEdge(del3d::TetId t, int i, int j, std::vector<del3d::TetI
   bool found = false;
   for (int diag = 0; diag < 2; ++diag) {
     const VertexId p = apex[diag], q = apex[diag + 1], r = apex[diag + 2], w = apex[(diag + 3) % 4];
-    const double pre = std::min(
-        {absScore(vm_, a, p, q, r), absScore(vm_, b, p, q, r), absScore(vm_, a, p, r, w), absScore(vm_, b, p, r, w)});
-    if (!beats(pre, before, gain_)) continue;
+    const std::array<Quad, 4> next{Quad{a, p, q, r}, Quad{b, p, q, r}, Quad{a, p, r, w}, Quad{b, p, r, w}};
+    if (!beats(worstAbove(vm_, next, before, true), before, gain_)) continue;
     del3d::Flip44Plan plan;
     if (!del3d::canFlip44(s_.mesh, t, i, j, diag, &plan)) continue;
     const double after = worst(plan.newTets);

@@ -50,16 +50,18 @@ bool VertexMover::legal(del3d::VertexId v, const Vec3& p, bool trialScored) cons
   return true;
 }
 
-void VertexMover::quality(del3d::VertexId v, const Vec3& p, double& worst, double& mean) {
+bool VertexMover::quality(del3d::VertexId v, const Vec3& p, double& worst, double& mean, double rejectBelow) {
   worst = 1e300;
   double sum = 0;
   trial_.resize(star_.size());
   for (std::size_t k = 0; k < star_.size(); ++k) {
     const double e = trial_[k] = vm_.scoreWith(s_.mesh.tetVertices(star_[k]), v.index, p);
+    if (e < rejectBelow) return false;
     worst = std::min(worst, e);
     sum += e;
   }
   mean = star_.empty() ? 0 : sum / static_cast<double>(star_.size());
+  return true;
 }
 
 Vec3 VertexMover::laplaceTarget(del3d::VertexId v, double lowGradation) const {
@@ -112,11 +114,14 @@ bool VertexMover::smooth(del3d::VertexId v, double lowGradation, double qualityF
     quality(v, q, w0, m0);
   }
   const double floor = qualityFloor * qualityFloor * qualityFloor;  // scores are η³
+  // a trial tet below this already rejects the move (w1 ≤ w0, resp. w1 < floor)
+  const double rejectBelow = w0 < floor ? std::nextafter(w0, 1e300) : floor;
   for (const double step : {1.0, 0.5}) {
     const Vec3 p = q + step * (target - q);
     if (p == q) continue;
     double w1, m1;
-    quality(v, p, w1, m1);  // floating point first: most rejected moves need no exact test
+    // floating point first: most rejected moves need no exact test
+    if (!quality(v, p, w1, m1, rejectBelow)) continue;
     const bool better = w0 < floor ? w1 > w0 : (w1 >= floor && m1 >= m0);
     if (better && legal(v, p, true)) {
       const Mat3 before = vm_.at(v);

@@ -53,7 +53,9 @@ class VertexMover {
   /// for orient3d.
   bool legal(del3d::VertexId v, const Vec3& p, bool trialScored) const;
   /// Worst and mean score of the star with v at p; the per-tet scores are left in trial_.
-  void quality(del3d::VertexId v, const Vec3& p, double& worst, double& mean);
+  /// Returns false (worst, mean and trial_ incomplete) as soon as a tet scores below
+  /// rejectBelow.
+  bool quality(del3d::VertexId v, const Vec3& p, double& worst, double& mean, double rejectBelow = -1e300);
   Vec3 laplaceTarget(del3d::VertexId v, double lowGradation) const;
   Vec3 worstApex(del3d::VertexId v) const;
   double angleMeasure(del3d::VertexId v, const Vec3& p) const;
