@@ -164,3 +164,26 @@ TEST(TetQuality, ReadsTheImprovementsTensors) {
 }
 
 }  // namespace
+
+namespace {
+
+// The bound behind VertexMetrics::SliverAngles: η³ ≤ 2 sin²θ for every dihedral angle θ.
+TEST(SliverAngles, MeanRatioBoundsEveryDihedralAngle) {
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  double tightest = 0;  // largest η³ / (2 sin²θ_min) seen
+  for (int k = 0; k < 20000; ++k) {
+    Vec3 p[4];
+    for (auto& q : p) q = Vec3(u(rng), u(rng), u(rng));
+    if (k % 2) p[3] = 0.5 * (p[0] + p[1]) + 0.1 * (p[3] - p[2]);
+    const double eta = std::abs(tetMeanRatio(p[0], p[1], p[2], p[3]));
+    const DihedralRange r = tetDihedralRange(p[0], p[1], p[2], p[3]);
+    const double s = std::min(std::sin(r.minDeg * kDegToRad), std::sin(r.maxDeg * kDegToRad));
+    if (!(s > 0)) continue;
+    EXPECT_LE(eta * eta * eta, 2 * s * s * (1 + 1e-12)) << k;
+    tightest = std::max(tightest, eta * eta * eta / (2 * s * s));
+  }
+  EXPECT_GT(tightest, 0.3);  // the bound is not vacuous on these tets
+}
+
+}  // namespace

@@ -94,20 +94,39 @@ double VertexMetrics::scoreWith(const std::uint32_t* v, std::uint32_t moved, con
   return guarded(meanRatioCubed(m * q[0], m * q[1], m * q[2], m * q[3]), q, false);
 }
 
+namespace {
+/// The η³ above which no dihedral angle is within `angle` (degrees) of 0° or 180°: 2 sin²,
+/// raised by a relative margin for the rounding of both sides.
+double excludingScore(double angle) {
+  constexpr double kMargin = 1e-9;
+  const double s = std::sin(std::min(angle, 90.0) * kDegToRad);
+  return 2 * s * s * (1 + kMargin);
+}
+}  // namespace
+
 VertexMetrics::SliverAngles::SliverAngles(double metricAngle, double euclideanAngle)
     : cosMetric(std::cos(metricAngle * kDegToRad)),
       cosEuclidean(std::cos(euclideanAngle * kDegToRad)),
-      cosIsotropic(std::cos(std::max(metricAngle, euclideanAngle) * kDegToRad)) {}
+      cosIsotropic(std::cos(std::max(metricAngle, euclideanAngle) * kDegToRad)),
+      etaMetric(excludingScore(metricAngle)),
+      etaEuclidean(excludingScore(euclideanAngle)),
+      etaIsotropic(excludingScore(std::max(metricAngle, euclideanAngle))) {}
 
 bool VertexMetrics::isSliver(del3d::TetId t, const SliverAngles& a) const {
   const std::uint32_t* v = mesh_.tetVertices(t);
   const Vec3 p[4] = {mesh_.point(del3d::VertexId(v[0])), mesh_.point(del3d::VertexId(v[1])),
                      mesh_.point(del3d::VertexId(v[2])), mesh_.point(del3d::VertexId(v[3]))};
-  // Euclidean: an angle below θ_E or above 180° − θ_E; isotropic: also below θ_M
-  if (isotropic(v)) return dihedralCosineOutside(p[0], p[1], p[2], p[3], a.cosIsotropic, -a.cosEuclidean);
-  if (dihedralCosineOutside(p[0], p[1], p[2], p[3], a.cosEuclidean, -a.cosEuclidean)) return true;
+  // Euclidean: an angle below θ_E or above 180° − θ_E; isotropic: also below θ_M. A mean
+  // ratio above the bound of the angle answers first.
+  const double eta = meanRatioCubed(p[0], p[1], p[2], p[3]);
+  if (isotropic(v))
+    return !(eta > a.etaIsotropic) && dihedralCosineOutside(p[0], p[1], p[2], p[3], a.cosIsotropic, -a.cosEuclidean);
+  if (!(eta > a.etaEuclidean) && dihedralCosineOutside(p[0], p[1], p[2], p[3], a.cosEuclidean, -a.cosEuclidean))
+    return true;
   const Mat3 m = tetMetric(v);
-  return dihedralCosineOutside(m * p[0], m * p[1], m * p[2], m * p[3], a.cosMetric, -2.0);
+  const Vec3 q[4] = {m * p[0], m * p[1], m * p[2], m * p[3]};
+  return !(meanRatioCubed(q[0], q[1], q[2], q[3]) > a.etaMetric) &&
+         dihedralCosineOutside(q[0], q[1], q[2], q[3], a.cosMetric, -2.0);
 }
 
 }  // namespace aniso::improve3d

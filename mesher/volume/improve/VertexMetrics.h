@@ -78,10 +78,15 @@ class VertexMetrics {
     return isSliver(t, SliverAngles(metricAngle, euclideanAngle));
   }
   /// The sliver thresholds as cosines (isSliver compares the dihedral angles' cosines:
-  /// dihedralCosineOutside of TetQuality.h, no acos).
+  /// dihedralCosineOutside of TetQuality.h, no acos), and as mean ratios that exclude them:
+  /// every dihedral angle θ of a tet satisfies η³ ≤ 2 sin²θ (with L the length of θ's edge
+  /// and d_1, d_2 the distances of the two other vertices to its line, V = L d_1 d_2 sin θ
+  /// / 6 and Σ l² ≥ 2 (L² + d_1² + d_2²); then AM-GM), so η³ > 2 sin²θ_0 puts every angle in
+  /// (θ_0, 180° − θ_0): isSliver tests the (cheaper) mean ratio first.
   struct SliverAngles {
     SliverAngles(double metricAngle, double euclideanAngle);
     double cosMetric, cosEuclidean, cosIsotropic;  ///< cos θ_M, cos θ_E, cos max(θ_M, θ_E)
+    double etaMetric, etaEuclidean, etaIsotropic;  ///< the η³ bounds of the same angles
   };
   bool isSliver(del3d::TetId t, const SliverAngles& a) const;
   void setGuardEuclidean(bool on) { guardEuclidean_ = on; }
