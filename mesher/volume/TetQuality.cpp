@@ -16,19 +16,13 @@ namespace {
 
 constexpr double kRadToDeg = 57.29577951308232;
 
-// Face normals as meshq.py builds them: faces (b,c,d), (a,c,d), (a,b,d), (a,b,c) with
-// n = (y − x) × (z − x), not normalised. For a positive tet n0 and n2 point outwards, n1
-// and n3 inwards.
-void rawNormals(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, Vec3 n[4]) {
+// Unit face normals as meshq.py builds them: faces (b,c,d), (a,c,d), (a,b,d), (a,b,c) with
+// n = (y − x) × (z − x). For a positive tet n0 and n2 point outwards, n1 and n3 inwards.
+void refereeNormals(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, Vec3 n[4]) {
   n[0] = (c - b).cross(d - b);
   n[1] = (c - a).cross(d - a);
   n[2] = (b - a).cross(d - a);
   n[3] = (b - a).cross(c - a);
-}
-
-// The same, unit (a zero normal stays zero).
-void refereeNormals(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, Vec3 n[4]) {
-  rawNormals(a, b, c, d, n);
   for (int i = 0; i < 4; ++i) n[i] *= 1.0 / std::max(n[i].norm(), 1e-300);
 }
 
@@ -106,44 +100,22 @@ void TetQualitySummary::merge(const TetQualitySummary& o) {
 
 namespace {
 
-/// Running extremes of the dihedral cosines of many tets: the largest (referee's and true)
-/// and the smallest (true) cosine. A tet is given by its raw normals (rawNormals): meshq's
-/// cosine of pair (i, j) is −n_i·n_j / (|n_i| |n_j|); with outward normals (n0, n2 flipped
-/// relative to n1, n3 for either sign of the volume) the pairs of equal parity, (0, 2) and
-/// (1, 3), keep that sign and the four others change it. Whether a cosine x / √p changes
-/// an extreme is decided on squares; its value (one square root) only when it does.
-struct CosineExtremes {
-  double trueMin = 1, trueMax = -1, refereeMax = -1;
-
-  /// x / √p > bound, for p > 0.
-  static bool above(double x, double p, double bound) {
-    if (bound >= 0) return x > 0 && x * x > bound * bound * p;
-    return x >= 0 || x * x < bound * bound * p;
-  }
-  static double value(double x, double p) { return std::clamp(x / std::sqrt(p), -1.0, 1.0); }
-
-  /// Adds one tet; returns whether its largest true cosine exceeds cosSliver.
-  bool add(const Vec3 n[4], double cosSliver) {
-    const double sq[4] = {n[0].squaredNorm(), n[1].squaredNorm(), n[2].squaredNorm(), n[3].squaredNorm()};
-    bool sliver = false;
-    for (int i = 0; i < 4; ++i)
-      for (int j = i + 1; j < 4; ++j) {
-        const double p = sq[i] * sq[j];
-        const double raw = -n[i].dot(n[j]);
-        const double x = ((i ^ j) & 1) ? -raw : raw;
-        if (!(p > 0)) {  // a face of zero area: the cosine 0 (as refereeNormals gives)
-          trueMin = std::min(trueMin, 0.0), trueMax = std::max(trueMax, 0.0), refereeMax = std::max(refereeMax, 0.0);
-          sliver = sliver || 0.0 > cosSliver;
-          continue;
-        }
-        if (above(x, p, trueMax)) trueMax = std::max(trueMax, value(x, p));
-        if (above(-x, p, -trueMin)) trueMin = std::min(trueMin, value(x, p));
-        if (above(raw, p, refereeMax)) refereeMax = std::max(refereeMax, value(raw, p));
-        sliver = sliver || above(x, p, cosSliver);
-      }
-    return sliver;
-  }
-};
+/// Largest (referee's and true) and smallest (true) cosine of the dihedral angles of one
+/// tet from one set of unit normals (refereeNormals): meshq's cosine of pair (i, j) is
+/// −n_i·n_j; with outward normals (n0, n2 flipped relative to n1, n3 for either sign of
+/// the volume) the pairs of equal parity, (0, 2) and (1, 3), keep that sign and the four
+/// others change it.
+void cosines(const Vec3 n[4], double& trueMin, double& trueMax, double& refereeMax) {
+  trueMin = 1, trueMax = -1, refereeMax = -1;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) {
+      const double raw = std::clamp(-n[i].dot(n[j]), -1.0, 1.0);
+      const double c = ((i ^ j) & 1) ? -raw : raw;
+      trueMin = std::min(trueMin, c);
+      trueMax = std::max(trueMax, c);
+      refereeMax = std::max(refereeMax, raw);
+    }
+}
 
 }  // namespace
 
@@ -203,7 +175,7 @@ void accumulateTetQuality(const SolidTetMesh& s, const ControlSpace3d* cs, TetQu
                           const VolumeMetricSpace* volume, const improve3d::VertexMetrics* metrics) {
   const del3d::TetMesh& mesh = s.mesh;
   const double cosSliver = std::cos(kSliverDihedralDeg / kRadToDeg);
-  CosineExtremes cosines;
+  double cmin = 1, cmax = -1, refereeCmax = -1;
   QualityStats etaStats;  // this call's η (merged into out.meanRatio, and out.etaM when η_M = η)
   std::unique_ptr<ReportTensors> vt;
   if (cs) vt = std::make_unique<ReportTensors>(mesh, *cs, metrics);
@@ -221,8 +193,13 @@ void accumulateTetQuality(const SolidTetMesh& s, const ControlSpace3d* cs, TetQu
     const double eta = meanRatio(a, b, c, d);
     etaStats.add(eta);
     Vec3 n[4];
-    rawNormals(a, b, c, d, n);
-    if (cosines.add(n, cosSliver)) ++out.belowDihedral;
+    refereeNormals(a, b, c, d, n);
+    double lo, hi, ref;
+    cosines(n, lo, hi, ref);
+    cmin = std::min(cmin, lo);
+    cmax = std::max(cmax, hi);
+    refereeCmax = std::max(refereeCmax, ref);
+    if (hi > cosSliver) ++out.belowDihedral;
     if (!vt || etaMIsEta) continue;
     if (vt->tetIsotropic(tv)) {
       out.etaM.add(eta);  // a mean of s·I tensors is isotropic: η_M = η
@@ -234,9 +211,9 @@ void accumulateTetQuality(const SolidTetMesh& s, const ControlSpace3d* cs, TetQu
   out.meanRatio.merge(etaStats);
   if (etaMIsEta) out.etaM.merge(etaStats);
   if (out.tets > 0) {
-    out.minDihedral = std::min(out.minDihedral, std::acos(cosines.trueMax) * kRadToDeg);
-    out.maxDihedral = std::max(out.maxDihedral, std::acos(cosines.trueMin) * kRadToDeg);
-    out.refereeMinDihedral = std::min(out.refereeMinDihedral, std::acos(cosines.refereeMax) * kRadToDeg);
+    out.minDihedral = std::min(out.minDihedral, std::acos(cmax) * kRadToDeg);
+    out.maxDihedral = std::max(out.maxDihedral, std::acos(cmin) * kRadToDeg);
+    out.refereeMinDihedral = std::min(out.refereeMinDihedral, std::acos(refereeCmax) * kRadToDeg);
   }
   if (!vt) return;
   // μ_M: each edge once, from the tets around its lower-index end: a vertex -> tets
