@@ -53,6 +53,7 @@ QuadStats convertToQuads(FaceMesh& fm, const ControlSpace2d& cs, const Parametri
     pairUp();
   }
   if (st.paired > 0) st.smoothed += smoothQuadMesh(mesh, metrics, o.smooth).moved;
+  if (o.boundaryPostprocess) st.boundary = postprocessBoundaryLayer(mesh, metrics, o.boundary);
   mesh.compact();
   measure(mesh, metrics, st);
   reattachTriangles(mesh, poles);
@@ -70,7 +71,8 @@ QuadStats convertToQuads(FaceMesh& fm, const ControlSpace2d& cs, const Parametri
            ", forced " + std::to_string(st.merge.forcedOdd) + ", rejected " + std::to_string(st.merge.rejected) + "), left " + std::to_string(st.merge.triangles) +
            ", paired " + std::to_string(st.paired) + " in " + std::to_string(st.moves) + " moves (failed: " + std::to_string(st.failedCuts) + " cuts, " +
            std::to_string(st.failedPairs) + " pairs), swaps " +
-           std::to_string(st.swaps) + ", doublets " + std::to_string(st.doublets) + ", collapses " + std::to_string(st.collapses) + " -> " +
+           std::to_string(st.swaps) + ", doublets " + std::to_string(st.doublets) + ", collapses " + std::to_string(st.collapses) + ", boundary layer moves " + std::to_string(st.boundary.moved) +
+           " (worst " + std::to_string(st.boundary.worstBefore) + " -> " + std::to_string(st.boundary.worstAfter) + ") -> " +
            std::to_string(st.quads) + " quads, " + std::to_string(st.triangles) + " triangles");
   return st;
 }

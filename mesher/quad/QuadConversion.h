@@ -8,12 +8,15 @@
 //   3 improvement, alg. 4.6 with N_imp passes: topological transformations
 //     (QuadTopology.h) and metric Laplace smoothing (QuadSmoothing.h); the pairing is
 //     repeated after each pass (smoothing opens cuts that were illegal before);
+//   4 postprocessing of the elements adjacent to the boundary (BoundaryPostprocess.h,
+//     thesis 4.8.3);
 // The boundary is never changed: boundary vertices keep their (u, v) and node, boundary
 // edges stay edges, so neighbouring faces stay conforming. With even segment counts on
 // every loop (ContourOptions::evenSegments) the result is all-quad wherever the checks
 // allow it; whatever cannot be converted legally stays a triangle.
 #include "mesher/control/ControlSpace2d.h"
 #include "mesher/metric/QualityStats.h"
+#include "mesher/quad/BoundaryPostprocess.h"
 #include "mesher/quad/MergeConversion.h"
 #include "mesher/quad/QuadSmoothing.h"
 #include "mesher/quad/QuadTopology.h"
@@ -27,6 +30,8 @@ struct QuadOptions {
   TransportOptions transport;
   TopologyOptions topology;
   SmoothOptions smooth;
+  BoundaryPostprocessOptions boundary;
+  bool boundaryPostprocess = true;
   int improvementPasses = 2;  ///< N_imp (alg. 4.6, table 4.7)
 };
 
@@ -34,6 +39,7 @@ struct QuadStats {
   MergeStats merge;
   int paired = 0, moves = 0, failedCuts = 0, failedPairs = 0, doublets = 0, swaps = 0, collapses = 0;
   long long smoothed = 0;
+  BoundaryPostprocessStats boundary;
   int quads = 0, triangles = 0;
   QualityStats mu;            ///< μ_M: metric length of every edge of the result (eq. 2.49)
   QualityStats jacobian;      ///< metric scaled Jacobian per quad

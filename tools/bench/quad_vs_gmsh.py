@@ -7,7 +7,10 @@ For every model of MODELS/MANIFEST.json: `anisomesh mesh --dim 2 --quad --hmax-r
 --curvature-ratio 0.26 --anisotropy 1` and Gmsh 4.8 (`-2 -algo front2d`, Mesh.RecombineAll=1,
 Blossom, the same relative size and curvature sizing as shared/tools/gmsh_anchor.py), each
 measured the same way as shared/tools/check_quad.py: quad fraction, scaled Jacobian min/avg
-(3D, per quad the minimum over its corners), open edges, area against the manifest.
+(3D, per quad the minimum over its corners), open edges, area against the manifest; and the
+mean scaled Jacobian of the quads adjacent to the boundary (a corner on a CAD edge or vertex:
+the node's entity dimension ≤ 1 in the MSH), the elements the boundary postprocessing of
+thesis 4.8.3 takes care of.
 Prints one table row per model, then the means. --gmsh-cache keeps Gmsh's figures per model in
 FILE.json (read when present, written after each Gmsh run): Gmsh's side does not change between
 runs of ours (--ours-cache does the same for ours, e.g. to print the table of two separate
@@ -61,7 +64,9 @@ def measure(path, m):
         e1, e2 = u - o, v - o
         s = np.linalg.norm(np.cross(e1, e2), axis=1) / np.maximum(np.linalg.norm(e1, axis=1) * np.linalg.norm(e2, axis=1), 1e-300)
         sj = np.minimum(sj, s)
-    return {"quads": nq, "tris": nt, "frac": nq / max(nq + nt, 1), "sj_min": float(sj.min()) if nq else 0.0,
+    dims = M.point_data.get("gmsh:dim_tags")
+    near = (dims[Q, 0] <= 1).any(axis=1) if dims is not None and nq else np.zeros(nq, bool)
+    return {"bsj_avg": float(sj[near].mean()) if near.any() else float("nan"),"quads": nq, "tris": nt, "frac": nq / max(nq + nt, 1), "sj_min": float(sj.min()) if nq else 0.0,
             "sj_avg": float(sj.mean()) if nq else 0.0, "open": int((cnt == 1).sum()), "area_rel": (area - m["area"]) / m["area"]}
 
 def run(cmd, out, m):
@@ -75,10 +80,11 @@ def run(cmd, out, m):
     return measure(out, m), ""
 
 def cell(r, why):
-    if r is None: return f"{why:>38}"
-    return f"{100 * r['frac']:6.1f} {r['sj_min']:6.3f} {r['sj_avg']:6.3f} {r['open']:5d} {100 * r['area_rel']:+7.2f}%"
+    if r is None: return f"{why:>45}"
+    return (f"{100 * r['frac']:6.1f} {r['sj_min']:6.3f} {r['sj_avg']:6.3f} {r.get('bsj_avg', float('nan')):6.3f} "
+            f"{r['open']:5d} {100 * r['area_rel']:+7.2f}%")
 
-print(f"{'model':<36} {'anisomesh: quad%  SJmin  SJavg  open   area':>40} | {'gmsh blossom: quad%  SJmin  SJavg  open   area':>44}")
+print(f"{'model':<36} {'anisomesh: quad%  SJmin  SJavg  bSJavg  open   area':>47} | {'gmsh blossom: quad%  SJmin  SJavg  bSJavg  open   area':>51}")
 ours, theirs, both = [], [], []
 for m in man:
     f = os.path.join(d, m["file"])
@@ -100,11 +106,13 @@ for m in man:
     if a: ours.append(a)
     if g: theirs.append(g)
     if a and g and g["quads"] > 0: both.append((a, g))  # a Gmsh mesh without quads is no recombination
-    print(f"{m['file']:<36} {cell(a, wa):>40} | {cell(g, wg):>44}", flush=True)
-mean = lambda rows, k: np.mean([r[k] for r in rows]) if rows else float("nan")
-print(f"{'mean (meshed models)':<36} {100 * mean(ours, 'frac'):6.1f} {min([r['sj_min'] for r in ours] or [0]):6.3f} {mean(ours, 'sj_avg'):6.3f}"
-      f"{'':>16} | {100 * mean(theirs, 'frac'):6.1f} {min([r['sj_min'] for r in theirs] or [0]):6.3f} {mean(theirs, 'sj_avg'):6.3f}")
+    print(f"{m['file']:<36} {cell(a, wa):>47} | {cell(g, wg):>51}", flush=True)
+mean = lambda rows, k: np.nanmean([r.get(k, np.nan) for r in rows]) if rows else float("nan")
+print(f"{'mean (meshed models)':<36} {100 * mean(ours, 'frac'):6.1f} {min([r['sj_min'] for r in ours] or [0]):6.3f} {mean(ours, 'sj_avg'):6.3f} {mean(ours, 'bsj_avg'):6.3f}"
+      f"{'':>16} | {100 * mean(theirs, 'frac'):6.1f} {min([r['sj_min'] for r in theirs] or [0]):6.3f} {mean(theirs, 'sj_avg'):6.3f} "
+      f"{mean(theirs, 'bsj_avg'):6.3f}")
 print(f"{'mean (models both mesh: ' + str(len(both)) + ')':<36} {100 * mean([a for a, _ in both], 'frac'):6.1f} "
-      f"{min([a['sj_min'] for a, _ in both] or [0]):6.3f} {mean([a for a, _ in both], 'sj_avg'):6.3f}{'':>16} | "
+      f"{min([a['sj_min'] for a, _ in both] or [0]):6.3f} {mean([a for a, _ in both], 'sj_avg'):6.3f} "
+      f"{mean([a for a, _ in both], 'bsj_avg'):6.3f}{'':>16} | "
       f"{100 * mean([g for _, g in both], 'frac'):6.1f} {min([g['sj_min'] for _, g in both] or [0]):6.3f} "
-      f"{mean([g for _, g in both], 'sj_avg'):6.3f}   (--quad-method {method})")
+      f"{mean([g for _, g in both], 'sj_avg'):6.3f} {mean([g for _, g in both], 'bsj_avg'):6.3f}   (--quad-method {method})")
