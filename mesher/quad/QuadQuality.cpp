@@ -30,8 +30,15 @@ SurfaceQuadQuality surfaceQuadQuality(const SurfaceMesh& mesh) {
   SurfaceQuadQuality q;
   const double total = static_cast<double>(mesh.quads.size() + mesh.triangles.size());
   q.fraction = total > 0 ? static_cast<double>(mesh.quads.size()) / total : 0.0;
-  for (const auto& e : mesh.quads)
-    q.jacobian.add(scaledJacobian3d(mesh.nodes[e[0]], mesh.nodes[e[1]], mesh.nodes[e[2]], mesh.nodes[e[3]]));
+  for (const auto& e : mesh.quads) {
+    const double sj = scaledJacobian3d(mesh.nodes[e[0]], mesh.nodes[e[1]], mesh.nodes[e[2]], mesh.nodes[e[3]]);
+    q.jacobian.add(sj);
+    if (std::any_of(e.begin(), e.end(), [&](int n) {
+          const NodeOn::Kind k = mesh.nodeOn[n].kind;
+          return k == NodeOn::Kind::Vertex || k == NodeOn::Kind::Edge;
+        }))
+      q.boundaryJacobian.add(sj);
+  }
   return q;
 }
 

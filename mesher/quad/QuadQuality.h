@@ -13,6 +13,9 @@ namespace aniso::quad {
 struct SurfaceQuadQuality {
   double fraction = 0;        ///< quads / (quads + triangles), 0 for an empty mesh
   QualityStats jacobian;      ///< per quad
+  /// The quads with a corner on a model edge or vertex: the boundary layer of each face,
+  /// whose elements the boundary postprocessing (BoundaryPostprocess.h, thesis 4.8.3) cares for.
+  QualityStats boundaryJacobian;
 };
 
 /// One quad's scaled Jacobian in 3D (see above).

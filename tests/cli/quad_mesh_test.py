@@ -2,7 +2,8 @@
 """--quad surface meshes (issue 7): mostly quads, none inverted (scaled Jacobian >= 0.1 at every
 corner, measured in 3D from the written file as shared/tools/check_quad.py does), closed where the
 model is closed, area within 1% of the CAD area of the distinct faces, the report's quad block
-agreeing with the file, deterministic output.
+agreeing with the file (counts, fraction, scaled Jacobian, and the boundary layer's: the quads with
+a node on a model edge or vertex, the node's entity dimension <= 1 in the MSH), deterministic output.
 usage: quad_mesh_test.py CLI SHARED_DIR [--tier fast|slow]
 fast: a few small models at --hmax-rel 0.05, quad fraction >= 0.95, each also with --quad-method
 morph and mixed (same checks; the report names the method); slow: every public model at the issue's
@@ -35,7 +36,10 @@ def measure(path):
         e1, e2 = u - o, v - o
         sj = np.minimum(sj, np.linalg.norm(np.cross(e1, e2), axis=1) /
                         np.maximum(np.linalg.norm(e1, axis=1) * np.linalg.norm(e2, axis=1), 1e-300))
-    return len(Q), len(T), float(sj.min()) if len(Q) else 0.0, area, int((cnt == 1).sum())
+    dims = M.point_data["gmsh:dim_tags"][:, 0]
+    near = (dims[Q] <= 1).any(axis=1) if len(Q) else np.zeros(0, bool)
+    layer = (int(near.sum()), float(sj[near].mean()) if near.any() else 0.0)
+    return len(Q), len(T), float(sj.min()) if len(Q) else 0.0, area, int((cnt == 1).sum()), layer
 
 t = tempfile.mkdtemp()
 failed, passed = [], 0
@@ -55,7 +59,7 @@ for m, method in runs:
     if p.returncode != 0:
         failed.append(f"{name}: exit {p.returncode}: {p.stderr.strip()[-200:]}"); continue
     r = json.load(open(rep))
-    nq, nt, sj, area, open_edges = measure(out)
+    nq, nt, sj, area, open_edges, layer = measure(out)
     cad = r["model"]["unique_face_area"]
     frac = nq / max(nq + nt, 1)
     why = []
@@ -68,6 +72,9 @@ for m, method in runs:
     qb = r["quality"].get("quad", {})
     if abs(qb.get("fraction", -1) - frac) > 1e-9: why.append("report's quad fraction differs from the file's")
     if qb.get("scaled_jacobian", {}).get("min", -1) > sj + 1e-6: why.append("report's min scaled Jacobian above the file's")
+    bl = qb.get("boundary_scaled_jacobian", {})
+    if bl.get("quads") != layer[0] or abs(bl.get("mean", -1) - layer[1]) > 1e-6:
+        why.append(f"report's boundary layer {bl} differs from the file's ({layer[0]} quads, mean {layer[1]:.6f})")
     if r["options"].get("quad_method") != (method or "merge"): why.append(f"report's quad_method {r['options'].get('quad_method')}")
     if tier == "fast":
         subprocess.run(cmd + ["-o", out2], capture_output=True, timeout=900)
@@ -76,7 +83,7 @@ for m, method in runs:
     else:
         passed += 1
         print(f"ok {name}: {nq} quads {nt} triangles ({100 * frac:.1f}%), min scaled Jacobian {sj:.3f}, "
-              f"mean {qb['scaled_jacobian']['mean']:.3f}, mu_M {qb['mu_M']['mean']:.3f}", flush=True)
+              f"mean {qb['scaled_jacobian']['mean']:.3f}, boundary layer {bl['mean']:.3f}, mu_M {qb['mu_M']['mean']:.3f}", flush=True)
 for f in failed: print("FAIL", f)
 print(f"{passed}/{len(runs)} quad meshes passed")
 sys.exit(1 if failed else 0)

@@ -99,6 +99,9 @@ static void fillSurfaceReport(const SurfaceMeshResult& sr, io::Report& report) {
     const quad::SurfaceQuadQuality q = quad::surfaceQuadQuality(sr.mesh);
     report.quality["quad"] = {{"fraction", q.fraction},
                               {"scaled_jacobian", {{"min", q.jacobian.min()}, {"mean", q.jacobian.mean()}}},
+                              {"boundary_scaled_jacobian",
+                               {{"quads", q.boundaryJacobian.count()}, {"min", q.boundaryJacobian.count() ? q.boundaryJacobian.min() : 0.0},
+                                {"mean", q.boundaryJacobian.mean()}}},
                               {"mu_M", {{"mean", sr.quality.mu.mean()}, {"sd", sr.quality.mu.stddev()}}}};
   }
   const SurfaceMesh::EdgeCounts ec = sr.mesh.edgeCounts();
