@@ -20,23 +20,41 @@ bool touchesBoundary(const QuadMesh2d& mesh, int e) {
   return false;
 }
 
-/// Worst element quality of the star; −1 as soon as one element is not convex and
+/// The star's worst and mean element quality, and its worst quad (triangles are measured by
+/// their shape, not by a scaled Jacobian); worst −1 as soon as one element is not convex and
 /// counter-clockwise (elementQuality's verdict).
-double worstOf(const QuadMesh2d& mesh, VertexMetrics& metrics, std::span<const int> star) {
-  double worst = 2;
+struct StarScore {
+  double worst = -1, mean = 0, worstQuad = 2;
+};
+
+StarScore scoreOf(const QuadMesh2d& mesh, VertexMetrics& metrics, std::span<const int> star) {
+  StarScore s{2, 0, 2};
   for (int e : star) {
-    worst = std::min(worst, elementQuality(mesh, metrics, mesh.corners[e]));
-    if (worst <= 0) return -1.0;
+    const double q = elementQuality(mesh, metrics, mesh.corners[e]);
+    if (q <= 0) return {};
+    s.worst = std::min(s.worst, q);
+    if (mesh.isQuad(e)) s.worstQuad = std::min(s.worstQuad, q);
+    s.mean += q;
   }
-  return worst;
+  s.mean /= std::max<std::size_t>(1, star.size());
+  return s;
+}
+
+/// Trial `t` beats `current`: neither the worst element nor the worst quad drops, and
+/// worst + meanWeight × mean rises by more than minGain (the mean breaks ties between
+/// positions the worst cannot tell apart: pure max–min trades the good quads of the star for
+/// the poor one).
+bool beats(const StarScore& t, const StarScore& current, const BoundaryPostprocessOptions& o) {
+  return t.worst >= current.worst && t.worstQuad >= current.worstQuad &&
+         t.worst + o.meanWeight * t.mean > current.worst + o.meanWeight * current.mean + o.minGain;
 }
 
 /// The compass search of one vertex (see the header); leaves mesh.uv[v] at the best
-/// position found and returns its worst star quality.
-double searchVertex(QuadMesh2d& mesh, VertexMetrics& metrics, int v, std::span<const int> star,
-                    const Vec2& origin, double floor, double worst, const BoundaryPostprocessOptions& o) {
+/// position found.
+void searchVertex(QuadMesh2d& mesh, VertexMetrics& metrics, int v, std::span<const int> star,
+                  const Vec2& origin, double floor, StarScore score, const BoundaryPostprocessOptions& o) {
   const Mat2 s = metrics.at(v);
-  if (!(std::abs(s.determinant()) > 0)) return worst;
+  if (!(std::abs(s.determinant()) > 0)) return;
   const Mat2 sInverse = s.inverse();
   constexpr int kDirections = 8;
   constexpr int kMaxTrials = 48;  // bounds the work per vertex and sweep
@@ -62,7 +80,7 @@ double searchVertex(QuadMesh2d& mesh, VertexMetrics& metrics, int v, std::span<c
   int trials = 0;
   for (double step = o.initialStep; step >= o.finalStep && trials < kMaxTrials;) {
     Vec2 best = current;
-    double bestWorst = worst;
+    StarScore bestScore = score;
     for (int k = 0; k < kDirections; ++k, ++trials) {
       const double angle = 2.0 * std::numbers::pi * k / kDirections;
       const Vec2 trial = current + step * (sInverse * Vec2(std::cos(angle), std::sin(angle)));
@@ -70,22 +88,21 @@ double searchVertex(QuadMesh2d& mesh, VertexMetrics& metrics, int v, std::span<c
       mesh.uv[v] = trial;
       metrics.refreshPoint(v);
       if (!sizesKept()) continue;
-      const double w = worstOf(mesh, metrics, star);
-      if (w > bestWorst) {
-        bestWorst = w;
+      const StarScore t = scoreOf(mesh, metrics, star);
+      if (beats(t, bestScore, o)) {
+        bestScore = t;
         best = trial;
       }
     }
-    if (bestWorst > worst + o.minGain) {
+    if (best != current) {
       current = best;
-      worst = bestWorst;
+      score = bestScore;
     } else {
       step *= 0.5;
     }
   }
   mesh.uv[v] = current;
   metrics.refreshPoint(v);
-  return worst;
 }
 
 }  // namespace
@@ -128,14 +145,14 @@ BoundaryPostprocessStats postprocessBoundaryLayer(QuadMesh2d& mesh, VertexMetric
     for (std::size_t i = 0; i < layer.size(); ++i) {
       const int v = layer[i];
       const std::span<const int> star = ve.of(v);
-      const double worst = worstOf(mesh, metrics, star);
-      if (worst >= o.careBelow || worst <= 0) continue;
+      const StarScore score = scoreOf(mesh, metrics, star);
+      if (score.worst >= o.careBelow || score.worst <= 0) continue;
       if (!counted[i]) {
         counted[i] = 1;
         ++st.candidates;
       }
       const Vec2 before = mesh.uv[v];
-      searchVertex(mesh, metrics, v, star, origin[i], floor[i], worst, o);
+      searchVertex(mesh, metrics, v, star, origin[i], floor[i], score, o);
       if (mesh.uv[v] != before) {
         ++st.moved;
         moved.push_back(v);

@@ -7,12 +7,15 @@
 // Laplace smoothing (QuadSmoothing.h) moves a vertex toward the metric centroid of its
 // neighbours, which is right for sizes but blind to the angles a fixed, possibly curved or
 // kinked boundary imposes on the first layer. Here every free vertex of the boundary layer
-// whose star holds an element below `careBelow` is moved by a local max–min optimisation:
-// a compass (pattern) search in the vertex's metric space (8 directions, steps from
-// `initialStep` halving down to `finalStep`, in metric lengths) that maximises the worst
-// quality of the vertex's star (elementQuality: the 3D scaled Jacobian of quads, the metric
-// shape of triangles). A trial position is taken only when the star stays strictly convex
-// and counter-clockwise (exact) and its worst quality rises by more than `minGain`; the
+// whose star holds an element below `careBelow` is moved by a local optimisation: a compass
+// (pattern) search in the vertex's metric space (8 directions, steps from `initialStep`
+// halving down to `finalStep`, in metric lengths) over the quality of the vertex's star
+// (elementQuality: the 3D scaled Jacobian of quads, the metric shape of triangles). A trial
+// position is taken only when the star stays strictly convex and counter-clockwise (exact),
+// neither its worst element nor its worst quad gets worse, and worst + meanWeight × mean
+// rises by more than `minGain` (measured on box, Block, RECT1, SURF0, SURF1:
+// pure max–min, meanWeight 0, raises the worst boundary quads but lowers the layer's mean
+// SJ on the box, 0.911 → 0.907; 0.5 raises both: 0.911 → 0.914, worst 0.29 → 0.45); the
 // vertex never goes further than `maxDisplacement` (metric length) from where the
 // smoothing left it, and the metric length of every edge at the vertex stays at least
 // `shortestEdge` × the shortest edge of its star on entry (or its own length, if shorter)
@@ -33,7 +36,8 @@ struct BoundaryPostprocessOptions {
   double initialStep = 0.2;       ///< first trial step, metric length
   double finalStep = 0.0125;      ///< the search stops below this step
   double maxDisplacement = 0.5;   ///< metric length from the vertex's position on entry
-  double minGain = 1e-3;          ///< least rise of the star's worst quality that counts
+  double minGain = 1e-3;          ///< least rise of the score (worst + meanWeight × mean) that counts
+  double meanWeight = 0.5;        ///< weight of the star's mean quality in the score
   double shortestEdge = 0.5;      ///< relative to the star's shortest edge on entry
   double longestEdge = 2.0;       ///< metric length an edge at the vertex may grow to
 };
