@@ -1,7 +1,6 @@
 #include "mesher/volume/BoundaryTriangulation.h"
 
 #include <algorithm>
-#include <map>
 #include <unordered_map>
 
 #include "mesher/delaunay3d/Delaunay3d.h"
@@ -35,7 +34,10 @@ BoundaryTriangulation triangulateBoundary(const SurfaceMesh& mesh, const Boundar
   }
   if (!out.problems.empty()) return out;
   SolidBoundary& sb = out.boundary;
-  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edgeIndex;
+  // Edges numbered in order of first use (a hash set of the vertex pairs: 3 lookups per
+  // triangle).
+  std::unordered_map<std::uint64_t, int> edgeIndex;
+  edgeIndex.reserve(2 * b.triangles.size());
   for (std::size_t t = 0; t < b.triangles.size(); ++t) {
     std::array<VertexId, 3> tri;
     for (int k = 0; k < 3; ++k) tri[k] = vertexOfNode.at(b.triangles[t][k]);
@@ -44,7 +46,8 @@ BoundaryTriangulation triangulateBoundary(const SurfaceMesh& mesh, const Boundar
     for (int k = 0; k < 3; ++k) {
       std::uint32_t p = tri[k].index, q = tri[(k + 1) % 3].index;
       if (p > q) std::swap(p, q);
-      if (edgeIndex.emplace(std::make_pair(p, q), static_cast<int>(sb.edges.size())).second) {
+      const std::uint64_t key = (std::uint64_t{p} << 32) | q;
+      if (edgeIndex.emplace(key, static_cast<int>(sb.edges.size())).second) {
         sb.edges.push_back({VertexId(p), VertexId(q)});
         sb.edgeTriangle.push_back(static_cast<int>(t));
       }
