@@ -166,7 +166,7 @@ Vec3 VertexMover::worstApex(del3d::VertexId v) const {
   return m.inverse() * ((a + b + c) / 3 + std::sqrt(2.0 / 3.0) * len * n);
 }
 
-double VertexMover::angleMeasure(del3d::VertexId v, const Vec3& p) const {
+double VertexMover::angleMeasure(del3d::VertexId v, const Vec3& p, double stopAtOrBelow) const {
   double worst = 180;
   for (const del3d::TetId t : star_) {
     const std::uint32_t* tv = s_.mesh.tetVertices(t);
@@ -175,6 +175,7 @@ double VertexMover::angleMeasure(del3d::VertexId v, const Vec3& p) const {
     for (int i = 0; i < 4; ++i) q[i] = m * (tv[i] == v.index ? p : s_.mesh.point(del3d::VertexId(tv[i])));
     const DihedralRange r = tetDihedralRange(q[0], q[1], q[2], q[3]);
     worst = std::min({worst, r.minDeg, 180 - r.maxDeg});
+    if (worst <= stopAtOrBelow) break;
   }
   return worst;
 }
@@ -186,18 +187,24 @@ bool VertexMover::relocate(del3d::VertexId v, bool angles) {
   const Vec3 q = s_.mesh.point(v);
   double worst0, mean;
   quality(v, q, worst0, mean);
-  double best = angles ? angleMeasure(v, q) : worst0;
+  // The star's poorest tets first (stable: equal scores keep their order): a candidate
+  // position is rejected at its first tet not above the best so far, soonest this way.
+  order_.resize(star_.size());
+  for (std::size_t k = 0; k < order_.size(); ++k) order_[k] = static_cast<std::uint32_t>(k);
+  std::stable_sort(order_.begin(), order_.end(), [&](std::uint32_t x, std::uint32_t y) { return trial_[x] < trial_[y]; });
+  sorted_.resize(star_.size());
+  for (std::size_t k = 0; k < order_.size(); ++k) sorted_[k] = star_[order_[k]];
+  star_.swap(sorted_);
+  double best = angles ? angleMeasure(v, q, -1e300) : worst0;
   double shortest = 1e300;
   for (const std::uint32_t w : nbrs_) shortest = std::min(shortest, (s_.mesh.point(del3d::VertexId(w)) - q).norm());
   Vec3 bestP = q;
+  // the angles may not cost more than half the star's worst η_M³
+  const double keep = std::nextafter(kAngleMoveScoreKeep * worst0, 1e300);
   auto consider = [&](const Vec3& p) {
     double w, m;
-    quality(v, p, w, m);
-    if (angles) {
-      // the angles may not cost more than half the star's worst η_M³
-      if (!(w > kAngleMoveScoreKeep * worst0)) return;
-      w = angleMeasure(v, p);
-    }
+    if (!quality(v, p, w, m, angles ? keep : std::nextafter(best, 1e300))) return;  // w ≤ the bound
+    if (angles) w = angleMeasure(v, p, best);
     if (w > best && legal(v, p, true)) best = w, bestP = p;
   };
   consider(laplaceTarget(v, -1.0));

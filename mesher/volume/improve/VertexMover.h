@@ -58,7 +58,9 @@ class VertexMover {
   bool quality(del3d::VertexId v, const Vec3& p, double& worst, double& mean, double rejectBelow = -1e300);
   Vec3 laplaceTarget(del3d::VertexId v, double lowGradation) const;
   Vec3 worstApex(del3d::VertexId v) const;
-  double angleMeasure(del3d::VertexId v, const Vec3& p) const;
+  /// The star's smallest min(θ_min, 180° − θ_max) with v at p; stops (returning a value at
+  /// or below it) once it is at or below stopAtOrBelow.
+  double angleMeasure(del3d::VertexId v, const Vec3& p, double stopAtOrBelow) const;
   void move(del3d::VertexId v, const Vec3& p);
 
   SolidTetMesh& s_;
@@ -67,6 +69,8 @@ class VertexMover {
   const VertexTets* incidence_ = nullptr;
   std::vector<del3d::TetId> star_;
   std::vector<double> trial_;  ///< per star tet: the score of the last quality() call
+  std::vector<std::uint32_t> order_;   ///< relocate(): the star sorted by score
+  std::vector<del3d::TetId> sorted_;
   std::vector<std::uint32_t> nbrs_;  ///< the star's other vertices, in discovery order
   std::vector<std::uint32_t> seen_;  ///< per vertex: stamp_ when already in nbrs_
   std::uint32_t stamp_ = 0;
