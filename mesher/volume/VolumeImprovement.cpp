@@ -57,16 +57,17 @@ VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, cons
   improve3d::VertexMetrics& vm = *metrics;
   vm.sync();
   improve3d::VertexMover mover(s, vm);
+  std::optional<improve3d::TetScores> scores;  // exact after each pass: the sliver scan reads it
   for (int pass = 0; pass < o.passes; ++pass) {
     auto t0 = Clock::now();
     // every tet measured once; smoothing and flips read and keep this cache
-    improve3d::TetScores scores(s.mesh, vm);
-    mover.setScores(&scores);
+    scores.emplace(s.mesh, vm);
+    mover.setScores(&*scores);
     st.moved += smoothVertices(s, mover, o);
     st.smoothingSeconds += since(t0);
     t0 = Clock::now();
     mover.setScores(nullptr);
-    improve3d::QualityFlips flips(s, vm, o.flipGain, &scores);
+    improve3d::QualityFlips flips(s, vm, o.flipGain, &*scores);
     flips.run(o.flipCandidate);
     st.flips23 += flips.counts().f23;
     st.flips32 += flips.counts().f32;
@@ -76,7 +77,8 @@ VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, cons
   const auto t0 = Clock::now();
   if (o.sliverRounds > 0) {
     const improve3d::SliverStats ss = improve3d::removeSlivers(s, cs, vm, o.sliverAngleDeg, o.euclideanSliverAngleDeg,
-                                                               o.sliverRounds, o.sliverInsertion);
+                                                               o.sliverRounds, o.sliverInsertion,
+                                                               scores ? &*scores : nullptr);
     st.sliversBefore = ss.before;
     st.sliversAfter = ss.after;
     st.sliverFlips = ss.flips;

@@ -11,6 +11,7 @@
 #include "mesher/volume/VolumeImprovement.h"
 #include "mesher/volume/VolumeRefinement.h"
 #include "mesher/volume/improve/QualityFlips.h"
+#include "mesher/volume/improve/SliverRemoval.h"
 #include "mesher/volume/improve/TetScores.h"
 #include "mesher/volume/improve/TetStar.h"
 #include "mesher/volume/improve/VertexMover.h"
@@ -126,6 +127,12 @@ void checkCacheStaysExact(const ControlSpace3d& cs) {
   flips.run(2.0);
   EXPECT_GT(flips.counts().total(), 0u);
   EXPECT_TRUE(scores.valid());
+  // the sliver scan reading the cache finds the same slivers
+  for (const double angle : {15.0, 30.0, 60.0}) {
+    const auto slivers = improve3d::liveSlivers(s, vm, angle, 5.0);
+    EXPECT_EQ(improve3d::liveSlivers(s, vm, angle, 5.0, &scores), slivers);
+    if (angle == 60.0) EXPECT_FALSE(slivers.empty());
+  }
   EXPECT_TRUE(checkSolid(s, boundary).empty()) << joined(checkSolid(s, boundary));
 }
 

@@ -208,11 +208,17 @@ std::vector<TetId> SliverRemover::round(const std::vector<TetId>& slivers) {
 
 }  // namespace
 
-std::vector<TetId> liveSlivers(const SolidTetMesh& s, const VertexMetrics& vm, double angleDeg, double euclideanDeg) {
+std::vector<TetId> liveSlivers(const SolidTetMesh& s, const VertexMetrics& vm, double angleDeg, double euclideanDeg,
+                               const TetScores* scores) {
   const VertexMetrics::SliverAngles a(angleDeg, euclideanDeg);
   std::vector<TetId> out;
-  for (std::uint32_t k = 0; k < s.mesh.tetSlots(); ++k)
-    if (s.mesh.isAlive(TetId(k)) && vm.isSliver(TetId(k), a)) out.push_back(TetId(k));
+  for (std::uint32_t k = 0; k < s.mesh.tetSlots(); ++k) {
+    const TetId t(k);
+    if (!s.mesh.isAlive(t)) continue;
+    // the cached score of an isotropic tet is its Euclidean η³, which isSliver tests first
+    if (scores && (*scores)[t] > a.etaIsotropic && vm.isIsotropic(s.mesh.tetVertices(t))) continue;
+    if (vm.isSliver(t, a)) out.push_back(t);
+  }
   return out;
 }
 
@@ -225,10 +231,10 @@ std::size_t countSlivers(const SolidTetMesh& s, const VertexMetrics& vm, double 
 }
 
 SliverStats removeSlivers(SolidTetMesh& s, const ControlSpace3d& cs, VertexMetrics& vm, double angleDeg,
-                          double euclideanDeg, int rounds, bool insertion) {
+                          double euclideanDeg, int rounds, bool insertion, const TetScores* scores) {
   SliverRemover r(s, cs, vm, angleDeg, euclideanDeg, insertion);
   // The live slivers, rescanned after each round (the only whole-mesh scans).
-  std::vector<TetId> current = liveSlivers(s, vm, angleDeg, euclideanDeg);
+  std::vector<TetId> current = liveSlivers(s, vm, angleDeg, euclideanDeg, scores);
   r.stats.before = current.size();
   vm.setGuardEuclidean(true);
   // Later rounds visit every sliver again: the operators (insertions, Steiner points) make

@@ -32,6 +32,7 @@
 
 #include "mesher/control/ControlSpace3d.h"
 #include "mesher/volume/SolidTetMesh.h"
+#include "mesher/volume/improve/TetScores.h"
 #include "mesher/volume/improve/VertexMetrics.h"
 
 namespace aniso::improve3d {
@@ -51,14 +52,18 @@ struct SliverStats {
   }
 };
 
-/// The live slivers of s in slot order (VertexMetrics::isSliver).
+/// The live slivers of s in slot order (VertexMetrics::isSliver). With `scores` (exact for
+/// the mesh as it is, TetScores.h) an isotropic tet whose cached η³ excludes the angles
+/// (SliverAngles) is passed over without being measured again.
 std::vector<del3d::TetId> liveSlivers(const SolidTetMesh& s, const VertexMetrics& vm, double angleDeg,
-                                      double euclideanDeg);
+                                      double euclideanDeg, const TetScores* scores = nullptr);
 
 /// Number of live slivers of s (VertexMetrics::isSliver).
 std::size_t countSlivers(const SolidTetMesh& s, const VertexMetrics& vm, double angleDeg, double euclideanDeg);
 
+/// `scores`: optional, exact at the call (the smoothing and flips' cache); read by the first
+/// scan only (the operators here do not keep it).
 SliverStats removeSlivers(SolidTetMesh& s, const ControlSpace3d& cs, VertexMetrics& vm, double angleDeg,
-                          double euclideanDeg, int rounds, bool insertion);
+                          double euclideanDeg, int rounds, bool insertion, const TetScores* scores = nullptr);
 
 }  // namespace aniso::improve3d
