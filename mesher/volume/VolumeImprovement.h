@@ -21,7 +21,15 @@
 //     accepted when it raises the local minimum of min(η_M, η) (the metric and the
 //     Euclidean mean ratio); rounds repeat while they make progress (at most sliverRounds).
 // η_M of a tet uses the mean of the four vertices' transformation tensors (cached per
-// vertex, one control-space call per vertex: improve/VertexMetrics.h). Fixed vertices
+// vertex, one control-space call per vertex: improve/VertexMetrics.h).
+// Cost (the same decisions, measured once): each tet's score is computed once per pass and
+// kept exact by the smoothing and the flips (improve/TetScores.h), the stars of the
+// smoothing are read from one incidence snapshot (improve/VertexTets.h), a trial position
+// is dropped at its first tet that already rejects it, a trial's Euclidean score certifies
+// the orientation (orient3d only below kOrientationCertificate), run() of the flips skips
+// faces and edges already tried on the same tets, and the sliver test asks the mean ratio
+// bound η³ ≤ 2 sin²θ before the dihedral cosines. Cube at h = 0.02 (547 k tets): 5.0 G ->
+// 2.3 G instructions (callgrind), MSH byte-identical. Fixed vertices
 // (node ≥ 0) never move; the hull (the constrained boundary triangles) is unchanged, so
 // validateSolidTetMesh holds afterwards.
 // Deterministic.
