@@ -29,7 +29,9 @@
 // the orientation (orient3d only below kOrientationCertificate), run() of the flips skips
 // faces and edges already tried on the same tets, and the sliver test asks the mean ratio
 // bound η³ ≤ 2 sin²θ before the dihedral cosines. Cube at h = 0.02 (547 k tets): 5.0 G ->
-// 2.3 G instructions (callgrind), MSH byte-identical. Fixed vertices
+// 2.3 G instructions (callgrind); the output differs only through the stars' order (slot
+// order of the incidence instead of the walk's: the Laplace means sum in another order),
+// same referee figures. Fixed vertices
 // (node ≥ 0) never move; the hull (the constrained boundary triangles) is unchanged, so
 // validateSolidTetMesh holds afterwards.
 // Deterministic.
