@@ -45,13 +45,12 @@ bool circumcentreOffset(const double* a, const double* b, const double* c, const
   return offset(a, b, c, d, centre, det, l);
 }
 
-CachedSphere cachedSphere(const double* a, const double* b, const double* c, const double* d) {
-  CachedSphere s;
+void cachedSphere(const double* a, const double* b, const double* c, const double* d, CachedSphere& s) {
   double o[3], det, l;
   if (!offset(a, b, c, d, o, det, l)) {
     s.centre[0] = a[0], s.centre[1] = a[1], s.centre[2] = a[2];
     s.radius2 = std::numeric_limits<double>::quiet_NaN();
-    return s;
+    return;
   }
   for (int k = 0; k < 3; ++k) s.centre[k] = a[k] + o[k];
   const double r2 = (o[0] * o[0] + o[1] * o[1]) + o[2] * o[2];
@@ -67,7 +66,6 @@ CachedSphere cachedSphere(const double* a, const double* b, const double* c, con
   const bool certified = l >= kMinL && l <= kMaxL && r2 >= kMinR2 && r2 <= kMaxR2 && detError <= 0.5 * absDet &&
                          std::isfinite(lhs) && lhs <= etaDet * etaDet * r2;
   s.radius2 = certified ? r2 : -r2;
-  return s;
 }
 
 bool sphereFilterAgrees(const double* a, const double* b, const double* c, const double* d, const double* p) {

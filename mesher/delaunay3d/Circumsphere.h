@@ -48,8 +48,14 @@ struct CachedSphere {
   double radius2;
 };
 
-/// The circumsphere of (a, b, c, d) (any orientation) with its certificate.
-CachedSphere cachedSphere(const double* a, const double* b, const double* c, const double* d);
+/// The circumsphere of (a, b, c, d) (any orientation) with its certificate, written to s
+/// (in place: the hot path writes it straight into the cache).
+void cachedSphere(const double* a, const double* b, const double* c, const double* d, CachedSphere& s);
+inline CachedSphere cachedSphere(const double* a, const double* b, const double* c, const double* d) {
+  CachedSphere s;
+  cachedSphere(a, b, c, d, s);
+  return s;
+}
 
 /// Squared circumradius of a cached sphere (NaN for a flat tet).
 inline double sphereRadius2(const CachedSphere& s) { return std::fabs(s.radius2); }

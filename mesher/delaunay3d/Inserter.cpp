@@ -76,8 +76,8 @@ void Inserter::cacheSpheres() {
   for (std::uint32_t k = 0; k < mesh_.tetSlots(); ++k) {
     if (!mesh_.isAlive(TetId(k))) continue;
     const std::uint32_t* tv = mesh_.tetVertices(TetId(k));
-    spheres_[k] = cachedSphere(mesh_.coords(VertexId(tv[0])), mesh_.coords(VertexId(tv[1])),
-                               mesh_.coords(VertexId(tv[2])), mesh_.coords(VertexId(tv[3])));
+    cachedSphere(mesh_.coords(VertexId(tv[0])), mesh_.coords(VertexId(tv[1])), mesh_.coords(VertexId(tv[2])),
+                 mesh_.coords(VertexId(tv[3])), spheres_[k]);
   }
 }
 
@@ -406,8 +406,8 @@ void Inserter::commit() {
     if (spheres_.size() < mesh_.tetSlots()) spheres_.resize(mesh_.tetSlots());
     for (std::size_t k = 0; k < nb_; ++k) {
       const std::uint32_t* v = boundary_[k].v;
-      spheres_[newTets_[k].index] = cachedSphere(mesh_.coords(VertexId(v[0])), mesh_.coords(VertexId(v[1])),
-                                                 mesh_.coords(VertexId(v[2])), mesh_.coords(VertexId(v[3])));
+      cachedSphere(mesh_.coords(VertexId(v[0])), mesh_.coords(VertexId(v[1])), mesh_.coords(VertexId(v[2])),
+                   mesh_.coords(VertexId(v[3])), spheres_[newTets_[k].index]);
     }
   }
   for (std::size_t k = 0; k < nb_; ++k) {
