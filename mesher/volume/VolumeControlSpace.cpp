@@ -12,6 +12,7 @@
 #include "mesher/control/ExtendedSource3d.h"
 #include "mesher/core/Error.h"
 #include "mesher/metric/AnisotropyLimit.h"
+#include "mesher/metric/IsotropicTensor.h"
 #include "mesher/metric/MetricInterpolation.h"
 #include "mesher/metric/MetricIntersection.h"
 #include "mesher/metric/SimplexMetric.h"
@@ -78,8 +79,8 @@ double volumeGradation(double gamma, double factor) {
 }
 
 VolumeMetricSpace::VolumeMetricSpace(std::shared_ptr<const ControlSpace3d> user, std::span<const Vec3> boundary,
-                                     double factor)
-    : user_(std::move(user)), factor_(factor), inverse_(1.0 / factor) {
+                                     double factor, std::shared_ptr<const TriangleTree> surface)
+    : user_(std::move(user)), factor_(factor), surface_(std::move(surface)) {
   if (!user_) throw MeshingError("VolumeMetricSpace: no control space");
   if (!(factor > 0) || !std::isfinite(factor)) throw MeshingError("VolumeMetricSpace: the length factor must be > 0");
   boundary_.reserve(boundary.size());
@@ -97,6 +98,20 @@ std::size_t VolumeMetricSpace::KeyHash::operator()(const Key& k) const {
   h = (h ^ (h >> 29) ^ k[1]) * 0xBF58476D1CE4E5B9ull;
   h = (h ^ (h >> 31) ^ k[2]) * 0x94D049BB133111EBull;
   return static_cast<std::size_t>(h ^ (h >> 32));
+}
+
+double VolumeMetricSpace::lengthFactor(const Vec3& x, const Metric3d& m) const {
+  if (onBoundary(x)) return 1.0;
+  if (!surface_) return factor_;
+  // Search radius: kVolumeTransitionLayers times the largest size of M(x), bounded above by
+  // the Frobenius norm of the length tensor (a farther surface point is farther than the
+  // transition in M).
+  const double s = isotropicScale(m.matrix());
+  const double hmax = s > 0 ? 1.0 / s : m.inverseMatrix().norm();
+  Vec3 c;
+  if (!surface_->closest(x, kVolumeTransitionLayers * hmax, c)) return factor_;
+  const double t = std::min(1.0, m.length(x - c) / kVolumeTransitionLayers);
+  return 1.0 + (factor_ - 1.0) * t;
 }
 
 bool VolumeMetricSpace::onBoundary(const Vec3& x) const {

@@ -27,20 +27,23 @@
 // kVolumeLengthFactor — the meaning Gmsh gives its sizes in 3D (its HXT and Delaunay meshes
 // have interior edges of about 1.45 h). buildVolumeControlSpace returns the user's metric M
 // (the one the surface was meshed in); the tetrahedra are made, improved and measured in
-// M_v (VolumeMetricSpace): M at the solid's surface nodes and M / f everywhere else
-// (transformation tensor; metric tensor 𝓜 / f²). Every consumer measures a tet from its
-// vertices' tensors (η_M, μ_M, the eq. 6.1/6.2 predictions and the improvement in their mean;
-// the refinement's q(K) of eq. 5.2 and l_M > 1.5 edge check by eq. 2.18, the mean of their
-// length tensors, VolumeRefinement.h), so the size grades from h at the boundary to f·h one
-// layer of tets inside: the tets on a boundary triangle are shaped for it, not for a surface
-// 1/f too fine (measured on the unit cube at size 0.02 with M / f up to the boundary: tets
-// with a boundary node mean ratio 0.844 against 0.873 inside; on submarine.stp 0.84 on
-// boundary triangles, 0.78-0.81 overall, below the 0.80 bar).
-// The step from M to M / f at the surface nodes is not what kept μ_M below 1 on graded
-// meshes (CYLINDER2: μ_M 0.82 in M_v, interior edges 0.69): with f = 1 it was 0.84, and
-// with f graded from 1 at the surface to 1.4 over 0.5-3 local sizes 0.79-0.82; the cause
-// was the refinement measuring tets in the mean of the vertices' tensors (see
-// VolumeRefinement.h).
+// M_v (VolumeMetricSpace): M on the solid's surface, M / f from one unit length of M
+// (kVolumeTransitionLayers) inside on, the length factor linear in the metric distance to
+// the closest surface point in between (BoundaryDistance.h; transformation tensor; metric
+// tensor 𝓜 / f² away from the surface). Every consumer measures a tet from its vertices'
+// tensors (η_M, μ_M, the eq. 6.1/6.2 predictions and the improvement in their mean; the
+// refinement's q(K) of eq. 5.2 and l_M > 1.5 edge check by eq. 2.18, the mean of their
+// length tensors, VolumeRefinement.h), so the size grades from h at the boundary to f·h
+// about one layer of tets inside: the tets on a boundary triangle are shaped for it, not
+// for a surface 1/f too fine (measured on the unit cube at size 0.02 with M / f up to the
+// boundary: tets with a boundary node mean ratio 0.844 against 0.873 inside; on
+// submarine.stp 0.84 on boundary triangles, 0.78-0.81 overall, below the 0.80 bar).
+// What kept μ_M below 1 on graded meshes (CYLINDER2 at the defaults: μ_M 0.82 in M_v,
+// interior edges 0.69) was not mainly the step from M at the surface nodes to M / f at
+// every other point (M_v until then): with f = 1 μ_M was 0.84, with f graded over 0.5-3
+// local sizes 0.79-0.82. It was the refinement measuring tets in the mean of the vertices'
+// tensors (VolumeRefinement.h: 0.97 without it); the grading then adds 0.01-0.016 (see
+// kVolumeTransitionLayers).
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -52,6 +55,7 @@
 #include "mesher/model/Model.h"
 #include "mesher/sizing/UserSizing.h"
 #include "mesher/surface/SurfaceMesh.h"
+#include "mesher/volume/BoundaryDistance.h"
 
 namespace aniso {
 
@@ -65,27 +69,42 @@ namespace aniso {
 /// - / 0.803 / 0.801 / 0.7997; with the gradation held in M_v (volumeGradation) at 1.4:
 /// U_Joint_2 0.808, ellipses.brep 0.801 (0.798 without; 0.8075 at f = 1). 1.4 lands at
 /// 1.12 x HXT's count on the cube (uniform: the gradation does not change it).
-/// CYLINDER2 (r 1, l 10, γ_a 10; tests/cli/cylinder2_test.py): η_M 0.786, μ_M 0.974 in M_v at
-/// the defaults (0.800 / 0.821 with the refinement in the mean of the vertex tensors).
+/// CYLINDER2 (r 1, l 10, γ_a 10; tests/cli/cylinder2_test.py): η_M 0.793, μ_M 0.984 in M_v at
+/// the defaults (0.800 / 0.821 with the refinement in the mean of the vertex tensors and M_v
+/// stepping from M to M / f at the surface nodes).
 inline constexpr double kVolumeLengthFactor = 1.4;
+
+/// The depth, in unit lengths of M, over which M_v grades from M at the surface to M / f
+/// (VolumeMetricSpace with a surface): about one layer of tets, a size slope of (f − 1) /
+/// kVolumeTransitionLayers = 0.4, below γ_M's (eq. 2.27: 1.2 at γ_M 4). Measured (CYLINDER2
+/// at γ_c 0.15 / 0.1 / 0.05; the cube at size 0.02): the step M -> M / f at the surface nodes
+/// μ_M 0.974 / 0.948 / 0.938, η_M 0.786 / 0.794 / 0.772, cube 547 k tets; graded over 1:
+/// 0.979 / 0.962 / 0.954, η_M 0.796 / 0.790 / 0.775, cube 549 k; over 2: 0.997 / 0.983 /
+/// 0.970, cube 582 k (1.19 x HXT, the limit of the count asked for).
+inline constexpr double kVolumeTransitionLayers = 1.0;
 
 /// M_v of the convention above: the metric of `user` with every requested length times
 /// `factor` (M / factor), except at the points of `boundary` (exact coordinates: the solid's
-/// surface nodes), where it is M. Thread safety and revision as `user`'s.
+/// surface nodes), where it is M. With `surface` (the solid's boundary triangles), M_v grades
+/// from M on the surface to M / factor at the metric distance kVolumeTransitionLayers (the
+/// length in M(x) of the vector from x to its closest surface point): the length factor is
+/// 1 + (factor − 1) min(1, l / kVolumeTransitionLayers). Thread safety and revision as
+/// `user`'s.
 class VolumeMetricSpace final : public ControlSpace3d {
  public:
   VolumeMetricSpace(std::shared_ptr<const ControlSpace3d> user, std::span<const Vec3> boundary = {},
-                    double factor = kVolumeLengthFactor);
+                    double factor = kVolumeLengthFactor, std::shared_ptr<const TriangleTree> surface = nullptr);
   Metric3d getMetric(const Vec3& x) const override {
     const Metric3d m = user_->getMetric(x);
-    return onBoundary(x) ? m : m.scaled(inverse_);
+    return m.scaled(1.0 / lengthFactor(x, m));
   }
   Box3 bounds() const override { return user_->bounds(); }
   std::uint64_t revision() const override { return user_->revision(); }
   /// f.
   double factor() const { return factor_; }
-  /// Lengths in M_v at x times this are lengths in M: 1 at a boundary node, f elsewhere.
-  double lengthFactorAt(const Vec3& x) const { return onBoundary(x) ? 1.0 : factor_; }
+  /// Lengths in M_v at x times this are lengths in M: 1 at a boundary node, f away from
+  /// the surface (graded in between with a surface).
+  double lengthFactorAt(const Vec3& x) const { return lengthFactor(x, user_->getMetric(x)); }
   bool onBoundary(const Vec3& x) const;
   const ControlSpace3d& user() const { return *user_; }
 
@@ -95,10 +114,13 @@ class VolumeMetricSpace final : public ControlSpace3d {
     std::size_t operator()(const Key& k) const;
   };
   static Key key(const Vec3& x);
+  /// The length factor at x, m = M(x).
+  double lengthFactor(const Vec3& x, const Metric3d& m) const;
 
   std::shared_ptr<const ControlSpace3d> user_;
-  double factor_, inverse_;
+  double factor_;
   std::unordered_set<Key, KeyHash> boundary_;
+  std::shared_ptr<const TriangleTree> surface_;
 };
 
 /// The gradation ratio for M whose size slope (eq. 2.27: a_max = 2 (γ − 1) / (γ + 1)) is

@@ -1,0 +1,119 @@
+#include "mesher/volume/BoundaryDistance.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace aniso {
+namespace {
+
+/// Triangles per leaf of the tree.
+constexpr std::uint32_t kLeafTriangles = 4;
+
+double boxDistance2(const Box3& b, const Vec3& x) {
+  const Vec3 below = (b.lo - x).cwiseMax(0.0), above = (x - b.hi).cwiseMax(0.0);
+  return below.squaredNorm() + above.squaredNorm();
+}
+
+}  // namespace
+
+Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return a;
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + d1 / (d1 - d3) * ab;
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + d2 / (d2 - d6) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
+  const double denom = va + vb + vc;
+  if (!(denom > 0)) return a;  // degenerate triangle: a is on it
+  return a + (vb / denom) * ab + (vc / denom) * ac;
+}
+
+TriangleTree::TriangleTree(std::span<const Vec3> points, std::span<const std::array<int, 3>> triangles) {
+  tris_.reserve(triangles.size());
+  std::vector<Vec3> centroids;
+  centroids.reserve(triangles.size());
+  for (const auto& t : triangles) {
+    tris_.push_back({points[t[0]], points[t[1]], points[t[2]]});
+    centroids.push_back((points[t[0]] + points[t[1]] + points[t[2]]) / 3.0);
+  }
+  if (!tris_.empty()) build(0, static_cast<std::uint32_t>(tris_.size()), centroids);
+}
+
+std::int32_t TriangleTree::build(std::uint32_t first, std::uint32_t count, std::vector<Vec3>& centroids) {
+  const auto id = static_cast<std::int32_t>(nodes_.size());
+  nodes_.emplace_back();
+  Box3 box, cbox;
+  for (std::uint32_t i = first; i < first + count; ++i) {
+    for (const Vec3& p : tris_[i]) box.add(p);
+    cbox.add(centroids[i]);
+  }
+  nodes_[id].box = box;
+  if (count <= kLeafTriangles) {
+    nodes_[id].first = first;
+    nodes_[id].count = count;
+    return id;
+  }
+  int axis = 0;
+  cbox.size().maxCoeff(&axis);
+  // Median split of [first, first + count) by the centroid's coordinate (index order breaks
+  // ties: deterministic), triangles and centroids permuted together.
+  std::vector<std::uint32_t> order(count);
+  std::iota(order.begin(), order.end(), first);
+  const std::uint32_t half = count / 2;
+  std::nth_element(order.begin(), order.begin() + half, order.end(), [&](std::uint32_t x, std::uint32_t y) {
+    return centroids[x][axis] < centroids[y][axis] || (centroids[x][axis] == centroids[y][axis] && x < y);
+  });
+  std::vector<std::array<Vec3, 3>> t(count);
+  std::vector<Vec3> c(count);
+  for (std::uint32_t i = 0; i < count; ++i) t[i] = tris_[order[i]], c[i] = centroids[order[i]];
+  std::copy(t.begin(), t.end(), tris_.begin() + first);
+  std::copy(c.begin(), c.end(), centroids.begin() + first);
+  const std::int32_t left = build(first, half, centroids);
+  const std::int32_t right = build(first + half, count - half, centroids);
+  nodes_[id].left = left;
+  nodes_[id].right = right;
+  return id;
+}
+
+bool TriangleTree::closest(const Vec3& x, double maxDistance, Vec3& out) const {
+  if (nodes_.empty() || !(maxDistance >= 0)) return false;
+  double best = maxDistance * maxDistance;
+  bool found = false;
+  std::int32_t stack[64];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& n = nodes_[stack[--top]];
+    if (boxDistance2(n.box, x) > best) continue;
+    if (n.left < 0) {
+      for (std::uint32_t i = n.first; i < n.first + n.count; ++i) {
+        const Vec3 p = closestPointOnTriangle(x, tris_[i][0], tris_[i][1], tris_[i][2]);
+        const double d2 = (p - x).squaredNorm();
+        if (d2 <= best && (!found || d2 < best)) best = d2, out = p, found = true;
+      }
+      continue;
+    }
+    // The nearer child last on the stack: searched first.
+    const double dl = boxDistance2(nodes_[n.left].box, x), dr = boxDistance2(nodes_[n.right].box, x);
+    if (top + 2 > 64) continue;  // depth of a median-split tree: log2(triangles) < 64
+    if (dl <= dr) {
+      stack[top++] = n.right;
+      stack[top++] = n.left;
+    } else {
+      stack[top++] = n.left;
+      stack[top++] = n.right;
+    }
+  }
+  return found;
+}
+
+}  // namespace aniso
