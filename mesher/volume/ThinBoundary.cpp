@@ -1,5 +1,7 @@
 #include "mesher/volume/ThinBoundary.h"
 
+#include <cmath>
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <map>
@@ -105,6 +107,28 @@ double predictedTriangles(const SurfaceMesh& surface, const std::vector<SizingSo
     n += std::max(1.0, (size / target) * (size / target));
   }
   return n;
+}
+
+std::vector<SizingSource> sourcesWithinBudget(const SurfaceMesh& surface, const std::vector<SizingSource>& sources,
+                                              double budget, double* factor) {
+  auto scaled = [&](double s) {
+    std::vector<SizingSource> out = sources;
+    for (SizingSource& src : out) src.metric = Metric3d::isotropic(s * src.metric.axes().lengths.minCoeff());
+    return out;
+  };
+  if (factor) *factor = 1.0;
+  if (predictedTriangles(surface, sources) <= budget) return sources;
+  // predictedTriangles decreases with s; at the largest source's coarsest triangle no
+  // triangle is refined any more (every term 1), so the bisection has a bracket as long
+  // as the budget holds the mesh itself.
+  double lo = 1.0, hi = 2.0;
+  while (predictedTriangles(surface, scaled(hi)) > budget && hi < 1e6) lo = hi, hi *= 2;
+  while (hi / lo > 1.01) {
+    const double mid = std::sqrt(lo * hi);
+    (predictedTriangles(surface, scaled(mid)) > budget ? lo : hi) = mid;
+  }
+  if (factor) *factor = hi;
+  return scaled(hi);
 }
 
 }  // namespace aniso

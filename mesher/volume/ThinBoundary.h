@@ -57,4 +57,12 @@ std::vector<SizingSource> thinSources(const std::vector<ThinSpot>& spots, double
 /// above 1, every other one 1 (for the caller's budget).
 double predictedTriangles(const SurfaceMesh& surface, const std::vector<SizingSource>& sources);
 
+/// The sources with their sizes multiplied by the smallest factor s ≥ 1 (to 1 %) for which
+/// predictedTriangles stays within `budget`: a part too thin for the budget is refined as
+/// far as the budget allows rather than not at all (the tets across a wall get flatter with
+/// the ratio of triangle size to thickness, so halfway is much better than nothing).
+/// `factor` receives s. The sources themselves when they fit already (s = 1).
+std::vector<SizingSource> sourcesWithinBudget(const SurfaceMesh& surface, const std::vector<SizingSource>& sources,
+                                              double budget, double* factor = nullptr);
+
 }  // namespace aniso

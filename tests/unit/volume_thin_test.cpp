@@ -55,6 +55,39 @@ TEST(ThinBoundary, HminBoundsTheSourcesAndStopsTheLoop) {
   EXPECT_TRUE(thinSources(spots, 1.0).empty());
 }
 
+TEST(ThinBoundary, SourcesScaledToTheBudget) {
+  std::set<Triple> boundary;
+  const SolidTetMesh s = slab(8, 0.04, boundary);
+  const CubeSurface c = cubeSurface(s, boundary);
+  const std::vector<SizingSource> sources = thinSources(thinSpots(s, boundary), 1e-3);
+  const double n = static_cast<double>(c.surface.triangles.size());
+  const double asked = predictedTriangles(c.surface, sources);
+  ASSERT_GT(asked, 3 * n);  // the slab's faces ask for a lot more triangles
+  // Within the budget: the sources as they are.
+  double factor = 0;
+  const std::vector<SizingSource> same = sourcesWithinBudget(c.surface, sources, asked * 1.01, &factor);
+  EXPECT_EQ(factor, 1.0);
+  ASSERT_EQ(same.size(), sources.size());
+  for (std::size_t i = 0; i < same.size(); ++i)
+    EXPECT_EQ(same[i].metric.axes().lengths.minCoeff(), sources[i].metric.axes().lengths.minCoeff());
+  // Over it: every size scaled by one factor > 1, the prediction within the budget and close
+  // to it (the factor is the smallest to 1 %).
+  const double budget = 0.5 * (asked + n);
+  const std::vector<SizingSource> scaled = sourcesWithinBudget(c.surface, sources, budget, &factor);
+  EXPECT_GT(factor, 1.0);
+  ASSERT_EQ(scaled.size(), sources.size());
+  for (std::size_t i = 0; i < scaled.size(); ++i) {
+    EXPECT_NEAR(scaled[i].metric.axes().lengths.minCoeff(), factor * sources[i].metric.axes().lengths.minCoeff(), 1e-12);
+    EXPECT_TRUE(scaled[i].contains(Vec3(0.5, 0.5, 0.02)));
+  }
+  const double predicted = predictedTriangles(c.surface, scaled);
+  EXPECT_LE(predicted, budget);
+  std::vector<SizingSource> finer = sources;  // 2 % below the factor: over the budget
+  for (SizingSource& src : finer) src.metric = Metric3d::isotropic(factor / 1.02 * src.metric.axes().lengths.minCoeff());
+  EXPECT_GT(predictedTriangles(c.surface, finer), budget);
+  EXPECT_GT(predicted, n);  // still refines
+}
+
 TEST(ThinBoundary, ACubeIsNotThin) {
   std::set<Triple> boundary;
   const SolidTetMesh s = cubeSolid(8, boundary);
