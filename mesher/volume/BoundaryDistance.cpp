@@ -1,6 +1,7 @@
 #include "mesher/volume/BoundaryDistance.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace aniso {
@@ -37,7 +38,8 @@ Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const V
   return a + (vb / denom) * ab + (vc / denom) * ac;
 }
 
-TriangleTree::TriangleTree(std::span<const Vec3> points, std::span<const std::array<int, 3>> triangles) {
+TriangleTree::TriangleTree(std::span<const Vec3> points, std::span<const std::array<int, 3>> triangles,
+                           double nearRadius) {
   tris_.reserve(triangles.size());
   std::vector<Vec3> centroids;
   centroids.reserve(triangles.size());
@@ -46,6 +48,61 @@ TriangleTree::TriangleTree(std::span<const Vec3> points, std::span<const std::ar
     centroids.push_back((points[t[0]] + points[t[1]] + points[t[2]]) / 3.0);
   }
   if (!tris_.empty()) build(0, static_cast<std::uint32_t>(tris_.size()), centroids);
+  if (!tris_.empty() && nearRadius > 0 && std::isfinite(nearRadius)) buildNearGrid(nearRadius);
+}
+
+void TriangleTree::buildNearGrid(double radius) {
+  Box3 domain = nodes_[0].box;
+  domain.lo -= Vec3::Constant(radius);
+  domain.hi += Vec3::Constant(radius);
+  const Vec3 extent = domain.size();
+  double cell = radius;
+  const double volume = extent.prod();
+  if (volume / (cell * cell * cell) > static_cast<double>(kMaxNearCells))
+    cell = std::cbrt(volume / static_cast<double>(kMaxNearCells));
+  for (int k = 0; k < 3; ++k)
+    cells_[k] = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(extent[k] / cell)));
+  while (cells_[0] * cells_[1] * cells_[2] > 2 * kMaxNearCells) {  // flat domains: ceil rounding
+    cell *= 1.25;
+    for (int k = 0; k < 3; ++k)
+      cells_[k] = std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(extent[k] / cell)));
+  }
+  origin_ = domain.lo;
+  cell_ = cell;
+  nearRadius_ = radius;
+  near_.assign(cells_[0] * cells_[1] * cells_[2], 0);
+  auto index = [&](double x, int k) {
+    const double i = std::floor((x - origin_[k]) / cell_);
+    return static_cast<std::size_t>(std::clamp(i, 0.0, static_cast<double>(cells_[k] - 1)));
+  };
+  for (const auto& t : tris_) {
+    Box3 b;
+    for (const Vec3& p : t) b.add(p);
+    std::array<std::size_t, 3> lo, hi;
+    for (int k = 0; k < 3; ++k) lo[k] = index(b.lo[k] - radius, k), hi[k] = index(b.hi[k] + radius, k);
+    for (std::size_t z = lo[2]; z <= hi[2]; ++z)
+      for (std::size_t y = lo[1]; y <= hi[1]; ++y)
+        for (std::size_t x = lo[0]; x <= hi[0]; ++x) near_[(z * cells_[1] + y) * cells_[0] + x] = 1;
+  }
+}
+
+bool TriangleTree::cellOf(const Vec3& x, std::size_t& cell) const {
+  std::array<std::size_t, 3> i;
+  for (int k = 0; k < 3; ++k) {
+    const double c = std::floor((x[k] - origin_[k]) / cell_);
+    if (!(c >= 0) || c >= static_cast<double>(cells_[k])) return false;  // outside the domain
+    i[k] = static_cast<std::size_t>(c);
+  }
+  cell = (i[2] * cells_[1] + i[1]) * cells_[0] + i[0];
+  return true;
+}
+
+bool TriangleTree::beyond(const Vec3& x, double distance) const {
+  if (near_.empty() || !(distance <= nearRadius_)) return false;
+  std::size_t cell;
+  // Outside the domain (the triangles' box grown by the radius) or in a cell no grown
+  // triangle box touches: farther than the radius from every triangle.
+  return !cellOf(x, cell) || !near_[cell];
 }
 
 std::int32_t TriangleTree::build(std::uint32_t first, std::uint32_t count, std::vector<Vec3>& centroids) {

@@ -4,6 +4,10 @@
 // median of their centroids along the longest axis, kLeafTriangles per leaf) searched branch
 // and bound (a subtree is skipped when its box is farther than the best point so far).
 // For VolumeMetricSpace's grading of M_v from the surface (VolumeControlSpace.h).
+// With a near radius R, also a uniform grid of cells (at least R wide, at most kMaxNearCells)
+// flagging those within R of a triangle (each triangle's box grown by R): beyond(x, d) then
+// answers most queries far from the surface without the tree (measured on the cube at h 0.02:
+// the distance search and the boundary-node lookup were 7 % of the run's cycles).
 // Read-only after construction: queries are thread-safe. Deterministic (ties keep the first
 // triangle found in a fixed traversal order).
 #include <array>
@@ -22,7 +26,11 @@ Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const V
 class TriangleTree {
  public:
   /// The triangles are point index triples into `points` (copied).
-  TriangleTree(std::span<const Vec3> points, std::span<const std::array<int, 3>> triangles);
+  /// `nearRadius` > 0: the grid of beyond() for distances up to it.
+  TriangleTree(std::span<const Vec3> points, std::span<const std::array<int, 3>> triangles, double nearRadius = 0);
+  /// True when x is certainly farther than `distance` from every triangle (the grid's cell of
+  /// x is not within the near radius of any, and distance ≤ that radius); false when unknown.
+  bool beyond(const Vec3& x, double distance) const;
   /// The closest point of the triangles to x when one is within maxDistance (Euclidean):
   /// true and `out` set; false otherwise (or with no triangles).
   bool closest(const Vec3& x, double maxDistance, Vec3& out) const;
@@ -35,9 +43,18 @@ class TriangleTree {
     std::int32_t left = -1, right = -1;  ///< inner node: children
   };
   std::int32_t build(std::uint32_t first, std::uint32_t count, std::vector<Vec3>& centroids);
+  void buildNearGrid(double radius);
+  bool cellOf(const Vec3& x, std::size_t& cell) const;
 
   std::vector<std::array<Vec3, 3>> tris_;
   std::vector<Node> nodes_;
+  double nearRadius_ = 0, cell_ = 0;
+  Vec3 origin_ = Vec3::Zero();
+  std::array<std::size_t, 3> cells_{0, 0, 0};
+  std::vector<std::uint8_t> near_;
 };
+
+/// Cells of TriangleTree's near grid at most (coarser cells beyond: still exact, less pruning).
+inline constexpr std::size_t kMaxNearCells = std::size_t{1} << 21;
 
 }  // namespace aniso

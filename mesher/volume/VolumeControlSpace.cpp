@@ -101,15 +101,18 @@ std::size_t VolumeMetricSpace::KeyHash::operator()(const Key& k) const {
 }
 
 double VolumeMetricSpace::lengthFactor(const Vec3& x, const Metric3d& m) const {
-  if (onBoundary(x)) return 1.0;
-  if (!surface_) return factor_;
+  if (!surface_) return onBoundary(x) ? 1.0 : factor_;
   // Search radius: kVolumeTransitionLayers times the largest size of M(x), bounded above by
   // the Frobenius norm of the length tensor (a farther surface point is farther than the
   // transition in M).
   const double s = isotropicScale(m.matrix());
   const double hmax = s > 0 ? 1.0 / s : m.inverseMatrix().norm();
+  const double radius = kVolumeTransitionLayers * hmax;
+  // Certainly farther than the radius from the surface (so not a surface node either).
+  if (surface_->beyond(x, radius)) return factor_;
+  if (onBoundary(x)) return 1.0;
   Vec3 c;
-  if (!surface_->closest(x, kVolumeTransitionLayers * hmax, c)) return factor_;
+  if (!surface_->closest(x, radius, c)) return factor_;
   const double t = std::min(1.0, m.length(x - c) / kVolumeTransitionLayers);
   return 1.0 + (factor_ - 1.0) * t;
 }

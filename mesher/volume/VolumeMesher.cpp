@@ -163,7 +163,9 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
     for (const int n : b.nodes) boundaryNodes.push_back(in.surface->nodes[n]);
     cs = std::make_shared<VolumeMetricSpace>(
         buildVolumeControlSpace(*in.model, *in.surface, solid, in.options.sizing, in.user), boundaryNodes,
-        kVolumeLengthFactor, std::make_shared<TriangleTree>(in.surface->nodes, b.triangles));
+        kVolumeLengthFactor,
+        std::make_shared<TriangleTree>(in.surface->nodes, b.triangles,
+                                       kVolumeTransitionLayers * in.options.sizing.hmaxFor(in.model->diagonal())));
     p.outcome.times.emplace_back("volume control space", since(t0));
   }
   if (in.refine && cs) {

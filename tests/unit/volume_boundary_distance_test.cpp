@@ -79,6 +79,32 @@ TEST(BoundaryDistance, TreeFindsTheClosestPointWithinTheRadius) {
   EXPECT_FALSE(empty.closest(Vec3(0.5, 0.5, 0.5), 10.0, c));
 }
 
+TEST(BoundaryDistance, NearGridAnswersOnlyForCertainlyFarPoints) {
+  std::vector<Vec3> points;
+  std::vector<std::array<int, 3>> triangles;
+  cubeSurface(7, points, triangles);
+  const double radius = 0.1;
+  const TriangleTree tree(points, triangles, radius);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-0.5, 1.5);
+  int far = 0;
+  for (int k = 0; k < 2000; ++k) {
+    const Vec3 x(u(rng), u(rng), u(rng));
+    Vec3 c;
+    for (const double d : {0.05, radius}) {
+      // beyond() is a certificate: never true for a point within d of a triangle.
+      if (tree.beyond(x, d)) {
+        ++far;
+        EXPECT_FALSE(tree.closest(x, d, c)) << x.transpose();
+      }
+    }
+    EXPECT_FALSE(tree.beyond(x, 2 * radius));  // beyond the grid's radius: unknown
+  }
+  EXPECT_GT(far, 1000);  // most of the box is far from the cube's surface: the grid answers
+  for (const Vec3& p : points) EXPECT_FALSE(tree.beyond(p, 0.0));  // surface points: never far
+  EXPECT_FALSE(TriangleTree(points, triangles).beyond(Vec3(0.5, 0.5, 0.5), 0.01));  // no grid
+}
+
 TEST(BoundaryDistance, VolumeMetricGradesFromTheSurface) {
   // h = 0.1 everywhere, f = 1.4: M on the surface, M / f from one unit length of M (0.1) on.
   const double h = 0.1, f = kVolumeLengthFactor;
