@@ -168,9 +168,10 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
                                        kVolumeTransitionLayers * in.options.sizing.hmaxFor(in.model->diagonal())));
     p.outcome.times.emplace_back("volume control space", since(t0));
   }
+  refine3d::VertexTensorTable tensors;  // the refinement's queried metrics, for the improvement
   if (in.refine && cs) {
     t0 = Clock::now();
-    const VolumeRefineStats rs = refineVolume(bt.tets, *cs);
+    const VolumeRefineStats rs = refineVolume(bt.tets, *cs, {}, &tensors);
     p.outcome.times.emplace_back("volume refinement", since(t0));
     p.outcome.counters.emplace_back("refinement_inserted", static_cast<double>(rs.inserted));
     p.outcome.counters.emplace_back("refinement_abandoned", static_cast<double>(rs.abandoned));
@@ -179,7 +180,7 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
   std::optional<improve3d::VertexMetrics> metrics;  // the improvement's, read by the report
   if (in.improve && cs) {
     t0 = Clock::now();
-    const VolumeImproveStats is = improveVolume(bt.tets, *cs, {}, &metrics.emplace(bt.tets.mesh, *cs));
+    const VolumeImproveStats is = improveVolume(bt.tets, *cs, {}, &metrics.emplace(bt.tets.mesh, *cs, tensors));
     p.outcome.times.emplace_back("volume improvement", since(t0));
     p.outcome.counters.emplace_back("improvement_moved", static_cast<double>(is.moved));
     p.outcome.counters.emplace_back("improvement_flips", static_cast<double>(is.flips23 + is.flips32 + is.flips44));

@@ -60,6 +60,7 @@ class Refiner {
       : s_(s), mesh_(s.mesh), cs_(cs), o_(o), inserter_(s.mesh), vt_(s.mesh, cs), heap_(o.qualityThreshold) {}
 
   VolumeRefineStats run();
+  refine3d::VertexTensorTable releaseTensors() { return vt_.release(); }
 
  private:
   double evaluate(TetId t);
@@ -389,18 +390,23 @@ double predictTetCount(std::size_t currentTets, double worstQuality, double qual
   return n * qualityThreshold / worstQuality;
 }
 
-VolumeRefineStats refineVolume(SolidTetMesh& s, const ControlSpace3d& cs, const VolumeRefineOptions& o) {
+VolumeRefineStats refineVolume(SolidTetMesh& s, const ControlSpace3d& cs, const VolumeRefineOptions& o,
+                               refine3d::VertexTensorTable* tensors) {
   const std::size_t before = s.mesh.numVertices();
   VolumeRefineStats st;
   {
     Refiner r(s, cs, o);
     st = r.run();
+    if (tensors) *tensors = r.releaseTensors();
   }
-  if (o.renumber) renumberSpatially(s, before);
+  if (o.renumber) {
+    const std::vector<std::uint32_t> newVertex = renumberSpatially(s, before);
+    if (tensors) tensors->renumber(newVertex);
+  }
   return st;
 }
 
-void renumberSpatially(SolidTetMesh& s, std::size_t firstVertex) {
+std::vector<std::uint32_t> renumberSpatially(SolidTetMesh& s, std::size_t firstVertex) {
   del3d::TetMesh& mesh = s.mesh;
   const std::size_t nv = mesh.numVertices();
   if (firstVertex > nv) firstVertex = nv;
@@ -430,6 +436,7 @@ void renumberSpatially(SolidTetMesh& s, std::size_t firstVertex) {
     if (mesh.isAlive(TetId(t))) newTet[t] = first[key(t)]++;
   mesh.renumber(newVertex, newTet);
   s.node = std::move(node);
+  return newVertex;
 }
 
 }  // namespace aniso

@@ -68,6 +68,7 @@
 
 #include "mesher/control/ControlSpace3d.h"
 #include "mesher/volume/SolidTetMesh.h"
+#include "mesher/volume/refine/VertexTensors.h"
 
 namespace aniso {
 
@@ -110,13 +111,17 @@ struct VolumeRefineStats {
   bool budgetExhausted = false;
 };
 
-VolumeRefineStats refineVolume(SolidTetMesh& s, const ControlSpace3d& cs, const VolumeRefineOptions& o = {});
+/// `tensors` (optional): receives the vertex tensors the refinement queried, numbered as the
+/// refined mesh (for the improvement, which would query the same metrics again).
+VolumeRefineStats refineVolume(SolidTetMesh& s, const ControlSpace3d& cs, const VolumeRefineOptions& o = {},
+                               refine3d::VertexTensorTable* tensors = nullptr);
 
 /// Memory locality for the phases after the refinement (TetMesh::renumber): the vertices from
 /// firstVertex on are renumbered along a Hilbert curve (those before keep their numbers),
 /// `node` follows them, and the tets are renumbered by their highest vertex number (free
 /// slots dropped, so tet ids from before are not kept). Deterministic.
-void renumberSpatially(SolidTetMesh& s, std::size_t firstVertex);
+/// Returns the vertex map (old id → new id).
+std::vector<std::uint32_t> renumberSpatially(SolidTetMesh& s, std::size_t firstVertex);
 
 /// q(K) of eq. 5.2 for the tet (a, b, c, d) in the metric m (without the edge check).
 double refinementQuality(const Metric3d& m, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);

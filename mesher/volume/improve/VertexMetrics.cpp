@@ -62,13 +62,14 @@ void VertexMetrics::setMetric(std::size_t v, const Mat3& m) {
   iso_[v] = isotropicScale(m) > 0;
 }
 
-void VertexMetrics::sync() {
+void VertexMetrics::sync(const refine3d::VertexTensorTable* seed) {
   const std::size_t old = m_.size();
   m_.resize(mesh_.numVertices(), Mat3::Identity());
   iso_.resize(mesh_.numVertices(), 1);
   for (std::size_t v = old; v < m_.size(); ++v) {
     const del3d::VertexId id(static_cast<std::uint32_t>(v));
-    if (mesh_.vertexTet(id).valid()) setMetric(v, cs_.getMetric(mesh_.point(id)).matrix());
+    if (!mesh_.vertexTet(id).valid()) continue;
+    setMetric(v, seed && v < seed->size() ? seed->at(v) : cs_.getMetric(mesh_.point(id)).matrix());
   }
 }
 

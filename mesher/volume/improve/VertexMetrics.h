@@ -21,6 +21,7 @@
 
 #include "mesher/control/ControlSpace3d.h"
 #include "mesher/delaunay3d/TetMesh.h"
+#include "mesher/volume/refine/VertexTensors.h"
 #include "mesher/metric/IsotropicTensor.h"
 
 namespace aniso::improve3d {
@@ -41,8 +42,15 @@ inline constexpr double kOrientationCertificate = 1e-12;
 class VertexMetrics {
  public:
   VertexMetrics(const del3d::TetMesh& mesh, const ControlSpace3d& cs) : mesh_(mesh), cs_(cs) { sync(); }
+  /// With the tensors the refinement queried from the same control space at the same
+  /// (unmoved) vertices: taken instead of querying them again; the vertices beyond the
+  /// table are queried.
+  VertexMetrics(const del3d::TetMesh& mesh, const ControlSpace3d& cs, const refine3d::VertexTensorTable& seed)
+      : mesh_(mesh), cs_(cs) {
+    sync(&seed);
+  }
   /// Queries the metric of vertices added to the mesh since the last call.
-  void sync();
+  void sync(const refine3d::VertexTensorTable* seed = nullptr);
   const Mat3& at(del3d::VertexId v) const { return m_[v.index]; }
   /// Re-queries v's metric (after v moved).
   void refresh(del3d::VertexId v);

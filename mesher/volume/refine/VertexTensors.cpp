@@ -4,6 +4,17 @@
 
 namespace aniso::refine3d {
 
+void VertexTensorTable::renumber(const std::vector<std::uint32_t>& newVertex) {
+  std::vector<double> s(scale.size(), 1.0);
+  std::vector<std::uint32_t> i(index.size(), 0);
+  for (std::size_t v = 0; v < scale.size() && v < newVertex.size(); ++v) {
+    s[newVertex[v]] = scale[v];
+    i[newVertex[v]] = index[v];
+  }
+  scale = std::move(s);
+  index = std::move(i);
+}
+
 void VertexTensors::store(std::size_t v, const Mat3& m) {
   const double s = isotropicScale(m);
   if (s > 0) {

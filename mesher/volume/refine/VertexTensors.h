@@ -16,6 +16,18 @@
 
 namespace aniso::refine3d {
 
+/// The tensors of VertexTensors handed on (VertexTensors::release): per vertex the scale of
+/// an isotropic s·I, or 0 and the index of its matrix in `aniso`.
+struct VertexTensorTable {
+  std::vector<double> scale;
+  std::vector<std::uint32_t> index;
+  std::vector<Mat3> aniso;
+  std::size_t size() const { return scale.size(); }
+  Mat3 at(std::size_t v) const { return scale[v] > 0 ? Mat3(scale[v] * Mat3::Identity()) : aniso[index[v]]; }
+  /// Vertex v becomes newVertex[v] (a permutation of the ids, as TetMesh::renumber).
+  void renumber(const std::vector<std::uint32_t>& newVertex);
+};
+
 class VertexTensors {
  public:
   VertexTensors(const del3d::TetMesh& mesh, const ControlSpace3d& cs) : mesh_(mesh), cs_(cs) { sync(); }
@@ -59,6 +71,8 @@ class VertexTensors {
   Mat3 edgeLengthMetric(del3d::VertexId a, del3d::VertexId b) const;
   /// Bytes held (capacities).
   std::size_t memoryBytes() const;
+  /// Moves the tensors out (this object is empty afterwards).
+  VertexTensorTable release() { return {std::move(scale_), std::move(index_), std::move(aniso_)}; }
 
  private:
   void store(std::size_t v, const Mat3& m);
