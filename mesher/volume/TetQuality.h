@@ -13,9 +13,10 @@
 //     refereeMinDihedral reproduces it exactly (vertex-order dependent).
 //   Metric (sec. 2.5.1–2.5.2, table 5.6):
 //     η_M per tet (eq. 2.47–2.48) in the mean of its four vertices' tensors and μ_M per
-//     unique edge (eq. 2.14, 2.49) in the mean of its two ends' tensors — the linear
-//     interpolation of the control space's metric at the centroid / midpoint, as the
-//     refinement and the improvement measure them; one control-space query per vertex.
+//     unique edge (eq. 2.14, 2.49) in the mean of its two ends' tensors, as the improvement
+//     measures them; one control-space query per vertex. (The refinement measures a tet in
+//     eq. 2.18's interpolation, the mean of the length tensors — VertexTensors.h; where the
+//     size grades the mean of the tensors is finer, so μ_M here is on the low side there.)
 // Stateless; accumulators merge across solids / threads (QualityStats::merge).
 #include <cstddef>
 
