@@ -20,39 +20,19 @@ bool touchesBoundary(const QuadMesh2d& mesh, int e) {
   return false;
 }
 
-/// The star's worst and mean element quality, and its worst quad (triangles are measured by
-/// their shape, not by a scaled Jacobian); worst −1 as soon as one element is not convex and
-/// counter-clockwise (elementQuality's verdict).
-struct StarScore {
-  double worst = -1, mean = 0, worstQuad = 2;
-};
-
-StarScore scoreOf(const QuadMesh2d& mesh, VertexMetrics& metrics, std::span<const int> star) {
-  StarScore s{2, 0, 2};
-  for (int e : star) {
-    const double q = elementQuality(mesh, metrics, mesh.corners[e]);
-    if (q <= 0) return {};
-    s.worst = std::min(s.worst, q);
-    if (mesh.isQuad(e)) s.worstQuad = std::min(s.worstQuad, q);
-    s.mean += q;
-  }
-  s.mean /= std::max<std::size_t>(1, star.size());
-  return s;
-}
-
-/// Trial `t` beats `current`: neither the worst element nor the worst quad drops, and
-/// worst + meanWeight × mean rises by more than minGain (the mean breaks ties between
-/// positions the worst cannot tell apart: pure max–min trades the good quads of the star for
-/// the poor one).
-bool beats(const StarScore& t, const StarScore& current, const BoundaryPostprocessOptions& o) {
-  return t.worst >= current.worst && t.worstQuad >= current.worstQuad &&
+/// Trial `t` beats `current`: every element valid, neither the worst element nor the worst
+/// quad drops, and worst + meanWeight × mean rises by more than minGain (the mean breaks
+/// ties between positions the worst cannot tell apart: pure max–min trades the good quads of
+/// the star for the poor one).
+bool beats(const StarQuality& t, const StarQuality& current, const BoundaryPostprocessOptions& o) {
+  return t.valid && t.worst >= current.worst && t.worstQuad >= current.worstQuad &&
          t.worst + o.meanWeight * t.mean > current.worst + o.meanWeight * current.mean + o.minGain;
 }
 
 /// The compass search of one vertex (see the header); leaves mesh.uv[v] at the best
 /// position found.
 void searchVertex(QuadMesh2d& mesh, VertexMetrics& metrics, int v, std::span<const int> star,
-                  const Vec2& origin, double floor, StarScore score, const BoundaryPostprocessOptions& o) {
+                  const Vec2& origin, double floor, StarQuality score, const BoundaryPostprocessOptions& o) {
   const Mat2 s = metrics.at(v);
   if (!(std::abs(s.determinant()) > 0)) return;
   const Mat2 sInverse = s.inverse();
@@ -80,7 +60,7 @@ void searchVertex(QuadMesh2d& mesh, VertexMetrics& metrics, int v, std::span<con
   int trials = 0;
   for (double step = o.initialStep; step >= o.finalStep && trials < kMaxTrials;) {
     Vec2 best = current;
-    StarScore bestScore = score;
+    StarQuality bestScore = score;
     for (int k = 0; k < kDirections; ++k, ++trials) {
       const double angle = 2.0 * std::numbers::pi * k / kDirections;
       const Vec2 trial = current + step * (sInverse * Vec2(std::cos(angle), std::sin(angle)));
@@ -88,7 +68,7 @@ void searchVertex(QuadMesh2d& mesh, VertexMetrics& metrics, int v, std::span<con
       mesh.uv[v] = trial;
       metrics.refreshPoint(v);
       if (!sizesKept()) continue;
-      const StarScore t = scoreOf(mesh, metrics, star);
+      const StarQuality t = starQuality(mesh, metrics, star);
       if (beats(t, bestScore, o)) {
         bestScore = t;
         best = trial;
@@ -145,8 +125,8 @@ BoundaryPostprocessStats postprocessBoundaryLayer(QuadMesh2d& mesh, VertexMetric
     for (std::size_t i = 0; i < layer.size(); ++i) {
       const int v = layer[i];
       const std::span<const int> star = ve.of(v);
-      const StarScore score = scoreOf(mesh, metrics, star);
-      if (score.worst >= o.careBelow || score.worst <= 0) continue;
+      const StarQuality score = starQuality(mesh, metrics, star);
+      if (!score.valid || score.worst >= o.careBelow) continue;
       if (!counted[i]) {
         counted[i] = 1;
         ++st.candidates;

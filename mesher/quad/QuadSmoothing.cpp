@@ -16,6 +16,19 @@ void VertexElements::build(const QuadMesh2d& mesh) {
     for (int k = 0; k < mesh.sides(e); ++k) elements[fill[mesh.corners[e][k]]++] = e;
 }
 
+StarQuality starQuality(const QuadMesh2d& mesh, VertexMetrics& metrics, std::span<const int> star) {
+  StarQuality s;
+  for (int e : star) {
+    const double q = elementQuality(mesh, metrics, mesh.corners[e]);
+    if (q <= 0) s.valid = false;
+    s.worst = std::min(s.worst, q);
+    if (mesh.sides(e) == 4) s.worstQuad = std::min(s.worstQuad, q);
+    s.mean += q;
+  }
+  s.mean /= std::max<std::size_t>(1, star.size());
+  return s;
+}
+
 std::vector<std::uint8_t> frozenVertices(const QuadMesh2d& mesh) {
   std::vector<std::uint8_t> frozen(mesh.boundary.begin(), mesh.boundary.end());
   for (int e = 0; e < mesh.numElements(); ++e) {
@@ -33,25 +46,6 @@ std::vector<std::uint8_t> frozenVertices(const QuadMesh2d& mesh) {
 }
 
 namespace {
-
-struct StarQuality {
-  double worst = 2, mean = 0;
-  double worstQuad = 2;  ///< the quads only (triangles count by their shape, not their Jacobian)
-  bool valid = true;
-};
-
-StarQuality measure(const QuadMesh2d& mesh, VertexMetrics& metrics, std::span<const int> star) {
-  StarQuality s;
-  for (int e : star) {
-    const double q = elementQuality(mesh, metrics, mesh.corners[e]);
-    if (q <= 0) s.valid = false;
-    s.worst = std::min(s.worst, q);
-    if (mesh.sides(e) == 4) s.worstQuad = std::min(s.worstQuad, q);
-    s.mean += q;
-  }
-  s.mean /= std::max<std::size_t>(1, star.size());
-  return s;
-}
 
 Vec2 target(const QuadMesh2d& mesh, VertexMetrics& metrics, int v, std::span<const int> star) {
   const Mat2& sq = metrics.at(v);
@@ -86,14 +80,14 @@ SmoothStats smoothQuadMesh(QuadMesh2d& mesh, VertexMetrics& metrics, const Smoot
     for (int v = 0; v < mesh.numVertices(); ++v) {
       const std::span<const int> star = ve.of(v);
       if (frozen[v] || star.empty()) continue;
-      const StarQuality before = measure(mesh, metrics, star);
+      const StarQuality before = starQuality(mesh, metrics, star);
       const Vec2 q = mesh.uv[v], t = target(mesh, metrics, v, star);
       if (!t.allFinite() || t == q) continue;
       bool accepted = false;
       for (double step : {1.0, 0.5}) {
         mesh.uv[v] = q + step * (t - q);
         metrics.refreshPoint(v);
-        const StarQuality after = measure(mesh, metrics, star);
+        const StarQuality after = starQuality(mesh, metrics, star);
         const bool better = before.worst < o.qualityFloor ? after.worst > before.worst
                                                           : after.worst >= o.qualityFloor;
         // No quad may fall below the acceptance threshold (or below itself, if already there).

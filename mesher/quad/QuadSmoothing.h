@@ -39,6 +39,16 @@ struct VertexElements {
   }
 };
 
+/// Quality of the elements of a star (elementQuality): worst, mean, worst quad (triangles
+/// count by their shape, not a scaled Jacobian); `valid` false when one is not strictly
+/// convex and counter-clockwise (its quality ≤ 0, so the worst is ≤ 0 too).
+struct StarQuality {
+  double worst = 2, mean = 0;
+  double worstQuad = 2;
+  bool valid = true;
+};
+StarQuality starQuality(const QuadMesh2d& mesh, VertexMetrics& metrics, std::span<const int> star);
+
 /// Vertices that must not move: on the boundary, or corners of an element touching a pole.
 std::vector<std::uint8_t> frozenVertices(const QuadMesh2d& mesh);
 
