@@ -23,14 +23,22 @@ std::set<int> neighbours(const QuadMesh2d& mesh, int v, int hint) {
 
 }  // namespace
 
-SeamResult closeSeam(QuadMesh2d& mesh, VertexMetrics& metrics, int e, int k, bool left, const SeamOptions& o) {
-  SeamResult r;
+bool seamCorner(const QuadMesh2d& mesh, VertexMetrics& metrics, int e, int k, bool left, double seamAngle,
+                SeamCorner& out) {
   const int a = mesh.corners[e][left ? k : (k + 1) % 3];
   const RegionFan fan = regionFan(mesh, metrics, a, e, left);
-  if (fan.closed || fan.triangles.size() != 1 || !(fan.angle.back() < o.seamAngle)) return r;
-  // The triangle (a, b, c) in its own order: b, c the far ends of the two front edges.
+  if (fan.closed || fan.triangles.size() != 1 || !(fan.angle.back() < seamAngle)) return false;
   const int i = mesh.cornerIndex(e, a);
-  const int b = mesh.corners[e][(i + 1) % 3], c = mesh.corners[e][(i + 2) % 3];
+  out = {a, mesh.corners[e][(i + 1) % 3], mesh.corners[e][(i + 2) % 3], i};
+  return true;
+}
+
+SeamResult closeSeam(QuadMesh2d& mesh, VertexMetrics& metrics, int e, int k, bool left, const SeamOptions& o) {
+  SeamResult r;
+  SeamCorner sc;
+  if (!seamCorner(mesh, metrics, e, k, left, o.seamAngle, sc)) return r;
+  // b, c: the far ends of the two front edges.
+  const int a = sc.a, b = sc.b, c = sc.c, i = sc.i;
   if (mesh.boundary[b] && mesh.boundary[c]) return r;
   const int g = mesh.adj[e][(i + 1) % 3];
   if (g == kNone || !mesh.isTriangle(g)) return r;

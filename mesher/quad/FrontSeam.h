@@ -28,6 +28,16 @@ struct SeamResult {
   int element = kNone; ///< a live element at it
 };
 
+/// The corner of a seam: at the left (`left`: corner k) or right end of front edge k of
+/// triangle e, the vertex a whose open region fan is that one triangle (a, b, c) under
+/// `seamAngle` (metric); i is a's index in e, so a→b is edge i and c→a edge i + 2.
+/// Shared by closeSeam and the transition seam (TransitionSeam.h).
+struct SeamCorner {
+  int a = kNone, b = kNone, c = kNone, i = kNone;
+};
+bool seamCorner(const QuadMesh2d& mesh, VertexMetrics& metrics, int e, int k, bool left, double seamAngle,
+                SeamCorner& out);
+
 /// Seam at the left (`left`: vertex a = corner k) or right end (vertex b) of front edge k
 /// of triangle e, when its region angle is small enough and the checks pass.
 SeamResult closeSeam(QuadMesh2d& mesh, VertexMetrics& metrics, int e, int k, bool left, const SeamOptions& options = {});

@@ -3,19 +3,16 @@
 #include <algorithm>
 #include <array>
 
-#include "mesher/quad/SideEdge.h"
 
 namespace aniso::quad {
 
 TransitionResult transitionSeam(QuadMesh2d& mesh, VertexMetrics& metrics, int e, int k, bool left,
                                 const SeamOptions& seam, const TransitionSeamOptions& o) {
   TransitionResult r;
-  const int a = mesh.corners[e][left ? k : (k + 1) % 3];
-  const RegionFan fan = regionFan(mesh, metrics, a, e, left);
-  if (fan.closed || fan.triangles.size() != 1 || !(fan.angle.back() < seam.seamAngle)) return r;
+  SeamCorner sc;
+  if (!seamCorner(mesh, metrics, e, k, left, seam.seamAngle, sc)) return r;
   // The triangle (a, b, c) in its own order: edges a→b (index i) and c→a (index i + 2).
-  const int i = mesh.cornerIndex(e, a);
-  const int b = mesh.corners[e][(i + 1) % 3], c = mesh.corners[e][(i + 2) % 3];
+  const int a = sc.a, b = sc.b, c = sc.c, i = sc.i;
   const double lb = metrics.length(a, b), lc = metrics.length(a, c);
   const bool longB = lb >= lc;
   if (!(std::max(lb, lc) > o.seamRatio * std::min(lb, lc))) return r;

@@ -18,28 +18,28 @@ void VertexTensorTable::renumber(const std::vector<std::uint32_t>& newVertex) {
 void VertexTensors::store(std::size_t v, const Mat3& m) {
   const double s = isotropicScale(m);
   if (s > 0) {
-    scale_[v] = s;
+    t_.scale[v] = s;
     return;
   }
-  scale_[v] = 0;
-  index_[v] = static_cast<std::uint32_t>(aniso_.size());
-  aniso_.push_back(m);
+  t_.scale[v] = 0;
+  t_.index[v] = static_cast<std::uint32_t>(t_.aniso.size());
+  t_.aniso.push_back(m);
 }
 
 void VertexTensors::sync() {
-  const std::size_t old = scale_.size();
-  scale_.resize(mesh_.numVertices(), 1.0);
-  index_.resize(mesh_.numVertices(), 0);
-  for (std::size_t v = old; v < scale_.size(); ++v) {
+  const std::size_t old = t_.scale.size();
+  t_.scale.resize(mesh_.numVertices(), 1.0);
+  t_.index.resize(mesh_.numVertices(), 0);
+  for (std::size_t v = old; v < t_.scale.size(); ++v) {
     const del3d::VertexId id(static_cast<std::uint32_t>(v));
     if (mesh_.vertexTet(id).valid()) store(v, cs_.getMetric(mesh_.point(id)).matrix());
   }
 }
 
 void VertexTensors::add(del3d::VertexId v, const Mat3& m) {
-  if (scale_.size() <= v.index) {
-    scale_.resize(std::size_t{v.index} + 1, 1.0);
-    index_.resize(scale_.size(), 0);
+  if (t_.scale.size() <= v.index) {
+    t_.scale.resize(std::size_t{v.index} + 1, 1.0);
+    t_.index.resize(t_.scale.size(), 0);
   }
   store(v.index, m);
 }
@@ -64,8 +64,8 @@ Mat3 VertexTensors::edgeLengthMetric(del3d::VertexId a, del3d::VertexId b) const
 }
 
 std::size_t VertexTensors::memoryBytes() const {
-  return scale_.capacity() * sizeof(double) + index_.capacity() * sizeof(std::uint32_t) +
-         aniso_.capacity() * sizeof(Mat3);
+  return t_.scale.capacity() * sizeof(double) + t_.index.capacity() * sizeof(std::uint32_t) +
+         t_.aniso.capacity() * sizeof(Mat3);
 }
 
 }  // namespace aniso::refine3d

@@ -37,17 +37,14 @@ class VertexTensors {
   /// Records m as the tensor of v, the vertex just added (its metric already queried).
   void add(del3d::VertexId v, const Mat3& m);
 
-  bool isotropic(del3d::VertexId v) const { return scale_[v.index] > 0; }
+  bool isotropic(del3d::VertexId v) const { return t_.scale[v.index] > 0; }
   /// The scale s of an isotropic tensor s·I (0 for an anisotropic one).
-  double scale(del3d::VertexId v) const { return scale_[v.index]; }
+  double scale(del3d::VertexId v) const { return t_.scale[v.index]; }
   /// The tensor of v.
-  Mat3 at(del3d::VertexId v) const {
-    const double s = scale_[v.index];
-    return s > 0 ? Mat3(s * Mat3::Identity()) : aniso_[index_[v.index]];
-  }
+  Mat3 at(del3d::VertexId v) const { return t_.at(v.index); }
   /// True, with s̄ the mean scale, when the four vertices v[0..3] are isotropic.
   bool tetScale(const std::uint32_t* v, double& s) const {
-    const double a = scale_[v[0]], b = scale_[v[1]], c = scale_[v[2]], d = scale_[v[3]];
+    const double a = t_.scale[v[0]], b = t_.scale[v[1]], c = t_.scale[v[2]], d = t_.scale[v[3]];
     s = 0.25 * (a + b + c + d);
     return a > 0 && b > 0 && c > 0 && d > 0;
   }
@@ -62,7 +59,7 @@ class VertexTensors {
   /// True, with s = 4 / Σ 1/s_i (eq. 2.18 for tensors s_i·I), when the four vertices are
   /// isotropic.
   bool tetLengthScale(const std::uint32_t* v, double& s) const {
-    const double a = scale_[v[0]], b = scale_[v[1]], c = scale_[v[2]], d = scale_[v[3]];
+    const double a = t_.scale[v[0]], b = t_.scale[v[1]], c = t_.scale[v[2]], d = t_.scale[v[3]];
     if (!(a > 0 && b > 0 && c > 0 && d > 0)) return false;
     s = 4.0 / (1.0 / a + 1.0 / b + 1.0 / c + 1.0 / d);
     return true;
@@ -72,16 +69,14 @@ class VertexTensors {
   /// Bytes held (capacities).
   std::size_t memoryBytes() const;
   /// Moves the tensors out (this object is empty afterwards).
-  VertexTensorTable release() { return {std::move(scale_), std::move(index_), std::move(aniso_)}; }
+  VertexTensorTable release() { return std::move(t_); }
 
  private:
   void store(std::size_t v, const Mat3& m);
 
   const del3d::TetMesh& mesh_;
   const ControlSpace3d& cs_;
-  std::vector<double> scale_;         // s > 0: isotropic s·I; 0: aniso_[index_[v]]
-  std::vector<std::uint32_t> index_;  // per vertex, used when scale_ is 0
-  std::vector<Mat3> aniso_;
+  VertexTensorTable t_;
 };
 
 /// Eq. 2.18 at the midpoint of an edge whose ends have the isotropic scales a and b.
