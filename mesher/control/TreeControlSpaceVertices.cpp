@@ -24,23 +24,42 @@ constexpr double kCoincidentRelative = 1e-9;
 
 }  // namespace
 
+// Sorted by (a, b) with the deepest level first among equal pairs, then deduplicated: as a
+// bucket sort by a (counting sort), each bucket (a dozen edges) sorted by (b, level
+// descending) — the order of one global sort, without its cost (half of the volume's
+// gradation smoothing on the cube at h 0.02).
 template <int D>
 std::vector<typename TreeControlSpace<D>::Edge> TreeControlSpace<D>::edges() const {
-  std::vector<Edge> e;
-  for (int leaf : tree_.leaves()) {
-    const auto& c = tree_.corners(leaf);
-    for (int k = 0; k < D; ++k)
-      for (int i = 0; i < Tree::kCorners; ++i) {
-        if ((i >> k) & 1) continue;
-        const int a = c[i], b = c[i | (1 << k)];
-        e.push_back({std::min(a, b), std::max(a, b), tree_.level(leaf)});
-      }
+  const std::vector<int> leaves = tree_.leaves();
+  const int nv = tree_.vertexCount();
+  std::vector<int> start(static_cast<std::size_t>(nv) + 1, 0);
+  auto forEachLeafEdge = [&](auto&& f) {
+    for (int leaf : leaves) {
+      const auto& c = tree_.corners(leaf);
+      for (int k = 0; k < D; ++k)
+        for (int i = 0; i < Tree::kCorners; ++i) {
+          if ((i >> k) & 1) continue;
+          const int a = c[i], b = c[i | (1 << k)];
+          f(Edge{std::min(a, b), std::max(a, b), tree_.level(leaf)});
+        }
+    }
+  };
+  forEachLeafEdge([&](const Edge& x) { ++start[x.a + 1]; });
+  for (int v = 0; v < nv; ++v) start[v + 1] += start[v];
+  std::vector<Edge> all(static_cast<std::size_t>(start[nv]));
+  {
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    forEachLeafEdge([&](const Edge& x) { all[fill[x.a]++] = x; });
   }
-  std::sort(e.begin(), e.end(), [](const Edge& x, const Edge& y) {
-    return x.a != y.a ? x.a < y.a : x.b != y.b ? x.b < y.b : x.level > y.level;
-  });
-  e.erase(std::unique(e.begin(), e.end(), [](const Edge& x, const Edge& y) { return x.a == y.a && x.b == y.b; }),
-          e.end());
+  auto before = [](const Edge& x, const Edge& y) { return x.b != y.b ? x.b < y.b : x.level > y.level; };
+  std::vector<Edge> e;
+  e.reserve(all.size() / 2);
+  for (int v = 0; v < nv; ++v) {
+    const auto first = all.begin() + start[v], last = all.begin() + start[v + 1];
+    std::sort(first, last, before);
+    for (auto it = first; it != last; ++it)
+      if (it == first || it->b != (it - 1)->b) e.push_back(*it);
+  }
   return e;
 }
 
@@ -137,8 +156,16 @@ int TreeControlSpace<D>::smoothGradation(double gamma) {
   if (!valued_) failFresh(tree_.nodeCentre(0));
   gradationSlopeLimit(gamma);  // throws for an invalid γ_M
   const GradationRule rule{gamma, 0.0, kGradationChangeTolerance};
-  std::vector<Edge> up = edges();
-  std::stable_sort(up.begin(), up.end(), [](const Edge& x, const Edge& y) { return x.level > y.level; });
+  // Deepest leaves first, stable (counting sort by level).
+  std::vector<Edge> up;
+  {
+    const std::vector<Edge> e = edges();
+    std::vector<std::size_t> at(Tree::kResolution + 2, 0);
+    for (const Edge& x : e) ++at[Tree::kResolution - x.level + 1];
+    for (std::size_t k = 1; k < at.size(); ++k) at[k] += at[k - 1];
+    up.resize(e.size());
+    for (const Edge& x : e) up[at[Tree::kResolution - x.level]++] = x;
+  }
   std::vector<Edge> down(up.rbegin(), up.rend());
   // stamp[v]: last sweep in which v changed. A pair is revisited only when an endpoint
   // changed in the previous or the current sweep.

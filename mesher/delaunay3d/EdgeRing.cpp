@@ -71,7 +71,6 @@ void edgeRing(const TetMesh& mesh, TetId t, int i, int j, EdgeRing& ring) {
 
 int closedEdgeRing(const TetMesh& mesh, TetId t, int i, int j, std::span<TetId> tets,
                    std::span<VertexId> apex) {
-  const VertexId a = mesh.vertex(t, i), b = mesh.vertex(t, j);
   int k = 0;
   while (k == i || k == j) ++k;
   int l = 0;
@@ -81,10 +80,12 @@ int closedEdgeRing(const TetMesh& mesh, TetId t, int i, int j, std::span<TetId> 
   for (std::size_t n = 0; n < tets.size(); ++n) {
     tets[n] = cur;
     apex[n] = x;
-    const TetId next = mesh.neighbour(cur, mesh.localIndex(cur, x));
+    const std::uint32_t code = mesh.adjacentCode(cur, mesh.localIndex(cur, x));
+    const TetId next = codeTet(code);
     if (!next.valid()) return -1;
     if (next == t) return static_cast<int>(n + 1);
-    const VertexId z = fourth(mesh, next, a, b, y);
+    // The vertex of next opposite the shared face (a, b, y): none of a, b, y.
+    const VertexId z = mesh.vertex(next, codeFace(code));
     cur = next;
     x = y;
     y = z;

@@ -1,6 +1,7 @@
 #include "mesher/delaunay3d/LocalRetriangulation.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "mesher/core/Error.h"
 #include "mesher/predicates/Predicates.h"
@@ -12,7 +13,9 @@ using Triple = std::array<std::uint32_t, 3>;
 
 Triple sortedFace(const std::uint32_t* v, int i) {
   Triple f = {v[kFaceVertex[i][0]], v[kFaceVertex[i][1]], v[kFaceVertex[i][2]]};
-  std::sort(f.begin(), f.end());
+  if (f[0] > f[1]) std::swap(f[0], f[1]);
+  if (f[1] > f[2]) std::swap(f[1], f[2]);
+  if (f[0] > f[1]) std::swap(f[0], f[1]);
   return f;
 }
 

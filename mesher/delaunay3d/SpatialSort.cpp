@@ -1,6 +1,7 @@
 #include "mesher/delaunay3d/SpatialSort.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 
@@ -95,10 +96,79 @@ constexpr std::size_t kRadixMin = 4096;
 }  // namespace
 
 // Skilling, "Programming the Hilbert curve" (AIP Conf. Proc. 707, 2004): axes to the
-// transposed Hilbert index, then bit interleaving. Written without data-dependent branches
-// (each bit test is a coin flip for the branch predictor): where Skilling's loop does
-// "if (X[i] & q) X[0] ^= p; else swap the low bits of X[0] and X[i]", a mask selects.
+// transposed Hilbert index, then bit interleaving — run as a finite-state machine, one level
+// (one bit per axis, most significant first) per step. Skilling's loop at level q acts on
+// the bits below q only ("if (X[i] & q) X[0] ^= p; else swap the low bits of X[0] and
+// X[i]", p = q − 1), so the working bits of every lower level are a signed permutation T of
+// the raw bits: w_i = raw_{perm[i]} ^ mask_i, T updated by the level's operations, which
+// depend on the level's working bits w only. The Gray decoding after the loop (X[1] ^= X[0],
+// X[2] ^= X[1], then every level xor the parity t of X[2]'s bits above it) gives the digit
+// (g0, g1, g2) ^ t with g = (w0, w0^w1, w0^w1^w2), t then toggled by g2. State (T, t):
+// at most 48·2; tables built once by exploring from (identity, 0). SpatialSortTest checks
+// it against the bit loop (hilbertIndexReference) for every bit count.
+namespace {
+
+struct HilbertMachine {
+  static constexpr int kMaxStates = 96;
+  std::uint8_t next[kMaxStates][8];
+  std::uint8_t digit[kMaxStates][8];
+  int states = 0;
+
+  HilbertMachine() {
+    struct State {
+      std::array<int, 3> perm;
+      std::array<int, 3> mask;
+      int t;
+      bool operator==(const State&) const = default;
+    };
+    std::vector<State> found{{{0, 1, 2}, {0, 0, 0}, 0}};
+    for (std::size_t k = 0; k < found.size(); ++k) {
+      for (int raw = 0; raw < 8; ++raw) {
+        State s = found[k];
+        int w[3];
+        for (int i = 0; i < 3; ++i) w[i] = ((raw >> s.perm[i]) & 1) ^ s.mask[i];
+        const int g0 = w[0], g1 = w[0] ^ w[1], g2 = w[0] ^ w[1] ^ w[2];
+        const int d = ((g0 ^ s.t) << 2) | ((g1 ^ s.t) << 1) | (g2 ^ s.t);
+        s.t ^= g2;
+        for (int i = 0; i < 3; ++i) {
+          if (w[i]) {
+            s.mask[0] ^= 1;
+          } else {
+            std::swap(s.perm[0], s.perm[i]);
+            std::swap(s.mask[0], s.mask[i]);
+          }
+        }
+        std::size_t at = std::find(found.begin(), found.end(), s) - found.begin();
+        if (at == found.size()) found.push_back(s);
+        if (found.size() > kMaxStates) throw MeshingError("hilbertIndex: state machine too large");
+        next[k][raw] = static_cast<std::uint8_t>(at);
+        digit[k][raw] = static_cast<std::uint8_t>(d);
+      }
+    }
+    states = static_cast<int>(found.size());
+  }
+};
+
+const HilbertMachine& hilbertMachine() {
+  static const HilbertMachine m;
+  return m;
+}
+
+}  // namespace
+
 std::uint64_t hilbertIndex(std::uint32_t x, std::uint32_t y, std::uint32_t z, int bits) {
+  const HilbertMachine& h = hilbertMachine();
+  std::uint64_t key = 0;
+  int state = 0;
+  for (int b = bits - 1; b >= 0; --b) {
+    const int raw = static_cast<int>(((x >> b) & 1u) | (((y >> b) & 1u) << 1) | (((z >> b) & 1u) << 2));
+    key = (key << 3) | h.digit[state][raw];
+    state = h.next[state][raw];
+  }
+  return key;
+}
+
+std::uint64_t hilbertIndexReference(std::uint32_t x, std::uint32_t y, std::uint32_t z, int bits) {
   std::uint32_t X[3] = {x, y, z};
   const std::uint32_t m = 1u << (bits - 1);
   for (std::uint32_t q = m; q > 1; q >>= 1) {

@@ -15,6 +15,8 @@ namespace aniso::del3d {
 /// Position of the cell (x, y, z) along the 3D Hilbert curve of 2^bits cells per axis
 /// (bits in 1..21, coordinates < 2^bits). Consecutive positions are face-adjacent cells.
 std::uint64_t hilbertIndex(std::uint32_t x, std::uint32_t y, std::uint32_t z, int bits);
+/// The same by Skilling's bit loop (the definition; tests compare hilbertIndex with it).
+std::uint64_t hilbertIndexReference(std::uint32_t x, std::uint32_t y, std::uint32_t z, int bits);
 
 /// Indices of `points` sorted along a Hilbert curve over their bounding box (about
 /// 16·n^(1/3) cells per axis, at most 2^21; points in one cell are ordered by index).

@@ -18,6 +18,22 @@ void QualityStats::add(double value) {
   max_ = std::max(max_, value);
 }
 
+void QualityStats::addAll(std::span<const double> values) {
+  if (values.empty()) return;
+  QualityStats b;
+  double sum = 0;
+  for (const double v : values) {
+    if (!std::isfinite(v)) throw MeshingError("quality statistics: non-finite value " + std::to_string(v));
+    sum += v;
+    b.min_ = std::min(b.min_, v);
+    b.max_ = std::max(b.max_, v);
+  }
+  b.n_ = values.size();
+  b.mean_ = sum / static_cast<double>(b.n_);
+  for (const double v : values) b.m2_ += (v - b.mean_) * (v - b.mean_);
+  merge(b);
+}
+
 void QualityStats::merge(const QualityStats& o) {
   if (o.n_ == 0) return;
   if (n_ == 0) {

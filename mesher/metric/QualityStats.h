@@ -10,12 +10,17 @@
 // count 0, mean and stddev 0, min() = +infinity, max() = −infinity.
 #include <cstddef>
 #include <limits>
+#include <span>
 
 namespace aniso {
 
 class QualityStats {
  public:
   void add(double value);
+  /// add() of every value, to rounding: the block's mean and squared deviations in two
+  /// passes (as stable as Welford's), merged as merge() does — for blocks of values
+  /// gathered in a hot loop (one division per block, not per value).
+  void addAll(std::span<const double> values);
   void merge(const QualityStats& other);
 
   std::size_t count() const { return n_; }

@@ -9,6 +9,10 @@ namespace {
 
 /// Triangles per leaf of the tree.
 constexpr std::uint32_t kLeafTriangles = 4;
+/// Near-grid cells per near radius (cube at h 0.02: 1 cell per radius flagged points up to
+/// two radii from the surface, 62 % of the distance searches found nothing within the
+/// radius; with 2, a band of 1.5 radii).
+constexpr double kNearCellsPerRadius = 2;
 
 double boxDistance2(const Box3& b, const Vec3& x) {
   const Vec3 below = (b.lo - x).cwiseMax(0.0), above = (x - b.hi).cwiseMax(0.0);
@@ -47,7 +51,16 @@ TriangleTree::TriangleTree(std::span<const Vec3> points, std::span<const std::ar
     tris_.push_back({points[t[0]], points[t[1]], points[t[2]]});
     centroids.push_back((points[t[0]] + points[t[1]] + points[t[2]]) / 3.0);
   }
-  if (!tris_.empty()) build(0, static_cast<std::uint32_t>(tris_.size()), centroids);
+  if (!tris_.empty()) {
+    // The tree is built over positions (perm: position -> triangle), the triangles moved
+    // to their positions once at the end.
+    std::vector<std::uint32_t> perm(tris_.size()), order;
+    std::iota(perm.begin(), perm.end(), 0u);
+    build(0, static_cast<std::uint32_t>(tris_.size()), centroids, perm, order);
+    std::vector<std::array<Vec3, 3>> sorted(tris_.size());
+    for (std::size_t i = 0; i < perm.size(); ++i) sorted[i] = tris_[perm[i]];
+    tris_ = std::move(sorted);
+  }
   if (!tris_.empty() && nearRadius > 0 && std::isfinite(nearRadius)) buildNearGrid(nearRadius);
 }
 
@@ -56,7 +69,7 @@ void TriangleTree::buildNearGrid(double radius) {
   domain.lo -= Vec3::Constant(radius);
   domain.hi += Vec3::Constant(radius);
   const Vec3 extent = domain.size();
-  double cell = radius;
+  double cell = radius / kNearCellsPerRadius;
   const double volume = extent.prod();
   if (volume / (cell * cell * cell) > static_cast<double>(kMaxNearCells))
     cell = std::cbrt(volume / static_cast<double>(kMaxNearCells));
@@ -70,7 +83,7 @@ void TriangleTree::buildNearGrid(double radius) {
   origin_ = domain.lo;
   cell_ = cell;
   nearRadius_ = radius;
-  near_.assign(cells_[0] * cells_[1] * cells_[2], 0);
+  near_.assign((cells_[0] * cells_[1] * cells_[2] + 63) / 64, 0);
   auto index = [&](double x, int k) {
     const double i = std::floor((x - origin_[k]) / cell_);
     return static_cast<std::size_t>(std::clamp(i, 0.0, static_cast<double>(cells_[k] - 1)));
@@ -82,7 +95,10 @@ void TriangleTree::buildNearGrid(double radius) {
     for (int k = 0; k < 3; ++k) lo[k] = index(b.lo[k] - radius, k), hi[k] = index(b.hi[k] + radius, k);
     for (std::size_t z = lo[2]; z <= hi[2]; ++z)
       for (std::size_t y = lo[1]; y <= hi[1]; ++y)
-        for (std::size_t x = lo[0]; x <= hi[0]; ++x) near_[(z * cells_[1] + y) * cells_[0] + x] = 1;
+        for (std::size_t x = lo[0]; x <= hi[0]; ++x) {
+          const std::size_t c = (z * cells_[1] + y) * cells_[0] + x;
+          near_[c >> 6] |= std::uint64_t{1} << (c & 63);
+        }
   }
 }
 
@@ -102,16 +118,17 @@ bool TriangleTree::beyond(const Vec3& x, double distance) const {
   std::size_t cell;
   // Outside the domain (the triangles' box grown by the radius) or in a cell no grown
   // triangle box touches: farther than the radius from every triangle.
-  return !cellOf(x, cell) || !near_[cell];
+  return !cellOf(x, cell) || !((near_[cell >> 6] >> (cell & 63)) & 1u);
 }
 
-std::int32_t TriangleTree::build(std::uint32_t first, std::uint32_t count, std::vector<Vec3>& centroids) {
+std::int32_t TriangleTree::build(std::uint32_t first, std::uint32_t count, const std::vector<Vec3>& centroids,
+                                 std::vector<std::uint32_t>& perm, std::vector<std::uint32_t>& order) {
   const auto id = static_cast<std::int32_t>(nodes_.size());
   nodes_.emplace_back();
   Box3 box, cbox;
   for (std::uint32_t i = first; i < first + count; ++i) {
-    for (const Vec3& p : tris_[i]) box.add(p);
-    cbox.add(centroids[i]);
+    for (const Vec3& p : tris_[perm[i]]) box.add(p);
+    cbox.add(centroids[perm[i]]);
   }
   nodes_[id].box = box;
   if (count <= kLeafTriangles) {
@@ -121,21 +138,19 @@ std::int32_t TriangleTree::build(std::uint32_t first, std::uint32_t count, std::
   }
   int axis = 0;
   cbox.size().maxCoeff(&axis);
-  // Median split of [first, first + count) by the centroid's coordinate (index order breaks
-  // ties: deterministic), triangles and centroids permuted together.
-  std::vector<std::uint32_t> order(count);
+  // Median split of the positions [first, first + count) by the centroid's coordinate
+  // (position order breaks ties: deterministic).
+  order.resize(count);
   std::iota(order.begin(), order.end(), first);
   const std::uint32_t half = count / 2;
   std::nth_element(order.begin(), order.begin() + half, order.end(), [&](std::uint32_t x, std::uint32_t y) {
-    return centroids[x][axis] < centroids[y][axis] || (centroids[x][axis] == centroids[y][axis] && x < y);
+    const double cx = centroids[perm[x]][axis], cy = centroids[perm[y]][axis];
+    return cx < cy || (cx == cy && x < y);
   });
-  std::vector<std::array<Vec3, 3>> t(count);
-  std::vector<Vec3> c(count);
-  for (std::uint32_t i = 0; i < count; ++i) t[i] = tris_[order[i]], c[i] = centroids[order[i]];
-  std::copy(t.begin(), t.end(), tris_.begin() + first);
-  std::copy(c.begin(), c.end(), centroids.begin() + first);
-  const std::int32_t left = build(first, half, centroids);
-  const std::int32_t right = build(first + half, count - half, centroids);
+  for (std::uint32_t i = 0; i < count; ++i) order[i] = perm[order[i]];
+  std::copy(order.begin(), order.end(), perm.begin() + first);
+  const std::int32_t left = build(first, half, centroids, perm, order);
+  const std::int32_t right = build(first + half, count - half, centroids, perm, order);
   nodes_[id].left = left;
   nodes_[id].right = right;
   return id;

@@ -4,7 +4,7 @@
 // median of their centroids along the longest axis, kLeafTriangles per leaf) searched branch
 // and bound (a subtree is skipped when its box is farther than the best point so far).
 // For VolumeMetricSpace's grading of M_v from the surface (VolumeControlSpace.h).
-// With a near radius R, also a uniform grid of cells (at least R wide, at most kMaxNearCells)
+// With a near radius R, also a uniform grid of cells (R/2 wide, coarser beyond kMaxNearCells)
 // flagging those within R of a triangle (each triangle's box grown by R): beyond(x, d) then
 // answers most queries far from the surface without the tree (measured on the cube at h 0.02:
 // the distance search and the boundary-node lookup were 7 % of the run's cycles).
@@ -42,7 +42,10 @@ class TriangleTree {
     std::uint32_t first = 0, count = 0;  ///< leaf: tris_[first, first + count)
     std::int32_t left = -1, right = -1;  ///< inner node: children
   };
-  std::int32_t build(std::uint32_t first, std::uint32_t count, std::vector<Vec3>& centroids);
+  /// The subtree over the positions [first, first + count) of perm (position -> triangle);
+  /// order is scratch.
+  std::int32_t build(std::uint32_t first, std::uint32_t count, const std::vector<Vec3>& centroids,
+                     std::vector<std::uint32_t>& perm, std::vector<std::uint32_t>& order);
   void buildNearGrid(double radius);
   bool cellOf(const Vec3& x, std::size_t& cell) const;
 
@@ -51,10 +54,10 @@ class TriangleTree {
   double nearRadius_ = 0, cell_ = 0;
   Vec3 origin_ = Vec3::Zero();
   std::array<std::size_t, 3> cells_{0, 0, 0};
-  std::vector<std::uint8_t> near_;
+  std::vector<std::uint64_t> near_;  ///< one bit per cell
 };
 
 /// Cells of TriangleTree's near grid at most (coarser cells beyond: still exact, less pruning).
-inline constexpr std::size_t kMaxNearCells = std::size_t{1} << 21;
+inline constexpr std::size_t kMaxNearCells = std::size_t{1} << 23;  // 1 MB of bits
 
 }  // namespace aniso

@@ -129,10 +129,10 @@ class Recovery {
     const SolidBoundary& b = bt_.boundary;
     std::vector<int> edges, faces;
     if (!checked_) {
-      for (std::size_t e = 0; e < b.edges.size(); ++e) edges.push_back(static_cast<int>(e));
-      for (std::size_t f = 0; f < b.triangles.size(); ++f) faces.push_back(static_cast<int>(f));
       for (std::size_t e = 0; e < b.edges.size(); ++e) edgeIndex_[edgeKey(b.edges[e][0], b.edges[e][1])] = static_cast<int>(e);
       checked_ = true;
+      collectAllMissing();
+      return;
     } else {
       faces = missingFaces_;
       std::unordered_set<int> seen(missingEdges_.begin(), missingEdges_.end());
@@ -157,6 +157,44 @@ class Recovery {
       }
       if (!mesh_.isConstrained(h.tet, h.face)) mesh_.setConstrained(h.tet, h.face, true);
     }
+  }
+
+  /// collectMissing's first pass over every edge and face: one vertex star per first
+  /// vertex (an entity's first vertex: edges[e][0], triangles[f][0]), the entities around
+  /// it looked up in it (the same handles as findEdge / findFace, about five times fewer
+  /// star searches).
+  void collectAllMissing() {
+    const SolidBoundary& b = bt_.boundary;
+    missingEdges_.clear();
+    missingFaces_.clear();
+    const std::size_t ne = b.edges.size(), nf = b.triangles.size();
+    std::vector<std::uint32_t> firstVertex(ne + nf);
+    for (std::size_t e = 0; e < ne; ++e) firstVertex[e] = b.edges[e][0].index;
+    for (std::size_t f = 0; f < nf; ++f) firstVertex[ne + f] = b.triangles[f][0].index;
+    std::vector<std::uint32_t> byVertex(ne + nf);  // entity ids (edges, then faces + ne) by first vertex
+    for (std::size_t k = 0; k < byVertex.size(); ++k) byVertex[k] = static_cast<std::uint32_t>(k);
+    std::stable_sort(byVertex.begin(), byVertex.end(),
+                     [&](std::uint32_t x, std::uint32_t y) { return firstVertex[x] < firstVertex[y]; });
+    std::vector<std::uint8_t> missing(ne + nf, 0);
+    for (std::size_t k = 0; k < byVertex.size();) {
+      const VertexId a(firstVertex[byVertex[k]]);
+      volume::vertexStar(mesh_, a, star_);
+      for (; k < byVertex.size() && firstVertex[byVertex[k]] == a.index; ++k) {
+        const std::uint32_t id = byVertex[k];
+        if (id < ne) {
+          missing[id] = !volume::findEdgeInStar(mesh_, a, b.edges[id][1], star_).valid();
+          continue;
+        }
+        const auto& t = b.triangles[id - ne];
+        const volume::FaceHandle h = volume::findFaceInStar(mesh_, t[0], t[1], t[2], star_);
+        missing[id] = !h.valid();
+        if (h.valid() && !mesh_.isConstrained(h.tet, h.face)) mesh_.setConstrained(h.tet, h.face, true);
+      }
+    }
+    for (std::size_t e = 0; e < ne; ++e)
+      if (missing[e]) missingEdges_.push_back(static_cast<int>(e));
+    for (std::size_t f = 0; f < nf; ++f)
+      if (missing[ne + f]) missingFaces_.push_back(static_cast<int>(f));
   }
 
   bool edgesPresent(const std::array<VertexId, 3>& t) {

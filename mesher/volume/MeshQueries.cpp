@@ -26,8 +26,7 @@ void vertexStar(const TetMesh& mesh, VertexId v, std::vector<TetId>& out) {
   for (const TetId t : out) m.clearMark(t, TetMesh::kMarkB);
 }
 
-EdgeHandle findEdge(const TetMesh& mesh, VertexId a, VertexId b, std::vector<TetId>& star) {
-  vertexStar(mesh, a, star);
+EdgeHandle findEdgeInStar(const TetMesh& mesh, VertexId a, VertexId b, const std::vector<TetId>& star) {
   for (const TetId t : star) {
     const int j = mesh.localIndex(t, b);
     if (j >= 0) return {t, mesh.localIndex(t, a), j};
@@ -35,8 +34,12 @@ EdgeHandle findEdge(const TetMesh& mesh, VertexId a, VertexId b, std::vector<Tet
   return {};
 }
 
-FaceHandle findFace(const TetMesh& mesh, VertexId a, VertexId b, VertexId c, std::vector<TetId>& star) {
+EdgeHandle findEdge(const TetMesh& mesh, VertexId a, VertexId b, std::vector<TetId>& star) {
   vertexStar(mesh, a, star);
+  return findEdgeInStar(mesh, a, b, star);
+}
+
+FaceHandle findFaceInStar(const TetMesh& mesh, VertexId a, VertexId b, VertexId c, const std::vector<TetId>& star) {
   for (const TetId t : star) {
     if (mesh.localIndex(t, b) < 0 || mesh.localIndex(t, c) < 0) continue;
     for (int i = 0; i < 4; ++i) {
@@ -45,6 +48,11 @@ FaceHandle findFace(const TetMesh& mesh, VertexId a, VertexId b, VertexId c, std
     }
   }
   return {};
+}
+
+FaceHandle findFace(const TetMesh& mesh, VertexId a, VertexId b, VertexId c, std::vector<TetId>& star) {
+  vertexStar(mesh, a, star);
+  return findFaceInStar(mesh, a, b, c, star);
 }
 
 }  // namespace aniso::volume

@@ -33,4 +33,11 @@ struct FaceHandle {
 FaceHandle findFace(const del3d::TetMesh& mesh, del3d::VertexId a, del3d::VertexId b, del3d::VertexId c,
                     std::vector<del3d::TetId>& star);
 
+/// findEdge / findFace with the star of a given (vertexStar(mesh, a, star), the mesh not
+/// changed since): for many queries around one vertex.
+EdgeHandle findEdgeInStar(const del3d::TetMesh& mesh, del3d::VertexId a, del3d::VertexId b,
+                          const std::vector<del3d::TetId>& star);
+FaceHandle findFaceInStar(const del3d::TetMesh& mesh, del3d::VertexId a, del3d::VertexId b, del3d::VertexId c,
+                          const std::vector<del3d::TetId>& star);
+
 }  // namespace aniso::volume

@@ -2,9 +2,11 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "mesher/metric/MeanRatio.h"
@@ -167,10 +169,38 @@ class ReportTensors {
 
 }  // namespace
 
+namespace {
+
+/// Values gathered for QualityStats::addAll in blocks (one division per block).
+class StatsBuffer {
+ public:
+  explicit StatsBuffer(QualityStats& to) : to_(to) {}
+  ~StatsBuffer() { flush(); }
+  StatsBuffer(const StatsBuffer&) = delete;
+  StatsBuffer& operator=(const StatsBuffer&) = delete;
+  void add(double v) {
+    buf_[n_++] = v;
+    if (n_ == buf_.size()) flush();
+  }
+  void flush() {
+    to_.addAll(std::span<const double>(buf_.data(), n_));
+    n_ = 0;
+  }
+
+ private:
+  QualityStats& to_;
+  std::array<double, 512> buf_;
+  std::size_t n_ = 0;
+};
+
+}  // namespace
+
 // One pass: the angles are compared as cosines (acos is decreasing), converted once at the
 // end. The metric of a tet is the mean of its vertices' tensors and that of an edge the mean
 // of its ends' (as the refinement's edge check and the improvement measure them): one
-// control-space query per vertex instead of one per tet and one per edge.
+// control-space query per vertex instead of one per tet and one per edge (none for a
+// boundary node in the user's metric: its length factor is 1). The statistics are
+// gathered in blocks (StatsBuffer).
 void accumulateTetQuality(const SolidTetMesh& s, const ControlSpace3d* cs, TetQualitySummary& out,
                           const VolumeMetricSpace* volume, const improve3d::VertexMetrics* metrics) {
   const del3d::TetMesh& mesh = s.mesh;
@@ -180,32 +210,35 @@ void accumulateTetQuality(const SolidTetMesh& s, const ControlSpace3d* cs, TetQu
   std::unique_ptr<ReportTensors> vt;
   if (cs) vt = std::make_unique<ReportTensors>(mesh, *cs, metrics);
   const bool etaMIsEta = vt && vt->allIsotropic(mesh.numVertices());
-  for (std::uint32_t k = 0; k < mesh.tetSlots(); ++k) {
-    const del3d::TetId t(k);
-    if (!mesh.isAlive(t)) continue;
-    const std::uint32_t* tv = mesh.tetVertices(t);
-    const Vec3 a = mesh.point(del3d::VertexId(tv[0])), b = mesh.point(del3d::VertexId(tv[1]));
-    const Vec3 c = mesh.point(del3d::VertexId(tv[2])), d = mesh.point(del3d::VertexId(tv[3]));
-    const double vol = (b - a).cross(c - a).dot(d - a) / 6.0;
-    ++out.tets;
-    out.volume += vol;
-    if (vol <= 0) ++out.inverted;
-    const double eta = meanRatio(a, b, c, d);
-    etaStats.add(eta);
-    Vec3 n[4];
-    refereeNormals(a, b, c, d, n);
-    double lo, hi, ref;
-    cosines(n, lo, hi, ref);
-    cmin = std::min(cmin, lo);
-    cmax = std::max(cmax, hi);
-    refereeCmax = std::max(refereeCmax, ref);
-    if (hi > cosSliver) ++out.belowDihedral;
-    if (!vt || etaMIsEta) continue;
-    if (vt->tetIsotropic(tv)) {
-      out.etaM.add(eta);  // a mean of s·I tensors is isotropic: η_M = η
-    } else {
-      const Mat3 m = vt->tetMetric(tv);
-      out.etaM.add(meanRatio(Vec3(m * a), Vec3(m * b), Vec3(m * c), Vec3(m * d)));
+  {
+    StatsBuffer eta(etaStats), etaM(out.etaM);
+    for (std::uint32_t k = 0; k < mesh.tetSlots(); ++k) {
+      const del3d::TetId t(k);
+      if (!mesh.isAlive(t)) continue;
+      const std::uint32_t* tv = mesh.tetVertices(t);
+      const Vec3 a = mesh.point(del3d::VertexId(tv[0])), b = mesh.point(del3d::VertexId(tv[1]));
+      const Vec3 c = mesh.point(del3d::VertexId(tv[2])), d = mesh.point(del3d::VertexId(tv[3]));
+      const double vol = (b - a).cross(c - a).dot(d - a) / 6.0;
+      ++out.tets;
+      out.volume += vol;
+      if (vol <= 0) ++out.inverted;
+      const double etaK = meanRatio(a, b, c, d);
+      eta.add(etaK);
+      Vec3 n[4];
+      refereeNormals(a, b, c, d, n);
+      double lo, hi, ref;
+      cosines(n, lo, hi, ref);
+      cmin = std::min(cmin, lo);
+      cmax = std::max(cmax, hi);
+      refereeCmax = std::max(refereeCmax, ref);
+      if (hi > cosSliver) ++out.belowDihedral;
+      if (!vt || etaMIsEta) continue;
+      if (vt->tetIsotropic(tv)) {
+        etaM.add(etaK);  // a mean of s·I tensors is isotropic: η_M = η
+      } else {
+        const Mat3 m = vt->tetMetric(tv);
+        etaM.add(meanRatio(Vec3(m * a), Vec3(m * b), Vec3(m * c), Vec3(m * d)));
+      }
     }
   }
   out.meanRatio.merge(etaStats);
@@ -222,9 +255,13 @@ void accumulateTetQuality(const SolidTetMesh& s, const ControlSpace3d* cs, TetQu
   const std::size_t nv = mesh.numVertices();
   const improve3d::VertexTets incidence(mesh);
   std::vector<double> toUser(volume ? nv : 0, 1.0);  // per vertex: M = toUser · M_v
-  for (std::size_t v = 0; v < toUser.size(); ++v)
-    toUser[v] = volume->lengthFactorAt(mesh.point(del3d::VertexId(static_cast<std::uint32_t>(v))));
+  for (std::size_t v = 0; v < toUser.size(); ++v) {
+    const del3d::VertexId id(static_cast<std::uint32_t>(v));
+    // At a surface node M_v is M (VolumeMetricSpace::onBoundary): no query.
+    if (!(s.isFixed(id) && volume->onBoundary(mesh.point(id)))) toUser[v] = volume->lengthFactorAt(mesh.point(id));
+  }
   std::vector<std::uint32_t> seen(nv, del3d::kNone);
+  StatsBuffer muM(out.muM), muMUser(out.muMUser);
   for (std::uint32_t v = 0; v < nv; ++v) {
     const Vec3 p = mesh.point(del3d::VertexId(v));
     for (const std::uint32_t t : incidence.of(del3d::VertexId(v))) {
@@ -238,12 +275,12 @@ void accumulateTetQuality(const SolidTetMesh& s, const ControlSpace3d* cs, TetQu
         const double fv = volume ? toUser[v] : 1.0, fw = volume ? toUser[w] : 1.0;
         if (sv > 0 && sw > 0) {
           const double l = dq.norm();
-          out.muM.add(0.5 * (sv + sw) * l);
-          out.muMUser.add(0.5 * (fv * sv + fw * sw) * l);
+          muM.add(0.5 * (sv + sw) * l);
+          muMUser.add(0.5 * (fv * sv + fw * sw) * l);
         } else {
           const Mat3 tv = vt->at(del3d::VertexId(v)), tw = vt->at(del3d::VertexId(w));
-          out.muM.add((0.5 * (tv + tw) * dq).norm());
-          out.muMUser.add((0.5 * (fv * tv + fw * tw) * dq).norm());
+          muM.add((0.5 * (tv + tw) * dq).norm());
+          muMUser.add((0.5 * (fv * tv + fw * tw) * dq).norm());
         }
       }
     }

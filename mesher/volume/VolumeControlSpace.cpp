@@ -20,6 +20,9 @@
 namespace aniso {
 namespace {
 
+/// The key of no point (NaN bits): an empty slot of VolumeMetricSpace's boundary table.
+constexpr std::array<std::uint64_t, 3> kEmpty = {~std::uint64_t{0}, ~std::uint64_t{0}, ~std::uint64_t{0}};
+
 /// Relative triangle area (of the squared longest edge) below which a boundary triangle
 /// gives no metric (a sliver triangle's simplex metric is meaningless).
 constexpr double kFlatTriangle = 1e-8;
@@ -83,8 +86,18 @@ VolumeMetricSpace::VolumeMetricSpace(std::shared_ptr<const ControlSpace3d> user,
     : user_(std::move(user)), factor_(factor), surface_(std::move(surface)) {
   if (!user_) throw MeshingError("VolumeMetricSpace: no control space");
   if (!(factor > 0) || !std::isfinite(factor)) throw MeshingError("VolumeMetricSpace: the length factor must be > 0");
-  boundary_.reserve(boundary.size());
-  for (const Vec3& x : boundary) boundary_.insert(key(x));
+  if (boundary.empty()) return;
+  std::size_t slots = 16;
+  while (slots < 2 * boundary.size()) slots *= 2;  // load at most 1/2
+  boundary_.assign(slots, kEmpty);
+  mask_ = slots - 1;
+  for (const Vec3& x : boundary) {
+    const Key k = key(x);
+    if (k == kEmpty) continue;  // not a finite point
+    std::size_t i = hash(k) & mask_;
+    while (boundary_[i] != kEmpty && boundary_[i] != k) i = (i + 1) & mask_;
+    boundary_[i] = k;
+  }
 }
 
 VolumeMetricSpace::Key VolumeMetricSpace::key(const Vec3& x) {
@@ -93,7 +106,7 @@ VolumeMetricSpace::Key VolumeMetricSpace::key(const Vec3& x) {
           std::bit_cast<std::uint64_t>(x.z() + 0.0)};
 }
 
-std::size_t VolumeMetricSpace::KeyHash::operator()(const Key& k) const {
+std::size_t VolumeMetricSpace::hash(const Key& k) {
   std::uint64_t h = k[0] * 0x9E3779B97F4A7C15ull;
   h = (h ^ (h >> 29) ^ k[1]) * 0xBF58476D1CE4E5B9ull;
   h = (h ^ (h >> 31) ^ k[2]) * 0x94D049BB133111EBull;
@@ -118,7 +131,12 @@ double VolumeMetricSpace::lengthFactor(const Vec3& x, const Metric3d& m) const {
 }
 
 bool VolumeMetricSpace::onBoundary(const Vec3& x) const {
-  return !boundary_.empty() && boundary_.count(key(x)) > 0;
+  if (boundary_.empty()) return false;
+  const Key k = key(x);
+  for (std::size_t i = hash(k) & mask_;; i = (i + 1) & mask_) {
+    if (boundary_[i] == k) return k != kEmpty;
+    if (boundary_[i] == kEmpty) return false;
+  }
 }
 
 std::shared_ptr<ControlSpace3d> buildVolumeControlSpace(const Model& model, const SurfaceMesh& surface, int solid,

@@ -48,7 +48,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
-#include <unordered_set>
+#include <vector>
 
 #include "mesher/control/ControlSpace3d.h"
 #include "mesher/core/MeshOptions.h"
@@ -110,16 +110,17 @@ class VolumeMetricSpace final : public ControlSpace3d {
 
  private:
   using Key = std::array<std::uint64_t, 3>;
-  struct KeyHash {
-    std::size_t operator()(const Key& k) const;
-  };
   static Key key(const Vec3& x);
+  static std::size_t hash(const Key& k);
   /// The length factor at x, m = M(x).
   double lengthFactor(const Vec3& x, const Metric3d& m) const;
 
   std::shared_ptr<const ControlSpace3d> user_;
   double factor_;
-  std::unordered_set<Key, KeyHash> boundary_;
+  /// The boundary points' keys, open addressing with linear probing (one or two cache
+  /// lines per lookup); empty slots hold kEmpty (a NaN's bits: never a point's key).
+  std::vector<Key> boundary_;
+  std::size_t mask_ = 0;
   std::shared_ptr<const TriangleTree> surface_;
 };
 

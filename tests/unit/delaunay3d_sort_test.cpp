@@ -56,6 +56,22 @@ TEST(Delaunay3dSort, HilbertCurveVisitsNeighbouringCells) {
   }
 }
 
+TEST(Delaunay3dSort, HilbertStateMachineEqualsSkillingsLoop) {
+  std::mt19937_64 rng(7);
+  for (int bits = 1; bits <= 21; ++bits) {
+    const std::uint32_t top = (1u << bits) - 1;
+    const std::uint32_t corners[2] = {0, top};
+    for (const std::uint32_t x : corners)
+      for (const std::uint32_t y : corners)
+        for (const std::uint32_t z : corners) EXPECT_EQ(hilbertIndex(x, y, z, bits), hilbertIndexReference(x, y, z, bits));
+    for (int k = 0; k < 20000; ++k) {
+      const std::uint32_t x = static_cast<std::uint32_t>(rng()) & top, y = static_cast<std::uint32_t>(rng()) & top,
+                          z = static_cast<std::uint32_t>(rng()) & top;
+      ASSERT_EQ(hilbertIndex(x, y, z, bits), hilbertIndexReference(x, y, z, bits)) << bits << " " << x << " " << y << " " << z;
+    }
+  }
+}
+
 TEST(Delaunay3dSort, HilbertAndBrioOrdersArePermutations) {
   const std::vector<Vec3> pts = randomPoints(10000, 1);
   const auto h = hilbertOrder(pts);
