@@ -73,6 +73,15 @@ VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, cons
     st.flips32 += flips.counts().f32;
     st.flips44 += flips.counts().f44;
     st.flipSeconds += since(t0);
+    if (o.vertexRemoval) {
+      t0 = Clock::now();
+      improve3d::VertexRemoval removal(s, vm, &*scores);
+      std::vector<del3d::TetId> created, more;
+      st.removed += removal.run(o.removal, created).removed;
+      for (const del3d::TetId t : created)
+        if (s.mesh.isAlive(t)) flips.visit(t, more);
+      st.removalSeconds += since(t0);
+    }
   }
   const auto t0 = Clock::now();
   if (o.sliverRounds > 0) {
@@ -93,7 +102,9 @@ VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, cons
   st.sliverSeconds = since(t0);
   logDebug("volume improvement: smoothing " + std::to_string(st.smoothingSeconds) + " s (" + std::to_string(st.moved) +
            " moves), flips " + std::to_string(st.flipSeconds) + " s (" +
-           std::to_string(st.flips23 + st.flips32 + st.flips44) + "), slivers " + std::to_string(st.sliverSeconds) +
+           std::to_string(st.flips23 + st.flips32 + st.flips44) + "), vertex removal " +
+           std::to_string(st.removalSeconds) + " s (" + std::to_string(st.removed) + "), slivers " +
+           std::to_string(st.sliverSeconds) +
            " s (" + std::to_string(st.sliversBefore) + " -> " + std::to_string(st.sliversAfter) + ")");
   return st;
 }

@@ -11,7 +11,12 @@
 //       the kernel's exact checks; constrained faces are never removed) whenever the
 //       worst η_M of the new tets beats that of the old ones by flipGain; the tets with
 //       η_M below flipCandidate are visited (the thesis visits all), a changed region is
-//       revisited.
+//       revisited;
+//     vertex removal (improve/VertexRemoval.h): a free vertex whose star is poor is removed
+//       when a retriangulation of its star (edge collapse, or the Delaunay triangulation of
+//       its link) raises the star's worst η_M — the topological step that undoes crowded
+//       refinement points, where a solid is one or two elements across; the flips then
+//       visit the new tets.
 //   sliver removal: every tet whose smallest dihedral angle is below sliverAngleDeg (in
 //     its metric), or with a Euclidean dihedral angle outside [euclideanSliverAngleDeg,
 //     180° − euclideanSliverAngleDeg], is attacked (improve/SliverRemoval.h) by (1) flips
@@ -40,6 +45,7 @@
 #include "mesher/control/ControlSpace3d.h"
 #include "mesher/volume/SolidTetMesh.h"
 #include "mesher/volume/improve/VertexMetrics.h"
+#include "mesher/volume/improve/VertexRemoval.h"
 
 namespace aniso {
 
@@ -60,17 +66,22 @@ struct VolumeImproveOptions {
   /// referee's measure; matters for anisotropic meshes).
   double euclideanSliverAngleDeg = 5.0;
   int sliverRounds = 4;
+  /// Removal of crowded free vertices after the flips of each pass (improve/VertexRemoval.h;
+  /// the created tets are offered to the flips).
+  bool vertexRemoval = true;
+  improve3d::VertexRemovalOptions removal;
   bool sliverInsertion = true;  ///< allow step (3)
 };
 
 struct VolumeImproveStats {
   std::size_t moved = 0;  ///< accepted smoothing moves
   std::size_t flips23 = 0, flips32 = 0, flips44 = 0;
+  std::size_t removed = 0;  ///< free vertices removed (VertexRemoval)
   std::size_t sliversBefore = 0;  ///< tets below sliverAngleDeg before sliver removal
   std::size_t sliversAfter = 0;
   std::size_t sliverFlips = 0, sliverMoves = 0, sliverInsertions = 0, sliverEdgeRemovals = 0,
               sliverSteinerPoints = 0;
-  double smoothingSeconds = 0, flipSeconds = 0, sliverSeconds = 0;  ///< wall time of the steps
+  double smoothingSeconds = 0, flipSeconds = 0, removalSeconds = 0, sliverSeconds = 0;  ///< wall time of the steps
 };
 
 /// `metrics` (optional): the per-vertex tensors to use, built on s.mesh and cs by the caller;

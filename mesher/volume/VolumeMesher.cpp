@@ -184,6 +184,7 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
     p.outcome.times.emplace_back("volume improvement", since(t0));
     p.outcome.counters.emplace_back("improvement_moved", static_cast<double>(is.moved));
     p.outcome.counters.emplace_back("improvement_flips", static_cast<double>(is.flips23 + is.flips32 + is.flips44));
+    p.outcome.counters.emplace_back("improvement_removed", static_cast<double>(is.removed));
     p.outcome.counters.emplace_back("slivers_before", static_cast<double>(is.sliversBefore));
     p.outcome.counters.emplace_back("slivers_after", static_cast<double>(is.sliversAfter));
     p.outcome.counters.emplace_back("sliver_edge_removals", static_cast<double>(is.sliverEdgeRemovals));

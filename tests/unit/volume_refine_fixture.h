@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "mesher/delaunay3d/Delaunay3d.h"
+#include "mesher/delaunay3d/LocalRetriangulation.h"
 #include "mesher/delaunay3d/RemoveTets.h"
 #include "mesher/delaunay3d/Validate.h"
 #include "mesher/model/Model.h"
@@ -200,6 +201,47 @@ inline std::map<int, Vec3> fixedPositions(const SolidTetMesh& s) {
   for (std::uint32_t v = 0; v < s.node.size(); ++v)
     if (s.node[v] >= 0) out[s.node[v]] = s.mesh.point(del3d::VertexId(v));
   return out;
+}
+
+/// Kernel vertex of point i: the first 8 vertices are the enclosing-box corners (in no tet).
+inline del3d::VertexId pv(int i) { return del3d::VertexId(static_cast<std::uint32_t>(8 + i)); }
+
+/// A solid from points (all of them surface nodes: node[pv(i)] = i) and tets (made
+/// positive), faces with equal vertex triples linked, the hull constrained; `boundary`
+/// gets the hull as point triples.
+inline SolidTetMesh solidFrom(const std::vector<Vec3>& pts, const std::vector<std::array<int, 4>>& tets,
+                       std::set<Triple>& boundary) {
+  SolidTetMesh s;
+  s.solid = 0;
+  for (int c = 0; c < 8; ++c) s.mesh.addVertex(Vec3(c & 1, (c >> 1) & 1, (c >> 2) & 1) * 100.0 - Vec3(50, 50, 50));
+  for (const Vec3& p : pts) s.mesh.addVertex(p);
+  s.node.assign(s.mesh.numVertices(), -1);
+  for (std::size_t i = 0; i < pts.size(); ++i) s.node[pv(static_cast<int>(i)).index] = static_cast<int>(i);
+  std::map<Triple, std::pair<del3d::TetId, int>> open;
+  for (const auto& q : tets) {
+    std::array<del3d::VertexId, 4> v = {pv(q[0]), pv(q[1]), pv(q[2]), pv(q[3])};
+    if (del3d::orientation(s.mesh, v) < 0) std::swap(v[0], v[1]);
+    const del3d::TetId t = s.mesh.createTet(v[0], v[1], v[2], v[3]);
+    for (const del3d::VertexId x : v) s.mesh.setVertexTet(x, t);
+    for (int i = 0; i < 4; ++i) {
+      const std::uint32_t* tv = s.mesh.tetVertices(t);
+      const Triple key = sortedTriple(s.node[tv[del3d::kFaceVertex[i][0]]], s.node[tv[del3d::kFaceVertex[i][1]]],
+                                      s.node[tv[del3d::kFaceVertex[i][2]]]);
+      const auto it = open.find(key);
+      if (it == open.end()) {
+        open.emplace(key, std::make_pair(t, i));
+        continue;
+      }
+      s.mesh.link(t, i, it->second.first, it->second.second);
+      open.erase(it);
+    }
+  }
+  boundary.clear();
+  for (const auto& [key, face] : open) {
+    s.mesh.setConstrained(face.first, face.second, true);
+    boundary.insert(key);
+  }
+  return s;
 }
 
 }  // namespace aniso::testing

@@ -20,47 +20,6 @@ using del3d::VertexId;
 
 namespace {
 
-/// Kernel vertex of point i: the first 8 vertices are the enclosing-box corners (in no tet).
-VertexId pv(int i) { return VertexId(static_cast<std::uint32_t>(8 + i)); }
-
-/// A solid from points (all of them surface nodes: node[pv(i)] = i) and tets (made
-/// positive), faces with equal vertex triples linked, the hull constrained; `boundary`
-/// gets the hull as point triples.
-SolidTetMesh solidFrom(const std::vector<Vec3>& pts, const std::vector<std::array<int, 4>>& tets,
-                       std::set<Triple>& boundary) {
-  SolidTetMesh s;
-  s.solid = 0;
-  for (int c = 0; c < 8; ++c) s.mesh.addVertex(Vec3(c & 1, (c >> 1) & 1, (c >> 2) & 1) * 100.0 - Vec3(50, 50, 50));
-  for (const Vec3& p : pts) s.mesh.addVertex(p);
-  s.node.assign(s.mesh.numVertices(), -1);
-  for (std::size_t i = 0; i < pts.size(); ++i) s.node[pv(static_cast<int>(i)).index] = static_cast<int>(i);
-  std::map<Triple, std::pair<TetId, int>> open;
-  for (const auto& q : tets) {
-    std::array<VertexId, 4> v = {pv(q[0]), pv(q[1]), pv(q[2]), pv(q[3])};
-    if (del3d::orientation(s.mesh, v) < 0) std::swap(v[0], v[1]);
-    const TetId t = s.mesh.createTet(v[0], v[1], v[2], v[3]);
-    for (const VertexId x : v) s.mesh.setVertexTet(x, t);
-    for (int i = 0; i < 4; ++i) {
-      const std::uint32_t* tv = s.mesh.tetVertices(t);
-      const Triple key = sortedTriple(s.node[tv[del3d::kFaceVertex[i][0]]], s.node[tv[del3d::kFaceVertex[i][1]]],
-                                      s.node[tv[del3d::kFaceVertex[i][2]]]);
-      const auto it = open.find(key);
-      if (it == open.end()) {
-        open.emplace(key, std::make_pair(t, i));
-        continue;
-      }
-      s.mesh.link(t, i, it->second.first, it->second.second);
-      open.erase(it);
-    }
-  }
-  boundary.clear();
-  for (const auto& [key, face] : open) {
-    s.mesh.setConstrained(face.first, face.second, true);
-    boundary.insert(key);
-  }
-  return s;
-}
-
 double worstEta(const SolidTetMesh& s, const improve3d::VertexMetrics& vm) {
   double w = 1e300;
   for (std::uint32_t k = 0; k < s.mesh.tetSlots(); ++k)

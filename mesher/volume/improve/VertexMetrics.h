@@ -98,6 +98,7 @@ class VertexMetrics {
   };
   bool isSliver(del3d::TetId t, const SliverAngles& a) const;
   void setGuardEuclidean(bool on) { guardEuclidean_ = on; }
+  bool guardEuclidean() const { return guardEuclidean_; }
 
  private:
   const del3d::TetMesh& mesh_;
