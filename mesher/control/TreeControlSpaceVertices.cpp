@@ -102,7 +102,7 @@ void TreeControlSpace<D>::initializeVertices() {
     known[v] = 1;
   }
   if (!valued_) extrapolate(known);
-  sources_.clear();
+  std::vector<PointSource>().swap(sources_);  // the pending sources' memory too (with the meshes)
   std::fill(sourceHead_.begin(), sourceHead_.end(), -1);
   pending_ = 0;
   valued_ = true;

@@ -44,20 +44,33 @@ Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const V
 
 TriangleTree::TriangleTree(std::span<const Vec3> points, std::span<const std::array<int, 3>> triangles,
                            double nearRadius) {
+  // The points the triangles use, compacted (in order of first use), and the triangles as
+  // index triples into them.
+  std::vector<std::uint32_t> compact(points.size(), ~0u);
   tris_.reserve(triangles.size());
   std::vector<Vec3> centroids;
   centroids.reserve(triangles.size());
   for (const auto& t : triangles) {
-    tris_.push_back({points[t[0]], points[t[1]], points[t[2]]});
+    std::array<std::uint32_t, 3> c;
+    for (int k = 0; k < 3; ++k) {
+      std::uint32_t& id = compact[static_cast<std::size_t>(t[k])];
+      if (id == ~0u) {
+        id = static_cast<std::uint32_t>(points_.size());
+        points_.push_back(points[t[k]]);
+      }
+      c[k] = id;
+    }
+    tris_.push_back(c);
     centroids.push_back((points[t[0]] + points[t[1]] + points[t[2]]) / 3.0);
   }
+  points_.shrink_to_fit();
   if (!tris_.empty()) {
     // The tree is built over positions (perm: position -> triangle), the triangles moved
     // to their positions once at the end.
     std::vector<std::uint32_t> perm(tris_.size()), order;
     std::iota(perm.begin(), perm.end(), 0u);
     build(0, static_cast<std::uint32_t>(tris_.size()), centroids, perm, order);
-    std::vector<std::array<Vec3, 3>> sorted(tris_.size());
+    std::vector<std::array<std::uint32_t, 3>> sorted(tris_.size());
     for (std::size_t i = 0; i < perm.size(); ++i) sorted[i] = tris_[perm[i]];
     tris_ = std::move(sorted);
   }
@@ -90,7 +103,7 @@ void TriangleTree::buildNearGrid(double radius) {
   };
   for (const auto& t : tris_) {
     Box3 b;
-    for (const Vec3& p : t) b.add(p);
+    for (const std::uint32_t p : t) b.add(points_[p]);
     std::array<std::size_t, 3> lo, hi;
     for (int k = 0; k < 3; ++k) lo[k] = index(b.lo[k] - radius, k), hi[k] = index(b.hi[k] + radius, k);
     for (std::size_t z = lo[2]; z <= hi[2]; ++z)
@@ -127,7 +140,7 @@ std::int32_t TriangleTree::build(std::uint32_t first, std::uint32_t count, const
   nodes_.emplace_back();
   Box3 box, cbox;
   for (std::uint32_t i = first; i < first + count; ++i) {
-    for (const Vec3& p : tris_[perm[i]]) box.add(p);
+    for (const std::uint32_t p : tris_[perm[i]]) box.add(points_[p]);
     cbox.add(centroids[perm[i]]);
   }
   nodes_[id].box = box;
@@ -168,7 +181,8 @@ bool TriangleTree::closest(const Vec3& x, double maxDistance, Vec3& out) const {
     if (boxDistance2(n.box, x) > best) continue;
     if (n.left < 0) {
       for (std::uint32_t i = n.first; i < n.first + n.count; ++i) {
-        const Vec3 p = closestPointOnTriangle(x, tris_[i][0], tris_[i][1], tris_[i][2]);
+        const auto& t = tris_[i];
+        const Vec3 p = closestPointOnTriangle(x, points_[t[0]], points_[t[1]], points_[t[2]]);
         const double d2 = (p - x).squaredNorm();
         if (d2 <= best && (!found || d2 < best)) best = d2, out = p, found = true;
       }

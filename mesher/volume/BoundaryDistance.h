@@ -25,7 +25,7 @@ Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const V
 
 class TriangleTree {
  public:
-  /// The triangles are point index triples into `points` (copied).
+  /// The triangles are point index triples into `points` (the points they use are copied).
   /// `nearRadius` > 0: the grid of beyond() for distances up to it.
   TriangleTree(std::span<const Vec3> points, std::span<const std::array<int, 3>> triangles, double nearRadius = 0);
   /// True when x is certainly farther than `distance` from every triangle (the grid's cell of
@@ -49,7 +49,8 @@ class TriangleTree {
   void buildNearGrid(double radius);
   bool cellOf(const Vec3& x, std::size_t& cell) const;
 
-  std::vector<std::array<Vec3, 3>> tris_;
+  std::vector<Vec3> points_;                     ///< the points the triangles use
+  std::vector<std::array<std::uint32_t, 3>> tris_;  ///< into points_, in the tree's leaf order
   std::vector<Node> nodes_;
   double nearRadius_ = 0, cell_ = 0;
   Vec3 origin_ = Vec3::Zero();

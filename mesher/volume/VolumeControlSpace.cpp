@@ -88,7 +88,7 @@ VolumeMetricSpace::VolumeMetricSpace(std::shared_ptr<const ControlSpace3d> user,
   if (!(factor > 0) || !std::isfinite(factor)) throw MeshingError("VolumeMetricSpace: the length factor must be > 0");
   if (boundary.empty()) return;
   std::size_t slots = 16;
-  while (slots < 2 * boundary.size()) slots *= 2;  // load at most 1/2
+  while (4 * boundary.size() > 3 * slots) slots *= 2;  // load at most 3/4
   boundary_.assign(slots, kEmpty);
   mask_ = slots - 1;
   for (const Vec3& x : boundary) {

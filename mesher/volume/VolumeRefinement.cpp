@@ -100,6 +100,9 @@ void Refiner::reserveFor(double predictedTets) {
   if (!(tets > static_cast<double>(mesh_.tetSlots()))) return;
   const std::size_t nt = static_cast<std::size_t>(tets);
   mesh_.reserve(mesh_.numVertices() + static_cast<std::size_t>(tets / kTetsPerVertex), nt);
+  // The per-slot arrays grow one slot at a time within this room (pages touched as used).
+  heap_.reserve(nt);
+  postponed_.reserve(nt);
 }
 
 double Refiner::evaluate(TetId t) {
@@ -159,7 +162,7 @@ double Refiner::evaluateIsotropic(TetId t, const std::uint32_t* tv, double scale
 
 void Refiner::enqueue(TetId t) {
   heap_.renew(t);
-  if (t.index >= postponed_.size()) postponed_.resize(std::size_t{t.index} + 1 + postponed_.size() / 2, 0);
+  if (t.index >= postponed_.size()) postponed_.resize(std::size_t{t.index} + 1, 0);  // reserved: reserveFor
   postponed_[t.index] = 0;
   const double q = evaluate(t);
   if (q < o_.qualityThreshold) heap_.push(t, q);
@@ -339,6 +342,7 @@ VolumeRefineStats Refiner::run() {
     }
     if (batch.empty()) break;
     heap_.compactIfGrown(mesh_);
+    heap_.releaseDrained();
     const std::vector<std::uint32_t> order =
         batch.size() > 1 ? del3d::hilbertOrder(centres) : std::vector<std::uint32_t>{0};
     for (const std::uint32_t i : order) {

@@ -32,9 +32,11 @@ class RefineQueue {
 
   /// The slot holds a new tet: entries pushed for the slot before are now stale.
   void renew(del3d::TetId t) {
-    if (t.index >= stamp_.size()) stamp_.resize(std::size_t{t.index} + 1 + stamp_.size() / 2, 0);
+    if (t.index >= stamp_.size()) stamp_.resize(std::size_t{t.index} + 1, 0);  // geometric growth beyond reserve()
     ++stamp_[t.index];
   }
+  /// Room for the stamps of this many tet slots (untouched memory until used).
+  void reserve(std::size_t slots) { stamp_.reserve(slots); }
   void push(del3d::TetId t, double q) {
     const int b = std::clamp(static_cast<int>(q * scale_), 0, kBuckets - 1);
     buckets_[b].push_back({static_cast<float>(q), t.index, stampOf(t)});
@@ -58,6 +60,13 @@ class RefineQueue {
   bool current(const del3d::TetMesh& mesh, const Entry& e) const {
     const del3d::TetId t(e.tet);
     return mesh.isAlive(t) && stampOf(t) == e.stamp;
+  }
+  /// Returns the memory of buckets that have drained to a quarter of their capacity (the
+  /// queue's largest size comes mid-refinement; its buckets would otherwise hold that
+  /// memory up to the end, the peak of the mesh). O(kBuckets).
+  void releaseDrained() {
+    for (std::vector<Entry>& b : buckets_)
+      if (b.capacity() > 4 * b.size() + kMinRelease) b.shrink_to_fit();
   }
   /// Entries held, stale ones included.
   std::size_t size() const { return size_; }
@@ -85,6 +94,7 @@ class RefineQueue {
   std::size_t compacted_ = 0;  // size after the last compaction
   std::vector<std::uint32_t> stamp_;
   static constexpr std::size_t kMinCompaction = 1 << 16;
+  static constexpr std::size_t kMinRelease = 1 << 12;
 };
 
 }  // namespace aniso::refine3d
