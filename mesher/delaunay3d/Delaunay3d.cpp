@@ -37,6 +37,9 @@ DelaunayResult buildDelaunay(TetMesh& mesh, std::span<const Vec3> points, const 
     for (std::uint32_t k = 0; k < mesh.tetSlots(); ++k) octree->update(mesh, TetId(k));
   }
   Inserter inserter(mesh);
+  // With the identity the cached circumspheres decide most in-sphere tests without the
+  // exact predicate's filter (the same decisions: Circumsphere.h).
+  if (!m) inserter.cacheSpheres();
   Progress progress("Delaunay 3D", static_cast<double>(points.size()));
   std::size_t done = 0;
   for (const std::uint32_t k : order) {
