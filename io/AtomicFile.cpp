@@ -28,6 +28,11 @@ void AtomicFile::commit() {
   out_.close();
   if (!ok) throw MeshingError(target_ + ": write error (disk full?)");
   std::error_code ec;
+  // An existing file (or link) is removed first: a rename over it makes ext4 (auto_da_alloc)
+  // write the new file's data back before the rename returns (AtomicFile.h).
+  const auto st = std::filesystem::symlink_status(target_, ec);
+  if (!ec && (std::filesystem::is_regular_file(st) || std::filesystem::is_symlink(st)))
+    std::filesystem::remove(target_, ec);  // a failure shows in the rename
   std::filesystem::rename(temp_, target_, ec);
   if (ec) throw MeshingError(target_ + ": cannot rename temporary file: " + ec.message());
   committed_ = true;

@@ -5,10 +5,10 @@
 // "%.17g" (to_chars with chars_format::general and precision 17 is specified as exactly
 // that; the same text as an ostream at setprecision(17)), so every double reads back to
 // the same value.
-// Output is buffered (the stream sees it in blocks of about kFlushBytes): endSection()
-// and flush() hand it to the stream — every section ends with endSection(), and a writer
-// writes to the stream itself only when the buffer is empty (before the first value or
-// after an endSection()); text() writes through the buffer.
+// Output is buffered in a fixed array (the stream sees it in blocks of about kFlushBytes):
+// endSection() and flush() hand it to the stream — every section ends with endSection(),
+// and a writer writes to the stream itself only when the buffer is empty (before the first
+// value or after an endSection()); text() writes through the buffer.
 #include <algorithm>
 #include <charconv>
 #include <cstring>
@@ -27,58 +27,76 @@ class MshOut {
   /// Buffered bytes that trigger a write to the stream at the end of a line.
   static constexpr std::size_t kFlushBytes = std::size_t{1} << 16;
 
-  MshOut(std::ostream& o, bool binary) : o_(o), binary_(binary) { buf_.reserve(kFlushBytes + 512); }
+  MshOut(std::ostream& o, bool binary) : o_(o), binary_(binary), buf_(kFlushBytes + kRoom) {}
   template <class T>
   void value(T v, char sep = ' ') {
     static_assert(std::is_arithmetic_v<T>);
     if (binary_) {
-      buf_.append(reinterpret_cast<const char*>(&v), sizeof(T));
+      std::memcpy(room(sizeof(T)), &v, sizeof(T));
+      pos_ += sizeof(T);
       return;
     }
     ascii(v);
-    buf_.push_back(sep);
+    buf_[pos_++] = sep;
   }
   /// An ASCII number and a newline in either mode (the counts after the MSH 2.2 headers).
   template <class T>
   void asciiLine(T v) {
     ascii(v);
-    buf_.push_back('\n');
+    buf_[pos_++] = '\n';
   }
   void endLine() {
-    if (!binary_) buf_.push_back('\n');
-    if (buf_.size() >= kFlushBytes) flush();
+    if (!binary_) *room(1) = '\n', ++pos_;
+    if (pos_ >= kFlushBytes) flush();
   }
   /// Text as it is (section headers in either mode).
-  void text(std::string_view s) { buf_.append(s); }
+  void text(std::string_view s) {
+    if (s.size() > kRoom) {
+      flush();
+      o_.write(s.data(), static_cast<std::streamsize>(s.size()));
+      return;
+    }
+    std::memcpy(room(s.size()), s.data(), s.size());
+    pos_ += s.size();
+  }
   /// Before an $End... line: binary data ends without a newline. Flushes.
   void endSection(const char* tag) {
-    if (binary_) buf_.push_back('\n');
-    buf_.append(tag);
-    buf_.push_back('\n');
+    if (binary_) *room(1) = '\n', ++pos_;
+    text(tag);
+    *room(1) = '\n', ++pos_;
     flush();
   }
   void flush() {
-    o_.write(buf_.data(), static_cast<std::streamsize>(buf_.size()));
-    buf_.clear();
+    o_.write(buf_.data(), static_cast<std::streamsize>(pos_));
+    pos_ = 0;
   }
   bool binary() const { return binary_; }
 
  private:
+  /// Room for a number and its separator, or a section tag, at the end of the buffer.
+  static constexpr std::size_t kRoom = 512;
+
+  /// Where the next n ≤ kRoom bytes go (flushing first when the buffer lacks them).
+  char* room(std::size_t n) {
+    if (pos_ + n > buf_.size()) flush();
+    return buf_.data() + pos_;
+  }
   template <class T>
   void ascii(T v) {
-    char tmp[40];
+    char* at = room(64);  // the longest number (25 characters) and its separator
     std::to_chars_result r;
     if constexpr (std::is_floating_point_v<T>) {
-      r = std::to_chars(tmp, tmp + sizeof tmp, v, std::chars_format::general, 17);
+      r = std::to_chars(at, at + 63, v, std::chars_format::general, 17);
     } else {
-      r = std::to_chars(tmp, tmp + sizeof tmp, v);
+      r = std::to_chars(at, at + 63, v);
     }
-    buf_.append(tmp, static_cast<std::size_t>(r.ptr - tmp));
+    pos_ += static_cast<std::size_t>(r.ptr - at);
   }
 
   std::ostream& o_;
   bool binary_;
-  std::string buf_;
+  std::vector<char> buf_;
+  std::size_t pos_ = 0;
 };
 
 /// $MeshFormat of `version` ("4.1" or "2.2"), ASCII or binary (with the endianness check),
