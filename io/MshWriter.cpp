@@ -112,8 +112,19 @@ void writeEntities(const OutputMesh& m, MshOut& w,
     bounded(f, faceBox[f], meshedFaces[f], bounding);
   }
   std::vector<Box3> solidBox(model.solids.size());
-  for (int i = 0, n = m.count(Shape::Tet); i < n; ++i)
-    for (int v : m.volume->tets[i]) solidBox[m.volume->tetSolid[i]].add(p[v]);
+  {
+    // Each node once per solid (seen: the last solid it was added to; a node of several
+    // solids is added again when the solid changes — the same box).
+    std::vector<int> seen(m.count(Shape::Tet) > 0 ? p.size() : 0, -1);
+    for (int i = 0, n = m.count(Shape::Tet); i < n; ++i) {
+      const int solid = m.volume->tetSolid[i];
+      for (int v : m.volume->tets[i])
+        if (seen[v] != solid) {
+          seen[v] = solid;
+          solidBox[solid].add(p[v]);
+        }
+    }
+  }
   for (size_t s = 0; s < solidBox.size(); ++s)
     for (int n : byEntity[3][s]) solidBox[s].add(p[n]);
   for (size_t s = 0; s < model.solids.size(); ++s) {
