@@ -77,7 +77,11 @@ VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, cons
       t0 = Clock::now();
       improve3d::VertexRemoval removal(s, vm, &*scores);
       std::vector<del3d::TetId> created, more;
-      st.removed += removal.run(o.removal, created).removed;
+      const improve3d::VertexRemovalStats rs = removal.run(o.removal, created);
+      st.removed += rs.removed;
+      logDebug("vertex removal: " + std::to_string(rs.candidates) + " candidates, " + std::to_string(rs.removed) +
+               " removed (" + std::to_string(rs.byCollapse) + " collapses, " + std::to_string(rs.byDelaunay) +
+               " Delaunay fills, " + std::to_string(rs.byGroup) + " groups)");
       for (const del3d::TetId t : created)
         if (s.mesh.isAlive(t)) flips.visit(t, more);
       st.removalSeconds += since(t0);

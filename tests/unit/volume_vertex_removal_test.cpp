@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "mesher/control/CSAnalytic3d.h"
+#include "mesher/delaunay3d/Inserter.h"
 #include "mesher/volume/improve/VertexRemoval.h"
 #include "volume_refine_fixture.h"
 
@@ -152,4 +153,29 @@ TEST(VertexRemoval, GoodStarIsKeptEvenWhenAsked) {
   EXPECT_FALSE(removal.tryRemove(pv(12), o, created));
   EXPECT_EQ(s.mesh.numTets(), 20u);
   EXPECT_TRUE(checkSolid(s, boundary).empty()) << joined(checkSolid(s, boundary));
+}
+
+TEST(VertexRemoval, CrowdedPairGoesTogether) {
+  // two free points near the box's centre (the refinement's crowding at the defaults):
+  // removed as a group, down to the boundary nodes' 24 tets
+  std::set<Triple> boundary;
+  SolidTetMesh s = boxWithCentre(Vec3(0.5, 0.5, 0.55), boundary);
+  del3d::Inserter ins(s.mesh);
+  ASSERT_EQ(ins.insert(Vec3(0.45, 0.5, 0.3)).status, del3d::InsertStatus::Inserted);
+  s.node.resize(s.mesh.numVertices(), -1);
+  ASSERT_TRUE(checkSolid(s, boundary).empty()) << joined(checkSolid(s, boundary));
+  const std::size_t before = s.mesh.numTets();
+  improve3d::VertexMetrics vm(s.mesh, unitSpace());
+  const double worstBefore = worstEta(s, vm);
+  improve3d::VertexRemoval removal(s, vm);
+  std::vector<TetId> created;
+  const improve3d::VertexRemovalStats st = removal.run({}, created);
+  EXPECT_TRUE(checkSolid(s, boundary).empty()) << joined(checkSolid(s, boundary));
+  EXPECT_EQ(st.removed, 2u);
+  EXPECT_EQ(st.byGroup, 1u);  // one at a time, the second's link is cospherical: no fill
+  EXPECT_LT(worstBefore, 0.8);
+  EXPECT_GT(before, 24u);
+  EXPECT_EQ(s.mesh.numTets(), 24u);
+  EXPECT_NEAR(worstEta(s, vm), 6.0 / 7.0, 1e-9);
+  EXPECT_NEAR(meshVolume(s.mesh), 1.0, 1e-12);
 }

@@ -5,6 +5,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "mesher/core/Error.h"
 #include "mesher/delaunay3d/Delaunay3d.h"
 #include "mesher/predicates/Predicates.h"
 #include "mesher/volume/RegionReplace.h"
@@ -38,6 +39,11 @@ FaceKey faceKey(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
   return k;
 }
 
+/// meanKept's reference, the mesh's mean η_M: exact up to kMeanExactSlots tet slots, above
+/// estimated from every kMeanStride-th slot (deterministic; 1/16 of the cube roots).
+constexpr std::uint32_t kMeanExactSlots = 1u << 16;
+constexpr std::uint32_t kMeanStride = 16;
+
 /// The worst-η_M condition of the flips (QualityFlips): after > before + gain in η_M.
 bool beats(double after, double before, double gain) {
   return after > before && std::cbrt(after) > std::cbrt(before) + gain;
@@ -64,10 +70,18 @@ bool VertexRemoval::guardKept() {
   const bool was = vm_.guardEuclidean();
   vm_.setGuardEuclidean(true);
   double before = 1e300, after = 1e300;
-  for (const Quad& q : starQuads_) before = std::min(before, vm_.score(q));
+  for (const TetId t : star_) before = std::min(before, vm_.score(t));
   for (const Quad& q : best_) after = std::min(after, vm_.score(q));
   vm_.setGuardEuclidean(was);
   return after >= before;
+}
+
+bool VertexRemoval::meanKept() const {
+  double before = 0, after = 0;
+  for (const TetId t : star_) before += std::cbrt(score(t));
+  for (const Quad& q : best_) after += std::cbrt(vm_.score(q));
+  // the mesh's mean η_M does not drop: after − before ≥ mean · (new count − old count)
+  return after - before >= meanEta_ * (static_cast<double>(best_.size()) - static_cast<double>(star_.size()));
 }
 
 bool VertexRemoval::edgesShortEnough(const std::vector<Quad>& tets, double maxLength) const {
@@ -90,16 +104,29 @@ bool VertexRemoval::delaunayFill(VertexId v, std::vector<Quad>& out) {
   opt.spatialSort = false;  // a few tens of points: the input order, deterministic
   opt.transform = vm_.at(v);
   opt.reserve = false;
-  const del3d::DelaunayResult r = del3d::buildDelaunay(scratch_, points_, opt);
+  // The kernel throws MeshingError when it cannot build the enclosing box (a strongly
+  // anisotropic transform over a few points: thin plates at the defaults); then the fill is
+  // tried in space, and failing that there is no fill (not an error of the mesh).
+  del3d::DelaunayResult r;
+  try {
+    r = del3d::buildDelaunay(scratch_, points_, opt);
+  } catch (const MeshingError&) {
+    opt.transform = Mat3::Identity();
+    try {
+      r = del3d::buildDelaunay(scratch_, points_, opt);
+    } catch (const MeshingError&) {
+      return false;
+    }
+  }
   if (r.inserted != link_.size()) return false;
   // scratch vertex -> mesh vertex (box corners: none)
   std::vector<std::uint32_t> toMesh(scratch_.numVertices(), del3d::kNone);
   for (std::size_t i = 0; i < link_.size(); ++i) toMesh[r.vertexOf[i].index] = link_[i].index;
-  std::unordered_map<FaceKey, std::size_t, FaceKeyHash> linkFace;  // link face -> star tet
+  std::unordered_map<FaceKey, std::size_t, FaceKeyHash> linkFace;  // link face -> its index
   std::unordered_set<FaceKey, FaceKeyHash> seen;                   // link faces found, from inside
-  for (std::size_t k = 0; k < starQuads_.size(); ++k) {
-    const Quad& q = starQuads_[k];
-    const int i = vSlot_[k];
+  for (std::size_t k = 0; k < linkFaces_.size(); ++k) {
+    const Quad& q = linkFaces_[k].tet;
+    const int i = linkFaces_[k].slot;
     linkFace[faceKey(q[(i + 1) & 3].index, q[(i + 2) & 3].index, q[(i + 3) & 3].index)] = k;
   }
   std::vector<std::uint32_t> seeds;
@@ -114,8 +141,8 @@ bool VertexRemoval::delaunayFill(VertexId v, std::vector<Quad>& out) {
       const auto it = linkFace.find(faceKey(a, b, c));
       if (it == linkFace.end() || toMesh[tv[i]] == del3d::kNone) continue;
       // inside when the opposite vertex is on v's side of the link face
-      Quad q = starQuads_[it->second];
-      q[vSlot_[it->second]] = VertexId(toMesh[tv[i]]);
+      Quad q = linkFaces_[it->second].tet;
+      q[linkFaces_[it->second].slot] = VertexId(toMesh[tv[i]]);
       if (predicates::orient3d(s_.mesh.coords(q[0]), s_.mesh.coords(q[1]), s_.mesh.coords(q[2]),
                                s_.mesh.coords(q[3])) > 0) {
         seen.insert(it->first);
@@ -150,82 +177,130 @@ bool VertexRemoval::delaunayFill(VertexId v, std::vector<Quad>& out) {
   return true;
 }
 
-bool VertexRemoval::tryRemove(VertexId v, const VertexRemovalOptions& o, std::vector<TetId>& created) {
-  if (s_.isFixed(v)) return false;
-  vertexStar(s_.mesh, v, star_);
-  if (star_.empty() || star_.size() > o.maxStar) return false;
-  double before = 1e300;
-  starQuads_.clear();
-  vSlot_.clear();
+bool VertexRemoval::loadRegion(std::span<const VertexId> remove, std::size_t maxTets) {
+  star_.clear();
+  for (const VertexId v : remove) {
+    vertexStar(s_.mesh, v, scratchStar_);
+    if (scratchStar_.empty()) return false;
+    for (const TetId t : scratchStar_)
+      if (std::find(star_.begin(), star_.end(), t) == star_.end()) star_.push_back(t);
+    if (star_.size() > maxTets) return false;
+  }
+  linkFaces_.clear();
   link_.clear();
   linkEdges_.clear();
   for (const TetId t : star_) {
-    before = std::min(before, score(t));
     const std::uint32_t* tv = s_.mesh.tetVertices(t);
-    starQuads_.push_back({VertexId(tv[0]), VertexId(tv[1]), VertexId(tv[2]), VertexId(tv[3])});
-    int slot = -1;
     for (int i = 0; i < 4; ++i) {
-      if (tv[i] == v.index) {
-        slot = i;
-        continue;
+      const TetId n = s_.mesh.neighbour(t, i);
+      if (n.valid() && std::find(star_.begin(), star_.end(), n) != star_.end()) continue;
+      linkFaces_.push_back({{VertexId(tv[0]), VertexId(tv[1]), VertexId(tv[2]), VertexId(tv[3])}, i});
+      const std::uint32_t f[3] = {tv[del3d::kFaceVertex[i][0]], tv[del3d::kFaceVertex[i][1]], tv[del3d::kFaceVertex[i][2]]};
+      for (int k = 0; k < 3; ++k) {
+        if (std::find(link_.begin(), link_.end(), VertexId(f[k])) == link_.end()) link_.push_back(VertexId(f[k]));
+        linkEdges_.push_back(edgeKey(f[k], f[(k + 1) % 3]));
       }
-      if (std::find(link_.begin(), link_.end(), VertexId(tv[i])) == link_.end()) link_.push_back(VertexId(tv[i]));
-      for (int j = i + 1; j < 4; ++j)
-        if (tv[j] != v.index) linkEdges_.push_back(edgeKey(tv[i], tv[j]));
     }
-    vSlot_.push_back(slot);
   }
-  if (!(before < o.candidateBelow * o.candidateBelow * o.candidateBelow)) return false;
-  std::size_t fixedIncidences = 0;
-  for (const Quad& q : starQuads_)
-    for (const VertexId w : q) fixedIncidences += s_.isFixed(w) ? 1 : 0;
-  if (!(static_cast<double>(fixedIncidences) >= o.heldShare * 3.0 * static_cast<double>(starQuads_.size())))
-    return false;
+  // every removed vertex inside the region (its whole star in it), none on the link
+  for (const VertexId v : remove)
+    if (std::find(link_.begin(), link_.end(), v) != link_.end()) return false;
   std::sort(linkEdges_.begin(), linkEdges_.end());
   linkEdges_.erase(std::unique(linkEdges_.begin(), linkEdges_.end()), linkEdges_.end());
+  return true;
+}
 
-  // the bar: beat the star's worst by the gain
-  const double bar = std::pow(std::cbrt(std::max(before, 0.0)) + o.gain, 3);
-  double bestWorst = bar;
-  bool found = false, byCollapse = false;
-  for (const VertexId w : link_) {
-    trial_.clear();
-    for (std::size_t k = 0; k < starQuads_.size(); ++k) {
-      const Quad& q = starQuads_[k];
-      if (std::find(q.begin(), q.end(), w) != q.end()) continue;
-      Quad n = q;
-      n[vSlot_[k]] = w;
-      trial_.push_back(n);
+bool VertexRemoval::retriangulate(VertexId v, const VertexRemovalOptions& o, bool collapses) {
+  double before = 1e300;
+  for (const TetId t : star_) before = std::min(before, score(t));
+  // the bar: beat the region's worst by the gain
+  double bestWorst = std::pow(std::cbrt(std::max(before, 0.0)) + o.gain, 3);
+  bool found = false;
+  if (collapses)
+    for (const VertexId w : link_) {
+      trial_.clear();
+      for (const LinkFace& f : linkFaces_) {
+        if (std::find(f.tet.begin(), f.tet.end(), w) != f.tet.end()) continue;
+        Quad n = f.tet;
+        n[f.slot] = w;
+        trial_.push_back(n);
+      }
+      const double w3 = worstAbove(trial_, bestWorst);
+      if (w3 > bestWorst && edgesShortEnough(trial_, o.maxNewEdge)) {
+        bestWorst = w3;
+        best_.swap(trial_);
+        found = lastByCollapse_ = true;
+      }
     }
-    const double w3 = worstAbove(trial_, bestWorst);
-    if (w3 > bestWorst && edgesShortEnough(trial_, o.maxNewEdge)) {
-      bestWorst = w3;
-      best_.swap(trial_);
-      found = byCollapse = true;
-    }
-  }
-  if (delaunayFill(v, trial_)) {
+  if (fills_ < maxFills_ && (++fills_, delaunayFill(v, trial_))) {
     const double w3 = worstAbove(trial_, bestWorst);
     if (w3 > bestWorst && edgesShortEnough(trial_, o.maxNewEdge)) {
       bestWorst = w3;
       best_.swap(trial_);
       found = true;
-      byCollapse = false;
+      lastByCollapse_ = false;
     }
   }
-  if (!found || !beats(bestWorst, before, o.gain) || !guardKept()) return false;
+  return found && beats(bestWorst, before, o.gain) && guardKept() && meanKept();
+}
+
+bool VertexRemoval::commit(std::vector<TetId>& created) {
   std::vector<TetId> made;
   if (!volume::replaceRegion(s_.mesh, star_, best_, &made)) return false;
   if (scores_)
     for (const TetId t : made) scores_->update(t);
   created.insert(created.end(), made.begin(), made.end());
-  lastByCollapse_ = byCollapse;
   return true;
+}
+
+void VertexRemoval::refreshMean() {
+  double sum = 0;
+  std::size_t n = 0;
+  const std::uint32_t stride = s_.mesh.tetSlots() > kMeanExactSlots ? kMeanStride : 1;
+  for (std::uint32_t k = 0; k < s_.mesh.tetSlots(); k += stride)
+    if (s_.mesh.isAlive(TetId(k))) sum += std::cbrt(std::max(0.0, score(TetId(k)))), ++n;
+  meanEta_ = n ? sum / static_cast<double>(n) : 0.0;
+}
+
+bool VertexRemoval::tryRemove(VertexId v, const VertexRemovalOptions& o, std::vector<TetId>& created) {
+  if (s_.isFixed(v)) return false;
+  if (meanEta_ < 0) refreshMean();
+  const VertexId one[1] = {v};
+  if (!loadRegion(one, o.maxStar)) return false;
+  double before = 1e300;
+  std::size_t fixedIncidences = 0;
+  for (const TetId t : star_) {
+    before = std::min(before, score(t));
+    for (int i = 0; i < 4; ++i) fixedIncidences += s_.isFixed(s_.mesh.vertex(t, i)) ? 1 : 0;
+  }
+  if (!(before < o.candidateBelow * o.candidateBelow * o.candidateBelow)) return false;
+  if (!(static_cast<double>(fixedIncidences) >= o.heldShare * 3.0 * static_cast<double>(star_.size()))) return false;
+  // v with its few free neighbours first: a crowded group whose points go only together
+  // (removed one at a time, the mean drops on the way, or the last one's link is
+  // cospherical and its Delaunay fill misses link faces); then v alone
+  std::vector<VertexId> group = {v};
+  for (const VertexId w : link_)
+    if (!s_.isFixed(w)) group.push_back(w);
+  if (group.size() >= 2 && group.size() <= o.maxGroup + 1) {
+    if (loadRegion(group, o.maxGroupTets) && retriangulate(v, o, false)) {
+      lastCluster_ = true;
+      removedNow_ = group.size();
+      return commit(created);
+    }
+    if (!loadRegion(one, o.maxStar)) return false;
+  }
+  lastCluster_ = false;
+  removedNow_ = 1;
+  return retriangulate(v, o, true) && commit(created);
 }
 
 VertexRemovalStats VertexRemoval::run(const VertexRemovalOptions& o, std::vector<TetId>& created) {
   VertexRemovalStats st;
   const double key = o.candidateBelow * o.candidateBelow * o.candidateBelow;
+  refreshMean();
+  fills_ = 0;
+  maxFills_ = std::max(o.minFills, s_.mesh.numTets() / o.tetsPerFill);
+  const std::size_t maxCandidates = std::max(o.minCandidates, s_.mesh.numTets() / o.tetsPerCandidate);
   // round 0: the candidates from one scan of the tets (the star's worst score and held
   // share per free vertex, as tryRemove tests them), worst first
   std::vector<std::pair<double, std::uint32_t>> order;
@@ -255,10 +330,11 @@ VertexRemovalStats VertexRemoval::run(const VertexRemovalOptions& o, std::vector
   for (int round = 0; round < o.maxRounds && !order.empty(); ++round) {
     std::size_t removed = 0;
     for (const auto& [w, v] : order) {
+      if (st.candidates >= maxCandidates) break;
       ++st.candidates;
       if (!tryRemove(VertexId(v), o, created)) continue;
-      ++removed;
-      ++(lastByCollapse_ ? st.byCollapse : st.byDelaunay);
+      removed += removedNow_;
+      ++(lastCluster_ ? st.byGroup : lastByCollapse_ ? st.byCollapse : st.byDelaunay);
     }
     st.removed += removed;
     order.clear();
