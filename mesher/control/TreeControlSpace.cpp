@@ -298,6 +298,10 @@ void TreeControlSpace<D>::setContinuous(const MetricFn& source) {
           for (int d = 0; d < D; ++d) local[d] = (k >> d) & 1 ? 0.75 : 0.25;
         const Vec at = tree_.nodeLo(n) + local.cwiseProduct(tree_.nodeSize(n));
         const Metric<D> exact = source(at);
+        // Every vertex of the leaf carries exactly this metric: the field is a convex
+        // combination of equal tensors, equal to it to rounding (difference ~1e-16, far
+        // below ε_δ) — the test below would pass; skipped (a uniform source: most leaves).
+        if (continuousExact_ && leafCarries(n, exact)) continue;
         const Metric<D> interpolated = metricIn(n, local);
         // Fresh: the field must reproduce the source. Valued: only where the source asks for
         // a finer metric than the field gives (where earlier sources were finer, splitting
@@ -316,6 +320,18 @@ void TreeControlSpace<D>::setContinuous(const MetricFn& source) {
   }
   continuous_ = nullptr;
   newLeaves_ = nullptr;
+}
+
+template <int D>
+bool TreeControlSpace<D>::leafCarries(int leaf, const Metric<D>& m) const {
+  for (const int v : tree_.corners(leaf))
+    if (metric_[v].matrix() != m.matrix()) return false;
+  if (tree_.hasExtras(leaf))
+    for (int s = 0; s < Tree::kExtraSlots; ++s) {
+      const int v = tree_.extra(leaf, s);
+      if (v != Tree::kNone && metric_[v].matrix() != m.matrix()) return false;
+    }
+  return true;
 }
 
 template <int D>

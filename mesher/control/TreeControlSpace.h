@@ -136,6 +136,8 @@ class TreeControlSpace {
   Metric<D> metricIn(int leaf, const Vec& local) const;
   Mat auxIn(int leaf, const Vec& local) const;
   double maxEdgeMetricLength(int leaf, const Metric<D>& m, const Mat& aux) const;
+  /// Whether every vertex of the leaf (corners and extras) has exactly the metric m.
+  bool leafCarries(int leaf, const Metric<D>& m) const;
   /// TreeLimits::minLeafMetricLength test with the corners' metrics and `centre`.
   bool belowResolution(int leaf, const Metric<D>& centre) const;
   bool splitLeaf(int leaf);
