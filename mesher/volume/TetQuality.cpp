@@ -257,8 +257,10 @@ void accumulateTetQuality(const SolidTetMesh& s, const ControlSpace3d* cs, TetQu
   std::vector<double> toUser(volume ? nv : 0, 1.0);  // per vertex: M = toUser · M_v
   for (std::size_t v = 0; v < toUser.size(); ++v) {
     const del3d::VertexId id(static_cast<std::uint32_t>(v));
-    // At a surface node M_v is M (VolumeMetricSpace::onBoundary): no query.
-    if (!(s.isFixed(id) && volume->onBoundary(mesh.point(id)))) toUser[v] = volume->lengthFactorAt(mesh.point(id));
+    // At a surface node M_v is M (VolumeMetricSpace::onBoundary); elsewhere the factor from
+    // the held M_v (VolumeMetricSpace::lengthFactorFrom: no query of M).
+    if (!(s.isFixed(id) && volume->onBoundary(mesh.point(id))))
+      toUser[v] = volume->lengthFactorFrom(mesh.point(id), vt->at(id));
   }
   std::vector<std::uint32_t> seen(nv, del3d::kNone);
   StatsBuffer muM(out.muM), muMUser(out.muMUser);

@@ -20,6 +20,11 @@
 namespace aniso {
 namespace {
 
+/// lengthFactorFrom: a point beyond L h_v / f_max (1 − this) of the surface has f_max (where
+/// L h_v / f_max equals the near radius up to rounding, as for M_v = M / f_max everywhere
+/// inside a uniform solid, its factor is f_max to this relative accuracy).
+constexpr double kFactorSlack = 1e-9;
+
 /// The key of no point (NaN bits): an empty slot of VolumeMetricSpace's boundary table.
 constexpr std::array<std::uint64_t, 3> kEmpty = {~std::uint64_t{0}, ~std::uint64_t{0}, ~std::uint64_t{0}};
 
@@ -128,6 +133,22 @@ double VolumeMetricSpace::lengthFactor(const Vec3& x, const Metric3d& m) const {
   if (!surface_->closest(x, radius, c)) return factor_;
   const double t = std::min(1.0, m.length(x - c) / kVolumeTransitionLayers);
   return 1.0 + (factor_ - 1.0) * t;
+}
+
+double VolumeMetricSpace::lengthFactorFrom(const Vec3& x, const Mat3& mv) const {
+  if (!surface_) return onBoundary(x) ? 1.0 : factor_;
+  if (factor_ < 1) return lengthFactorAt(x);
+  const double s = isotropicScale(mv);
+  const double hv = s > 0 ? 1.0 / s : mv.inverse().norm();  // ≥ mv's largest size
+  // A surface point farther than this gives f_max·|mv (x − c)| > L: f = f_max.
+  const double reach = kVolumeTransitionLayers * hv / factor_;
+  if (surface_->beyond(x, reach * (1 - kFactorSlack))) return factor_;
+  if (onBoundary(x)) return 1.0;
+  Vec3 c;
+  if (!surface_->closest(x, reach * (1 + kFactorSlack), c)) return factor_;
+  const double k = (mv * (x - c)).norm() / kVolumeTransitionLayers;
+  if (factor_ * k >= 1) return factor_;
+  return 1.0 / (1.0 - (factor_ - 1.0) * k);
 }
 
 bool VolumeMetricSpace::onBoundary(const Vec3& x) const {

@@ -105,6 +105,16 @@ class VolumeMetricSpace final : public ControlSpace3d {
   /// Lengths in M_v at x times this are lengths in M: 1 at a boundary node, f away from
   /// the surface (graded in between with a surface).
   double lengthFactorAt(const Vec3& x) const { return lengthFactor(x, user_->getMetric(x)); }
+  /// lengthFactorAt(x) to rounding, from mv = M_v(x) (the matrix getMetric(x) returned, held
+  /// by the caller) instead of a query of M: M = f·mv, so the factor solves f = 1 + (f_max −
+  /// 1) min(1, f·|mv (x − c)| / L) (c the closest surface point, L kVolumeTransitionLayers),
+  /// whose one solution is f_max when f_max·|mv (x − c)| ≥ L, else 1 / (1 − (f_max − 1)
+  /// |mv (x − c)| / L); with h_v ≥ mv's largest size, a point farther than L h_v / f_max
+  /// from the surface has f_max (|mv (x − c)| ≥ |x − c| / h_v; to 1e-9 relative where the
+  /// distance and L h_v / f_max are equal up to rounding), a surface node 1. No query of M;
+  /// a distance search (within L h_v / f_max) only near the surface. For the quality
+  /// report's μ_M in M (TetQuality.h). factor < 1: lengthFactorAt.
+  double lengthFactorFrom(const Vec3& x, const Mat3& mv) const;
   bool onBoundary(const Vec3& x) const;
   const ControlSpace3d& user() const { return *user_; }
 

@@ -2,6 +2,7 @@
 // the surface with it (VolumeMetricSpace with a surface, VolumeControlSpace.h).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <random>
@@ -128,3 +129,34 @@ TEST(BoundaryDistance, VolumeMetricGradesFromTheSurface) {
   EXPECT_EQ(step.lengthFactorAt(Vec3(0.5, 0.5, 0.25 * t)), f);
   EXPECT_EQ(step.lengthFactorAt(Vec3(0.3, 0.4, 0.0)), 1.0);
 }
+
+// lengthFactorFrom (the factor from the held M_v, no query of M) equals lengthFactorAt to
+// rounding, near and far from the surface, with an isotropic graded metric (a near grid at
+// the metric's largest size, as the volume mesher builds it) and an anisotropic one.
+TEST(BoundaryDistance, LengthFactorFromHeldTensorEqualsQueried) {
+  std::vector<Vec3> points;
+  std::vector<std::array<int, 3>> triangles;
+  cubeSurface(10, points, triangles);
+  const auto graded = std::make_shared<CSAnalytic3d>(
+      box(), [](const Vec3& x) { return Metric3d::isotropic(0.05 + 0.05 * std::clamp(x.x(), 0.0, 1.0)); });
+  const auto aniso = std::make_shared<CSAnalytic3d>(box(), [](const Vec3&) {
+    return Metric3d::fromDirections(Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), 0.1, 0.06, 0.03);
+  });
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (const auto& user : {std::shared_ptr<const ControlSpace3d>(graded), std::shared_ptr<const ControlSpace3d>(aniso)}) {
+    const VolumeMetricSpace mv(user, points, kVolumeLengthFactor,
+                               std::make_shared<TriangleTree>(points, triangles, 0.1));
+    int near = 0;
+    for (int k = 0; k < 3000; ++k) {
+      Vec3 x(u(rng), u(rng), u(rng));
+      if (k % 3 == 0) x.z() = 0.2 * x.z() * x.z();  // many near the face z = 0
+      const double at = mv.lengthFactorAt(x), from = mv.lengthFactorFrom(x, mv.getMetric(x).matrix());
+      EXPECT_NEAR(from, at, 1e-9 * at) << x.transpose();
+      near += at < kVolumeLengthFactor;
+    }
+    EXPECT_GT(near, 300);  // the graded layer is exercised
+    for (const Vec3& p : points) EXPECT_EQ(mv.lengthFactorFrom(p, mv.getMetric(p).matrix()), 1.0);
+  }
+}
+
