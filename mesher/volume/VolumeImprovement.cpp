@@ -58,7 +58,11 @@ VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, cons
   vm.sync();
   improve3d::VertexMover mover(s, vm);
   std::optional<improve3d::TetScores> scores;  // exact after each pass: the sliver scan reads it
-  for (int pass = 0; pass < o.passes; ++pass) {
+  for (int pass = 0; pass < std::max(o.passes, o.maxPasses); ++pass) {
+    if (pass >= o.passes &&
+        improve3d::sampledMeanEta(s.mesh, [&](del3d::TetId t) { return (*scores)[t]; }) >= o.passTarget)
+      break;
+    ++st.passes;
     auto t0 = Clock::now();
     // every tet measured once; smoothing and flips read and keep this cache
     scores.emplace(s.mesh, vm);

@@ -182,6 +182,7 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
     t0 = Clock::now();
     const VolumeImproveStats is = improveVolume(bt.tets, *cs, {}, &metrics.emplace(bt.tets.mesh, *cs, tensors));
     p.outcome.times.emplace_back("volume improvement", since(t0));
+    p.outcome.counters.emplace_back("improvement_passes", static_cast<double>(is.passes));
     p.outcome.counters.emplace_back("improvement_moved", static_cast<double>(is.moved));
     p.outcome.counters.emplace_back("improvement_flips", static_cast<double>(is.flips23 + is.flips32 + is.flips44));
     p.outcome.counters.emplace_back("improvement_removed", static_cast<double>(is.removed));

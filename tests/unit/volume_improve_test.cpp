@@ -39,6 +39,33 @@ TEST(VolumeImprove, RaisesQualityKeepsBoundaryAndVolume) {
   EXPECT_LE(st.sliversAfter, st.sliversBefore);
 }
 
+TEST(VolumeImprove, PassesContinueWhileTheMeanIsBelowTheTarget) {
+  const CSAnalytic3d cs(unitBox(), [](const Vec3& x) { return Metric3d::isotropic(0.06 + 0.12 * x.z()); });
+  std::set<Triple> boundary;
+  SolidTetMesh one = cubeSolid(8, boundary);
+  refineVolume(one, cs);
+  SolidTetMesh more = one;
+  VolumeImproveOptions o;
+  o.maxPasses = 1;
+  const VolumeImproveStats st1 = improveVolume(one, cs, o);
+  EXPECT_EQ(st1.passes, 1);
+  const double mean1 = measure(one, cs).etaM.mean();
+  ASSERT_LT(mean1, 0.95);
+  o.maxPasses = 3;
+  o.passTarget = 0.95;  // not reached after one pass: more are made
+  const VolumeImproveStats st3 = improveVolume(more, cs, o);
+  EXPECT_GT(st3.passes, 1);
+  EXPECT_LE(st3.passes, 3);
+  ASSERT_TRUE(checkSolid(more, boundary).empty()) << joined(checkSolid(more, boundary));
+  EXPECT_NEAR(meshVolume(more.mesh), 1.0, 1e-12);
+  EXPECT_GT(measure(more, cs).etaM.mean(), mean1);
+  // a target reached after the first pass stops there
+  SolidTetMesh reached = cubeSolid(8, boundary);
+  refineVolume(reached, cs);
+  o.passTarget = 0.5;
+  EXPECT_EQ(improveVolume(reached, cs, o).passes, 1);
+}
+
 TEST(VolumeImprove, SmoothingRepairsADisplacedVertex) {
   std::set<Triple> boundary;
   SolidTetMesh s = cubeSolid(6, boundary);

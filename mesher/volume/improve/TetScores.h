@@ -7,13 +7,32 @@
 // whose vertex's tensor changed (smoothing); the Euclidean guard of VertexMetrics must stay
 // off while it is used (the cached value is the plain metric score). valid() recomputes
 // every live tet and compares, for tests. Slots beyond the built size are added on update.
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "mesher/delaunay3d/TetMesh.h"
 #include "mesher/volume/improve/VertexMetrics.h"
 
 namespace aniso::improve3d {
+
+/// The mean η_M (cube root of the score, negatives as 0) of the live tets of `mesh`, scores
+/// read from `score(TetId)`: exact up to kMeanExactSlots tet slots, above estimated from
+/// every kMeanStride-th slot (deterministic; 1/16 of the cube roots: on the cube at h = 0.02,
+/// 549 k tets, within 1e-4 of the exact mean).
+inline constexpr std::uint32_t kMeanExactSlots = 1u << 16;
+inline constexpr std::uint32_t kMeanStride = 16;
+template <class Score>
+double sampledMeanEta(const del3d::TetMesh& mesh, const Score& score) {
+  const std::uint32_t stride = mesh.tetSlots() > kMeanExactSlots ? kMeanStride : 1;
+  double sum = 0;
+  std::size_t n = 0;
+  for (std::uint32_t k = 0; k < mesh.tetSlots(); k += stride)
+    if (mesh.isAlive(del3d::TetId(k))) sum += std::cbrt(std::max(0.0, score(del3d::TetId(k)))), ++n;
+  return n ? sum / static_cast<double>(n) : 0.0;
+}
 
 class TetScores {
  public:

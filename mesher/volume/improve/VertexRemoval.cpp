@@ -39,11 +39,6 @@ FaceKey faceKey(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
   return k;
 }
 
-/// meanKept's reference, the mesh's mean η_M: exact up to kMeanExactSlots tet slots, above
-/// estimated from every kMeanStride-th slot (deterministic; 1/16 of the cube roots).
-constexpr std::uint32_t kMeanExactSlots = 1u << 16;
-constexpr std::uint32_t kMeanStride = 16;
-
 /// The worst-η_M condition of the flips (QualityFlips): after > before + gain in η_M.
 bool beats(double after, double before, double gain) {
   return after > before && std::cbrt(after) > std::cbrt(before) + gain;
@@ -254,12 +249,7 @@ bool VertexRemoval::commit(std::vector<TetId>& created) {
 }
 
 void VertexRemoval::refreshMean() {
-  double sum = 0;
-  std::size_t n = 0;
-  const std::uint32_t stride = s_.mesh.tetSlots() > kMeanExactSlots ? kMeanStride : 1;
-  for (std::uint32_t k = 0; k < s_.mesh.tetSlots(); k += stride)
-    if (s_.mesh.isAlive(TetId(k))) sum += std::cbrt(std::max(0.0, score(TetId(k)))), ++n;
-  meanEta_ = n ? sum / static_cast<double>(n) : 0.0;
+  meanEta_ = sampledMeanEta(s_.mesh, [&](TetId t) { return score(t); });
 }
 
 bool VertexRemoval::tryRemove(VertexId v, const VertexRemovalOptions& o, std::vector<TetId>& created) {
