@@ -112,6 +112,9 @@ struct HilbertMachine {
   static constexpr int kMaxStates = 96;
   std::uint8_t next[kMaxStates][8];
   std::uint8_t digit[kMaxStates][8];
+  // Two levels per step: raw bits (upper level << 3 | lower level) -> two digits, state.
+  std::uint8_t next2[kMaxStates][64];
+  std::uint8_t digit2[kMaxStates][64];
   int states = 0;
 
   HilbertMachine() {
@@ -146,6 +149,12 @@ struct HilbertMachine {
       }
     }
     states = static_cast<int>(found.size());
+    for (int k = 0; k < states; ++k)
+      for (int raw = 0; raw < 64; ++raw) {
+        const int hi = raw >> 3, lo = raw & 7, mid = next[k][hi];
+        digit2[k][raw] = static_cast<std::uint8_t>((digit[k][hi] << 3) | digit[mid][lo]);
+        next2[k][raw] = next[mid][lo];
+      }
   }
 };
 
@@ -160,10 +169,20 @@ std::uint64_t hilbertIndex(std::uint32_t x, std::uint32_t y, std::uint32_t z, in
   const HilbertMachine& h = hilbertMachine();
   std::uint64_t key = 0;
   int state = 0;
-  for (int b = bits - 1; b >= 0; --b) {
+  int b = bits - 1;
+  if (bits & 1) {  // an odd level first, then two at a time
     const int raw = static_cast<int>(((x >> b) & 1u) | (((y >> b) & 1u) << 1) | (((z >> b) & 1u) << 2));
-    key = (key << 3) | h.digit[state][raw];
+    key = h.digit[state][raw];
     state = h.next[state][raw];
+    --b;
+  }
+  for (; b > 0; b -= 2) {
+    const int hi = static_cast<int>(((x >> b) & 1u) | (((y >> b) & 1u) << 1) | (((z >> b) & 1u) << 2));
+    const int lo =
+        static_cast<int>(((x >> (b - 1)) & 1u) | (((y >> (b - 1)) & 1u) << 1) | (((z >> (b - 1)) & 1u) << 2));
+    const int raw = (hi << 3) | lo;
+    key = (key << 6) | h.digit2[state][raw];
+    state = h.next2[state][raw];
   }
   return key;
 }

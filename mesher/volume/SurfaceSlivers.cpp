@@ -36,6 +36,16 @@ int rank(const NodeOn& on) {
   return on.kind == NodeOn::Kind::Vertex ? 0 : on.kind == NodeOn::Kind::Edge ? 1 : 2;
 }
 
+/// The corner of t with an angle above kCapAngleDeg, or -1.
+int capCorner(const SurfaceMesh& m, const Tri& t) {
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 u = m.nodes[t[(k + 1) % 3]] - m.nodes[t[k]], v = m.nodes[t[(k + 2) % 3]] - m.nodes[t[k]];
+    const double nu = u.norm(), nv = v.norm();
+    if (nu > 0 && nv > 0 && u.dot(v) < kCapCosine * nu * nv) return k;
+  }
+  return -1;
+}
+
 class SliverPass {
  public:
   SliverPass(SurfaceMesh& m, double tolerance, const MidEdgeGeometry* geo, SurfaceSliverStats& stats)
@@ -70,15 +80,7 @@ class SliverPass {
     return (m_.nodes[t[1]] - m_.nodes[t[0]]).cross(m_.nodes[t[2]] - m_.nodes[t[0]]);
   }
 
-  /// The corner of t with an angle above kCapAngleDeg, or -1.
-  int capVertex(const Tri& t) const {
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 u = m_.nodes[t[(k + 1) % 3]] - m_.nodes[t[k]], v = m_.nodes[t[(k + 2) % 3]] - m_.nodes[t[k]];
-      const double nu = u.norm(), nv = v.norm();
-      if (nu > 0 && nv > 0 && u.dot(v) < kCapCosine * nu * nv) return k;
-    }
-    return -1;
-  }
+  int capVertex(const Tri& t) const { return capCorner(m_, t); }
 
   double minAngle(const Tri& t) const {
     double best = 1e300;
@@ -247,6 +249,14 @@ void SliverPass::compact() {
 SurfaceSliverStats mendSurfaceSlivers(SurfaceMesh& mesh, double tolerance, const Model* model) {
   SurfaceSliverStats stats;
   if (!mesh.quads.empty() || !mesh.triangleMid.empty() || !(tolerance > 0)) return stats;
+  // Nothing a pass would act on (no edge within the tolerance, no cap: the common case):
+  // done, without the pass's adjacency and the CAD geometry.
+  const auto actsOn = [&](const Tri& t) {
+    for (int k = 0; k < 3; ++k)
+      if ((mesh.nodes[t[k]] - mesh.nodes[t[(k + 1) % 3]]).norm() <= tolerance) return true;
+    return capCorner(mesh, t) >= 0;
+  };
+  if (std::none_of(mesh.triangles.begin(), mesh.triangles.end(), actsOn)) return stats;
   // the model edges' discretisations it indexes keep their nodes (merged nodes stay in
   // the node array)
   std::optional<MidEdgeGeometry> geo;
@@ -267,17 +277,8 @@ SurfaceSliverStats mendSurfaceSlivers(SurfaceMesh& mesh, double tolerance, const
 }
 
 int countSurfaceCaps(const SurfaceMesh& mesh) {
-  int n = 0;
-  for (const Tri& t : mesh.triangles)
-    for (int k = 0; k < 3; ++k) {
-      const Vec3 u = mesh.nodes[t[(k + 1) % 3]] - mesh.nodes[t[k]], v = mesh.nodes[t[(k + 2) % 3]] - mesh.nodes[t[k]];
-      const double nu = u.norm(), nv = v.norm();
-      if (nu > 0 && nv > 0 && u.dot(v) < kCapCosine * nu * nv) {
-        ++n;
-        break;
-      }
-    }
-  return n;
+  return static_cast<int>(
+      std::count_if(mesh.triangles.begin(), mesh.triangles.end(), [&](const Tri& t) { return capCorner(mesh, t) >= 0; }));
 }
 
 }  // namespace aniso

@@ -41,6 +41,25 @@ bool folded(const SurfaceMesh& m, const Tri& s, const Tri& t) {
 
 std::pair<int, int> key(int a, int b) { return std::minmax(a, b); }
 
+/// FaceTriangles(m, tris).countFolded() without its edge map (most faces have no fold):
+/// the edges' (key, triangle) pairs sorted, each edge of exactly two uses tested in the
+/// same triangle order.
+int countFoldedEdges(const SurfaceMesh& m, const std::vector<Tri>& tris) {
+  std::vector<std::pair<std::pair<int, int>, int>> uses;
+  uses.reserve(3 * tris.size());
+  for (int t = 0; t < static_cast<int>(tris.size()); ++t)
+    for (int k = 0; k < 3; ++k) uses.push_back({key(tris[t][k], tris[t][(k + 1) % 3]), t});
+  std::sort(uses.begin(), uses.end());
+  int n = 0;
+  for (std::size_t i = 0; i < uses.size();) {
+    std::size_t j = i + 1;
+    while (j < uses.size() && uses[j].first == uses[i].first) ++j;
+    if (j - i == 2 && folded(m, tris[uses[i].second], tris[uses[i + 1].second])) ++n;
+    i = j;
+  }
+  return n;
+}
+
 /// The triangles of one face with their edge adjacency.
 class FaceTriangles {
  public:
@@ -204,16 +223,22 @@ UnfoldStats unfoldSurface(SurfaceMesh& mesh) {
   UnfoldStats stats;
   std::map<int, std::vector<int>> byFace;  // triangle indices per face, in order
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) byFace[mesh.triangleFace[t]].push_back(static_cast<int>(t));
-  std::vector<int> useCount(mesh.nodes.size(), 0);
+  // The node use counts and the set of triangles, made at the first folded face (before it
+  // nothing changed: the same as made here).
+  std::vector<int> useCount;
   std::set<Tri> existing;
-  for (const Tri& t : mesh.triangles) {
-    existing.insert(sortedTri(t));
-    for (const int v : t) ++useCount[v];
-  }
   std::map<int, std::vector<Tri>> rebuilt;  // faces whose triangle count changed
   for (const auto& [f, ids] : byFace) {
     std::vector<Tri> tris;
     for (const int t : ids) tris.push_back(mesh.triangles[t]);
+    if (countFoldedEdges(mesh, tris) == 0) continue;  // the common case, without FaceTriangles
+    if (useCount.empty()) {
+      useCount.assign(mesh.nodes.size(), 0);
+      for (const Tri& t : mesh.triangles) {
+        existing.insert(sortedTri(t));
+        for (const int v : t) ++useCount[v];
+      }
+    }
     FaceTriangles ft(mesh, std::move(tris));
     const int before = ft.countFolded();
     stats.foldedBefore += before;
