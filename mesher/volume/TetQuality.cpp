@@ -255,12 +255,14 @@ void accumulateTetQuality(const SolidTetMesh& s, const ControlSpace3d* cs, TetQu
   const std::size_t nv = mesh.numVertices();
   const improve3d::VertexTets incidence(mesh);
   std::vector<double> toUser(volume ? nv : 0, 1.0);  // per vertex: M = toUser · M_v
+  // The tensors held are M_v's when volume is cs (as the volume mesher calls it).
+  const bool heldAreMv = volume && static_cast<const ControlSpace3d*>(volume) == cs;
   for (std::size_t v = 0; v < toUser.size(); ++v) {
     const del3d::VertexId id(static_cast<std::uint32_t>(v));
     // At a surface node M_v is M (VolumeMetricSpace::onBoundary); elsewhere the factor from
     // the held M_v (VolumeMetricSpace::lengthFactorFrom: no query of M).
-    if (!(s.isFixed(id) && volume->onBoundary(mesh.point(id))))
-      toUser[v] = volume->lengthFactorFrom(mesh.point(id), vt->at(id));
+    if (s.isFixed(id) && volume->onBoundary(mesh.point(id))) continue;
+    toUser[v] = heldAreMv ? volume->lengthFactorFrom(mesh.point(id), vt->at(id)) : volume->lengthFactorAt(mesh.point(id));
   }
   std::vector<std::uint32_t> seen(nv, del3d::kNone);
   StatsBuffer muM(out.muM), muMUser(out.muMUser);

@@ -75,7 +75,8 @@ inline constexpr double kSliverDihedralDeg = 5.0;
 /// Adds the live tets of s (and, with cs, their η_M and the μ_M of their unique edges)
 /// to `out`. cs is the metric the tets were made in; with volume (M_v of
 /// VolumeControlSpace.h, usually cs itself) muMUser measures the edges in the user's metric
-/// (each vertex's tensor times volume->lengthFactorAt, the edge in the mean of its ends'),
+/// (each vertex's tensor times its length factor — with volume = cs lengthFactorFrom of the
+/// tensor held, equal to lengthFactorAt to rounding —, the edge in the mean of its ends'),
 /// without it muMUser = muM.
 /// With `metrics` (the improvement's per-vertex tensors of cs, current for every vertex of
 /// s: improveVolume's VertexMetrics) the vertex tensors are read from it instead of being
