@@ -207,6 +207,14 @@ void writeElements(const OutputMesh& m, MshOut& w) {
     w.value<int>(gmshElementType(b.shape, q));
     w.value<std::size_t>(b.elements->size());
     w.endLine();
+    if (b.shape == Shape::Tet && !q) {  // the bulk of a volume mesh: the corners directly
+      for (int e : *b.elements) {
+        w.value<std::size_t>(tag++);
+        for (const int v : m.volume->tets[e]) w.value<std::size_t>(static_cast<std::size_t>(v) + 1);
+        w.endLine();
+      }
+      continue;
+    }
     for (int e : *b.elements) {
       const int k = m.elementNodes(b.shape, e, nodes);
       w.value<std::size_t>(tag++);
