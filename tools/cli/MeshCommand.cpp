@@ -13,6 +13,7 @@
 #include "tools/cli/Commands.h"
 #include "mesher/quad/QuadQuality.h"
 #include "mesher/surface/SurfaceMesher.h"
+#include "mesher/volume/CoarseSolids.h"
 #include "mesher/volume/ThinBoundary.h"
 #include "mesher/volume/VolumeMesher.h"
 #include "tools/cli/VolumeReport.h"
@@ -205,6 +206,35 @@ static int runVolume(const MeshArgs& args, const Model& topo, SurfaceMesherInput
     sr = std::move(finer);
     fillSurfaceReport(sr, report);
   }
+  // a solid still below the quality bar: its surface once more at a finer size, kept when
+  // the whole mesh's mean ratio is better (CoarseSolids.h)
+  int coarseSolids = 0;
+  bool coarseKept = false;
+  if (vr.ok()) {
+    const std::vector<SizingSource> coarse = coarseSolidSources(topo, sr.mesh, vr.solids);
+    coarseSolids = static_cast<int>(coarse.size());
+    if (!coarse.empty()) {
+      const auto tr = Clock::now();
+      UserSizing finerSizing = sizing;
+      finerSizing.sources.insert(finerSizing.sources.end(), coarse.begin(), coarse.end());
+      sin.user = &finerSizing;
+      SurfaceMeshResult finer = meshSurfaces(sin);
+      if (finer.ok()) {
+        VolumeMesherInput fin = vin;
+        fin.surface = &finer.mesh;
+        fin.stopWhenThin = false;
+        VolumeMeshResult fvr = meshVolumes(fin);
+        if (fvr.ok() && fvr.quality.meanRatio.mean() > vr.quality.meanRatio.mean()) {
+          vr = std::move(fvr);
+          sr = std::move(finer);
+          fillSurfaceReport(sr, report);
+          coarseKept = true;
+        }
+      }
+      proximitySeconds += seconds(tr, Clock::now());
+    }
+  }
+  report.extra["coarse_solids"] = {{"solids", coarseSolids}, {"refined_kept", coarseKept}};
   report.extra["proximity"] = {{"rounds", rounds},
                                {"faces_refined", facesRefined},
                                {"thin_triangles_left", vr.thin.size()},

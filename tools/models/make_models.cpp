@@ -187,6 +187,10 @@ TopoDS_Shape makeCylinder() { return cylinder(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1), 
 // y = 0, y = 10, z = 0, z = 10: FACE1 is the clamped end, FACE2 the loaded end.
 TopoDS_Shape makeCantilever() { return box(0, 0, 0, 100, 10, 10); }
 
+// Bar 30 x 10 x 10: at the defaults (h = half the diagonal, 16.6) one or two segments per
+// edge and square faces of two triangles — the coarse surface of CoarseSolids.h.
+TopoDS_Shape makeBar3() { return box(0, 0, 0, 30, 10, 10); }
+
 // ---------------------------------------------------------------- XCAF / STEP
 
 Handle(TDocStd_Document) newDoc() {
@@ -390,6 +394,7 @@ int main(int argc, char** argv) {
     writeSinglePart(makePlate(), "PLATE", out / "plate.step");
     writeSinglePart(makeCylinder(), "CYLINDER", out / "cylinder.step");
     writeSinglePart(makeCantilever(), "CANTILEVER", out / "cantilever.step");
+    writeSinglePart(makeBar3(), "BAR3", out / "bar3.step");
     return 0;
   } catch (const Standard_Failure& e) {
     std::cerr << "make_models: OCCT exception: " << e.GetMessageString() << "\n";

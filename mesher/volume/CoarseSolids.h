@@ -1,0 +1,31 @@
+#pragma once
+// coarseSolidSources — the quality side of alg. 3.3's outer loop (thesis 3.5.2: the volume
+// sends faces back to the surface mesher when they are too coarse for it). The proximity
+// loop (ThinBoundary.h) catches solids thinner than their triangles; a solid whose surface
+// is so coarse that its faces have one or two triangles per side is not thin, yet no
+// tetrahedralisation of that surface reaches the quality bar: two unit cubes sharing a face
+// at the defaults (h = 1.22) get square faces of two right triangles each, and the best
+// fill, a point at each cube's centre, has mean ratio 0.762 (four triangles per face, as
+// box.brep gets, allow 0.905). For every solid whose tets' referee mean ratio is below
+// kCoarseMeanRatio, a box source over its boundary (grown by the mean edge length L of its
+// boundary triangles) asks for the isotropic size kCoarseRefine · L; the caller meshes the
+// surface and the volumes again once and keeps the result with the better mean ratio.
+#include <vector>
+
+#include "mesher/model/Model.h"
+#include "mesher/sizing/UserSizing.h"
+#include "mesher/surface/SurfaceMesh.h"
+#include "mesher/volume/VolumeMesher.h"
+
+namespace aniso {
+
+/// A solid whose tets' mean ratio (Euclidean η, the referee's) is below this is coarse.
+inline constexpr double kCoarseMeanRatio = 0.80;
+/// Its surface is asked for this times its mean boundary edge length.
+inline constexpr double kCoarseRefine = 0.6;
+
+/// One box source per coarse solid of `solids` (indexed as model.solids); empty when none.
+std::vector<SizingSource> coarseSolidSources(const Model& model, const SurfaceMesh& surface,
+                                             const std::vector<SolidOutcome>& solids);
+
+}  // namespace aniso
