@@ -7,7 +7,10 @@
 // at the defaults (h = 1.22) get square faces of two right triangles each, and the best
 // fill, a point at each cube's centre, has mean ratio 0.762 (four triangles per face, as
 // box.brep gets, allow 0.905). For every solid whose tets' referee mean ratio is below
-// kCoarseMeanRatio, a box source over its boundary (grown by the mean edge length L of its
+// kCoarseMeanRatio and whose surface is coarse — at most kCoarseTrianglesPerFace triangles
+// per face on average (a solid meshed finely but still poor, like the thin skins of
+// simple_plane at the defaults, 9 k tets at 0.77, is the proximity loop's: refined here
+// its boxes doubled the whole mesh) —, a box source over its boundary (grown by the mean edge length L of its
 // boundary triangles) asks for the isotropic size kCoarseRefine · L; the caller meshes the
 // surface and the volumes again once and keeps the result with the better mean ratio.
 #include <vector>
@@ -21,6 +24,8 @@ namespace aniso {
 
 /// A solid whose tets' mean ratio (Euclidean η, the referee's) is below this is coarse.
 inline constexpr double kCoarseMeanRatio = 0.80;
+/// Coarse: at most this many boundary triangles per face of the solid, on average.
+inline constexpr double kCoarseTrianglesPerFace = 16;
 /// Its surface is asked for this times its mean boundary edge length.
 inline constexpr double kCoarseRefine = 0.6;
 

@@ -10,7 +10,7 @@ using namespace aniso::testing;
 
 TEST(CoarseSolids, OneBoxSourcePerSolidBelowTheBar) {
   std::set<Triple> boundary;
-  const SolidTetMesh s = cubeSolid(2, boundary);
+  const SolidTetMesh s = cubeSolid(2, boundary);  // 8 triangles per face: coarse
   const CubeSurface c = cubeSurface(s, boundary);
   double length = 0;
   std::size_t edges = 0;
@@ -37,6 +37,17 @@ TEST(CoarseSolids, OneBoxSourcePerSolidBelowTheBar) {
   solids[0].quality.meanRatio.add(0.95);
   solids[0].quality.meanRatio.add(0.95);  // mean 0.85: not coarse
   EXPECT_TRUE(coarseSolidSources(c.model, c.surface, solids).empty());
+  // a solid meshed finely (more than kCoarseTrianglesPerFace triangles per face) is not
+  // coarse, whatever its quality
+  {
+    std::set<Triple> fineBoundary;
+    const SolidTetMesh fine = cubeSolid(6, fineBoundary);
+    const CubeSurface cf = cubeSurface(fine, fineBoundary);
+    ASSERT_GT(cf.surface.triangles.size(), 6 * kCoarseTrianglesPerFace);
+    std::vector<SolidOutcome> poor(1);
+    poor[0].quality.meanRatio.add(0.5);
+    EXPECT_TRUE(coarseSolidSources(cf.model, cf.surface, poor).empty());
+  }
   solids[0] = SolidOutcome{};
   solids[0].status = SolidOutcome::Status::Failed;  // a failed solid is not asked for
   solids[0].quality.meanRatio.add(0.5);
