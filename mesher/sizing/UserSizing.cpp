@@ -32,7 +32,12 @@ Metric2d restrictToSurface(const Metric3d& m3, const Vec3& pu, const Vec3& pv, c
   j.col(1) = pv;
   const Mat2 mpInv = mp.inverse();
   const Eigen::Matrix<double, 3, 2> mj = m3.matrix() * j * mpInv;
-  return Metric2d::fromTensor(mj.transpose() * mj);
+  Mat2 t = mj.transpose() * mj;
+  // where J is nearly singular (a parametric direction of almost no length in space: a
+  // pole, a collapsed edge) the tensor's small eigenvalue is below the rounding of the large
+  // one; the floor keeps it positive (and leaves any other tensor unchanged to 1e-10)
+  t += (kRestrictedTensorFloor * t.trace()) * Mat2::Identity();
+  return Metric2d::fromTensor(t);
 }
 
 }  // namespace aniso

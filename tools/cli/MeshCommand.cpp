@@ -8,6 +8,7 @@
 #include "io/Report.h"
 #include "io/SizingFile.h"
 #include "mesher/core/Error.h"
+#include "mesher/core/Log.h"
 #include "mesher/core/FileExtension.h"
 #include "mesher/highorder/Order2.h"
 #include "tools/cli/Commands.h"
@@ -218,18 +219,23 @@ static int runVolume(const MeshArgs& args, const Model& topo, SurfaceMesherInput
       UserSizing finerSizing = sizing;
       finerSizing.sources.insert(finerSizing.sources.end(), coarse.begin(), coarse.end());
       sin.user = &finerSizing;
-      SurfaceMeshResult finer = meshSurfaces(sin);
-      if (finer.ok()) {
-        VolumeMesherInput fin = vin;
-        fin.surface = &finer.mesh;
-        fin.stopWhenThin = false;
-        VolumeMeshResult fvr = meshVolumes(fin);
-        if (fvr.ok() && fvr.quality.meanRatio.mean() > vr.quality.meanRatio.mean()) {
-          vr = std::move(fvr);
-          sr = std::move(finer);
-          fillSurfaceReport(sr, report);
-          coarseKept = true;
+      // a retry that fails (by status or by an error) leaves the first result
+      try {
+        SurfaceMeshResult finer = meshSurfaces(sin);
+        if (finer.ok()) {
+          VolumeMesherInput fin = vin;
+          fin.surface = &finer.mesh;
+          fin.stopWhenThin = false;
+          VolumeMeshResult fvr = meshVolumes(fin);
+          if (fvr.ok() && fvr.quality.meanRatio.mean() > vr.quality.meanRatio.mean()) {
+            vr = std::move(fvr);
+            sr = std::move(finer);
+            fillSurfaceReport(sr, report);
+            coarseKept = true;
+          }
         }
+      } catch (const MeshingError& e) {
+        logWarning(std::string("coarse solids: the finer surface failed (") + e.what() + "); the first mesh is kept");
       }
       proximitySeconds += seconds(tr, Clock::now());
     }
