@@ -95,18 +95,19 @@ if tier == "fast":  # one element across at the defaults (h = half the diagonal)
         print(f"ok box.brep at the defaults: {q['tets']} tets, eta avg {q['eta_avg']}, dihedral min "
               f"{q['dihedral_min']}", flush=True)
 
-if tier == "fast":  # a coarse solid (CoarseSolids.h): the project's bar 30 x 10 x 10 at the defaults
-    bar = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "models", "bar3.step")
-    out, rep = os.path.join(t, "bar3.msh"), os.path.join(t, "bar3.json")
+if tier == "fast":  # coarse solids (CoarseSolids.h): the project's two 10 mm cubes at the defaults
+    bar = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "models", "blocks2.step")
+    out, rep = os.path.join(t, "blocks2.msh"), os.path.join(t, "blocks2.json")
     p = subprocess.run([cli, "mesh", bar, "-o", out, "--dim", "3", "--report", rep], capture_output=True, text=True)
     q = meshq.stats(out) if p.returncode == 0 else {}
     cs = json.load(open(rep)).get("coarse_solids", {}) if p.returncode == 0 else {}
     if (p.returncode != 0 or q.get("eta_avg", 0) < 0.80 or q.get("dihedral_min", 0) < 2.0 or q.get("inverted")
-            or abs(q.get("volume", 0) - 3000.0) > 1e-6 * 3000 or cs.get("solids") != 1 or cs.get("refined_kept") is not True):
-        failed.append(f"bar3.step at the defaults: exit {p.returncode}, {q}, coarse_solids {cs}")
+            or abs(q.get("volume", 0) - 2000.0) > 1e-6 * 2000 or cs.get("solids") != 2 or cs.get("refined_kept") is not True
+            or regions(out) != 2):
+        failed.append(f"blocks2.step at the defaults: exit {p.returncode}, {q}, coarse_solids {cs}")
     else:
         passed += 1
-        print(f"ok bar3.step at the defaults (coarse retry kept): {q['tets']} tets, eta avg {q['eta_avg']}", flush=True)
+        print(f"ok blocks2.step at the defaults (coarse retry kept): {q['tets']} tets, eta avg {q['eta_avg']}", flush=True)
 
 for f in failed: print("FAIL", f)
 print(f"volume meshing ({tier}): {passed} passed, {len(failed)} failed")

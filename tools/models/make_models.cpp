@@ -187,9 +187,6 @@ TopoDS_Shape makeCylinder() { return cylinder(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1), 
 // y = 0, y = 10, z = 0, z = 10: FACE1 is the clamped end, FACE2 the loaded end.
 TopoDS_Shape makeCantilever() { return box(0, 0, 0, 100, 10, 10); }
 
-// Bar 30 x 10 x 10: at the defaults (h = half the diagonal, 16.6) one or two segments per
-// edge and square faces of two triangles — the coarse surface of CoarseSolids.h.
-TopoDS_Shape makeBar3() { return box(0, 0, 0, 30, 10, 10); }
 
 // ---------------------------------------------------------------- XCAF / STEP
 
@@ -239,6 +236,29 @@ void writeSinglePart(const TopoDS_Shape& s, const char* name, const std::filesys
   writeStep(doc, path);
 }
 
+// An assembly of two components (each its own part with its shape at the origin, placed by
+// the component's location), checked for two solids, written as STEP.
+void writeTwoParts(const std::filesystem::path& path, const char* assemblyName, const TopoDS_Shape& a,
+                   const char* nameA, const TopLoc_Location& locA, const TopoDS_Shape& b, const char* nameB,
+                   const TopLoc_Location& locB) {
+  Handle(TDocStd_Document) doc = newDoc();
+  Handle(XCAFDoc_ShapeTool) st = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
+  TDF_Label assy = st->NewShape();
+  setName(assy, assemblyName);
+  TDF_Label lA = st->AddShape(a, Standard_False);
+  TDF_Label lB = st->AddShape(b, Standard_False);
+  setName(lA, nameA);
+  setName(lB, nameB);
+  TDF_Label cA = st->AddComponent(assy, lA, locA);
+  TDF_Label cB = st->AddComponent(assy, lB, locB);
+  if (cA.IsNull() || cB.IsNull()) fail(std::string(assemblyName) + ": cannot add components");
+  setName(cA, nameA);
+  setName(cB, nameB);
+  st->UpdateAssemblies();
+  checkShape(st->GetShape(assy), assemblyName, 2);
+  writeStep(doc, path);
+}
+
 // Two-part assembly: BLOCK (20 x 20 x 10) sits centred on BASE (40 x 40 x 10).
 // BLOCK's bottom face (20 x 20) lies entirely inside BASE's top face (40 x 40).
 // Each part is defined at the origin; the components place them.
@@ -261,23 +281,20 @@ void writeAssembly2(const std::filesystem::path& path) {
     if (std::abs(z0 - 10.0) > 1e-3) fail("assembly2: BLOCK does not sit on BASE");
   }
 
-  Handle(TDocStd_Document) doc = newDoc();
-  Handle(XCAFDoc_ShapeTool) st = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
-  TDF_Label assy = st->NewShape();
-  setName(assy, "ASSEMBLY2");
-  TDF_Label lBase = st->AddShape(base, Standard_False);
-  TDF_Label lBlock = st->AddShape(block, Standard_False);
-  setName(lBase, "BASE");
-  setName(lBlock, "BLOCK");
-  TDF_Label cBase = st->AddComponent(assy, lBase, TopLoc_Location());
-  TDF_Label cBlock = st->AddComponent(assy, lBlock, TopLoc_Location(tBlock));
-  if (cBase.IsNull() || cBlock.IsNull()) fail("assembly2: cannot add components");
-  setName(cBase, "BASE");
-  setName(cBlock, "BLOCK");
-  st->UpdateAssemblies();
+  writeTwoParts(path, "ASSEMBLY2", base, "BASE", TopLoc_Location(), block, "BLOCK", TopLoc_Location(tBlock));
+}
 
-  checkShape(st->GetShape(assy), "assembly2", 2);
-  writeStep(doc, path);
+// Two cubes 10 x 10 x 10 side by side along x, sharing the face x = 10 (two parts of one
+// shape, placed by their components): at the defaults (h = half the diagonal, 12.2) each
+// square face is two triangles, the coarse surface of mesher/volume/CoarseSolids.h.
+void writeBlocks2(const std::filesystem::path& path) {
+  // two shapes (one would be one part for XCAF)
+  TopoDS_Shape left = box(0, 0, 0, 10, 10, 10), right = box(0, 0, 0, 10, 10, 10);
+  checkShape(left, "LEFT", 1);
+  checkShape(right, "RIGHT", 1);
+  gp_Trsf shift;
+  shift.SetTranslation(gp_Vec(10, 0, 0));
+  writeTwoParts(path, "BLOCKS2", left, "LEFT", TopLoc_Location(), right, "RIGHT", TopLoc_Location(shift));
 }
 
 // ---------------------------------------------------------------- --check
@@ -394,7 +411,7 @@ int main(int argc, char** argv) {
     writeSinglePart(makePlate(), "PLATE", out / "plate.step");
     writeSinglePart(makeCylinder(), "CYLINDER", out / "cylinder.step");
     writeSinglePart(makeCantilever(), "CANTILEVER", out / "cantilever.step");
-    writeSinglePart(makeBar3(), "BAR3", out / "bar3.step");
+    writeBlocks2(out / "blocks2.step");
     return 0;
   } catch (const Standard_Failure& e) {
     std::cerr << "make_models: OCCT exception: " << e.GetMessageString() << "\n";
