@@ -17,24 +17,21 @@ std::vector<SizingSource> coarseSolidSources(const Model& model, const SurfaceMe
       if (sh >= 0 && sh < static_cast<int>(model.shells.size()))
         for (const FaceUse& u : model.shells[sh].faces)
           if (u.face >= 0 && u.face < static_cast<int>(ofSolid.size())) ofSolid[u.face] = 1;
-    std::size_t faces = 0, triangles = 0;
-    for (const std::uint8_t f : ofSolid) faces += f;
-    for (std::size_t t = 0; t < surface.triangles.size(); ++t) triangles += ofSolid[surface.triangleFace[t]];
-    if (faces == 0 || static_cast<double>(triangles) > kCoarseTrianglesPerFace * static_cast<double>(faces)) continue;
     Box3 box;
     double length = 0;
-    std::size_t edges = 0;
+    std::size_t faces = 0, triangles = 0;
+    for (const std::uint8_t f : ofSolid) faces += f;
     for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
       if (!ofSolid[surface.triangleFace[t]]) continue;
+      ++triangles;
       const auto& tri = surface.triangles[t];
       for (int k = 0; k < 3; ++k) {
         box.add(surface.nodes[tri[k]]);
         length += (surface.nodes[tri[(k + 1) % 3]] - surface.nodes[tri[k]]).norm();
-        ++edges;
       }
     }
-    if (edges == 0) continue;
-    length /= static_cast<double>(edges);
+    if (triangles == 0 || static_cast<double>(triangles) > kCoarseTrianglesPerFace * static_cast<double>(faces)) continue;
+    length /= static_cast<double>(3 * triangles);
     SizingSource src;
     src.kind = SizingSource::Kind::Box;
     src.a = box.lo - Vec3::Constant(length);

@@ -17,10 +17,6 @@ namespace {
 using del3d::VertexId;
 constexpr int kEdges[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
 
-/// The flip condition: worst η_M after > worst η_M before + gain, on scores.
-bool beats(double after, double before, double gain) {
-  return after > before && std::cbrt(after) > std::cbrt(before) + gain;  // cube roots only when needed
-}
 }  // namespace
 
 /// Worst score (η_M³) over tets given as ids (cached when there is a cache) or as vertex
@@ -92,11 +88,11 @@ bool QualityFlips::tryFace(del3d::TetId t, int i, std::vector<del3d::TetId>& cre
     // (f0, f1, f2, d) is positive; the new tets replace one f by e.
     const double before = std::min(score(t), score(u));
     const std::array<Quad, 3> next{Quad{f[0], f[1], e, d}, Quad{f[1], f[2], e, d}, Quad{f[2], f[0], e, d}};
-    if (!beats(worstAbove(vm_, next, before, false), before, gain_)) return false;
+    if (!beatsWorst(worstAbove(vm_, next, before, false), before, gain_)) return false;
   }
   del3d::Flip23Plan plan;
   if (!del3d::canFlip23(s_.mesh, t, i, &plan)) return false;
-  if (!(beats(worst(plan.newTets), worst(plan.oldTets), gain_))) return false;
+  if (!(beatsWorst(worst(plan.newTets), worst(plan.oldTets), gain_))) return false;
   this->created(del3d::flip23(s_.mesh, plan), created);
   ++counts_.f23;
   return true;
@@ -111,10 +107,10 @@ bool QualityFlips::tryEdge(del3d::TetId t, int i, int j, std::vector<del3d::TetI
   if (n == 3) {
     const double before = worst(std::span<const del3d::TetId>(ring.data(), 3));
     const std::array<Quad, 2> next{Quad{apex[0], apex[1], apex[2], a}, Quad{apex[0], apex[1], apex[2], b}};
-    if (!beats(worstAbove(vm_, next, before, true), before, gain_)) return false;
+    if (!beatsWorst(worstAbove(vm_, next, before, true), before, gain_)) return false;
     del3d::Flip32Plan plan;
     if (!del3d::canFlip32(s_.mesh, t, i, j, &plan)) return false;
-    if (!(beats(worst(plan.newTets), worst(plan.oldTets), gain_))) return false;
+    if (!(beatsWorst(worst(plan.newTets), worst(plan.oldTets), gain_))) return false;
     this->created(del3d::flip32(s_.mesh, plan), created);
     ++counts_.f32;
     return true;
@@ -127,11 +123,11 @@ bool QualityFlips::tryEdge(del3d::TetId t, int i, int j, std::vector<del3d::TetI
   for (int diag = 0; diag < 2; ++diag) {
     const VertexId p = apex[diag], q = apex[diag + 1], r = apex[diag + 2], w = apex[(diag + 3) % 4];
     const std::array<Quad, 4> next{Quad{a, p, q, r}, Quad{b, p, q, r}, Quad{a, p, r, w}, Quad{b, p, r, w}};
-    if (!beats(worstAbove(vm_, next, before, true), before, gain_)) continue;
+    if (!beatsWorst(worstAbove(vm_, next, before, true), before, gain_)) continue;
     del3d::Flip44Plan plan;
     if (!del3d::canFlip44(s_.mesh, t, i, j, diag, &plan)) continue;
     const double after = worst(plan.newTets);
-    if (after > bestAfter && beats(after, before, gain_)) bestAfter = after, best = plan, found = true;
+    if (after > bestAfter && beatsWorst(after, before, gain_)) bestAfter = after, best = plan, found = true;
   }
   if (!found) return false;
   this->created(del3d::flip44(s_.mesh, best), created);

@@ -34,6 +34,13 @@ double sampledMeanEta(const del3d::TetMesh& mesh, const Score& score) {
   return n ? sum / static_cast<double>(n) : 0.0;
 }
 
+/// The worst-score condition of the improvement's local changes (flips, vertex removal):
+/// the worst score after (η_M³) beats the worst before by `gain` in η_M (cube roots only
+/// when the order alone does not decide).
+inline bool beatsWorst(double after, double before, double gain) {
+  return after > before && std::cbrt(after) > std::cbrt(before) + gain;
+}
+
 class TetScores {
  public:
   TetScores(const del3d::TetMesh& mesh, const VertexMetrics& vm);

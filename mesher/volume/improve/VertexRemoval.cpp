@@ -39,10 +39,6 @@ FaceKey faceKey(std::uint32_t a, std::uint32_t b, std::uint32_t c) {
   return k;
 }
 
-/// The worst-η_M condition of the flips (QualityFlips): after > before + gain in η_M.
-bool beats(double after, double before, double gain) {
-  return after > before && std::cbrt(after) > std::cbrt(before) + gain;
-}
 
 }  // namespace
 
@@ -236,7 +232,7 @@ bool VertexRemoval::retriangulate(VertexId v, const VertexRemovalOptions& o, boo
       lastByCollapse_ = false;
     }
   }
-  return found && beats(bestWorst, before, o.gain) && guardKept() && meanKept();
+  return found && beatsWorst(bestWorst, before, o.gain) && guardKept() && meanKept();
 }
 
 bool VertexRemoval::commit(std::vector<TetId>& created) {
