@@ -2,15 +2,6 @@
 
 namespace aniso::io {
 
-const char* statusName(RunStatus s) {
-  switch (s) {
-    case RunStatus::Ok: return "ok";
-    case RunStatus::Degraded: return "degraded";
-    case RunStatus::Failed: return "failed";
-  }
-  return "failed";
-}
-
 nlohmann::ordered_json Report::toJson() const {
   nlohmann::ordered_json j;
   j["status"] = statusName(status);
@@ -22,9 +13,21 @@ nlohmann::ordered_json Report::toJson() const {
   for (const auto& [phase, s] : times) t[phase] = s;
   j["times"] = t;
   j["quality"] = quality;
-  nlohmann::ordered_json f = nlohmann::ordered_json::array();
-  for (const Failure& x : failures) f.push_back({{"entity", x.entity}, {"what", x.what}});
+  nlohmann::ordered_json f = nlohmann::ordered_json::array(), all = nlohmann::ordered_json::array();
+  for (const Problem& p : problems) {
+    if (p.severity == Severity::Failed) f.push_back({{"entity", entityName(p.entity)}, {"what", p.detail}});
+    nlohmann::ordered_json q = {{"entity", entityName(p.entity)},
+                                {"kind", entityKindName(p.entity.kind)},
+                                {"id", p.entity.id},
+                                {"severity", severityName(p.severity)},
+                                {"code", p.code},
+                                {"detail", p.detail},
+                                {"phase", p.where}};
+    if (!p.entity.part.empty()) q["part"] = p.entity.part;
+    all.push_back(std::move(q));
+  }
   j["failures"] = f;
+  j["problems"] = all;
   for (const auto& [k, v] : extra.items()) j[k] = v;
   return j;
 }

@@ -1,23 +1,23 @@
 #pragma once
-// The run report (--report FILE.json), the contract of issue 2 §3:
+// The run report (--report FILE.json):
 // {"status": "ok"|"degraded"|"failed", "input", "options",
 //  "counts": {"nodes", "triangles", "quads", "tetrahedra"},
 //  "times": {"total", <one entry per phase>}, "quality": {...},
-//  "failures": [{"entity": "face 12", "what": ...}]}
+//  "failures": [{"entity": "face 12", "what": ...}],          the problems of severity failed
+//  "problems": [{"entity", "kind", "id", "part", "severity", "code", "detail", "phase"}], all of them
+//  ...further sections (model, surface, proximity, ...)}
+// The status follows mesher/core/Problem.h's grading policy.
 #include <nlohmann/json.hpp>
 
 #include <string>
 #include <vector>
 
+#include "mesher/core/Problem.h"
+
 namespace aniso::io {
 
-enum class RunStatus { Ok, Degraded, Failed };
-const char* statusName(RunStatus s);
-
-struct Failure {
-  std::string entity;  ///< "face 12", "edge 7", "solid 3", "model"
-  std::string what;
-};
+using aniso::RunStatus;
+using aniso::statusName;
 
 struct Report {
   RunStatus status = RunStatus::Failed;
@@ -28,7 +28,7 @@ struct Report {
   std::vector<std::pair<std::string, double>> times;
   double totalSeconds = 0;
   nlohmann::ordered_json quality = nlohmann::ordered_json::object();
-  std::vector<Failure> failures;
+  std::vector<Problem> problems;
   /// Further sections (e.g. "model": the prepared model's summary, "warnings").
   nlohmann::ordered_json extra = nlohmann::ordered_json::object();
 

@@ -40,23 +40,34 @@ class Validator {
     if (!(scale_ > 0) || !std::isfinite(scale_)) scale_ = 1;
   }
 
-  std::vector<std::string> run() {
-    for (size_t i = 0; i < m_.edges.size(); ++i) checkEdge(static_cast<int>(i));
-    for (size_t i = 0; i < m_.faces.size(); ++i) checkFace(static_cast<int>(i));
-    for (size_t i = 0; i < m_.shells.size(); ++i) checkShell(static_cast<int>(i));
-    for (size_t i = 0; i < m_.solids.size(); ++i) checkSolid(static_cast<int>(i));
+  std::vector<ModelIssue> run() {
+    for (size_t i = 0; i < m_.edges.size(); ++i) at(EntityKind::Edge, i), checkEdge(static_cast<int>(i));
+    for (size_t i = 0; i < m_.faces.size(); ++i) at(EntityKind::Face, i), checkFace(static_cast<int>(i));
+    for (size_t i = 0; i < m_.shells.size(); ++i) at(EntityKind::Shell, i), checkShell(static_cast<int>(i));
+    for (size_t i = 0; i < m_.solids.size(); ++i) at(EntityKind::Solid, i), checkSolid(static_cast<int>(i));
     return std::move(out_);
   }
 
  private:
   const Model& m_;
   double scale_ = 1;
-  std::vector<std::string> out_;
+  std::vector<ModelIssue> out_;
+  EntityKind kind_ = EntityKind::Model;
+  int index_ = -1;
+
+  void at(EntityKind k, size_t i) {
+    kind_ = k;
+    index_ = static_cast<int>(i);
+  }
 
   template <class V>
   static bool inRange(int i, const V& v) { return i >= 0 && static_cast<size_t>(i) < v.size(); }
 
-  void problem(const std::string& s) { out_.push_back(s); }
+  /// A problem of the entity being checked: Unusable unless said otherwise.
+  void problem(const std::string& s, ModelIssue::Level level = ModelIssue::Level::Unusable) {
+    out_.push_back({kind_, index_, level, s});
+  }
+  void defect(const std::string& s, ModelIssue::Level level = ModelIssue::Level::Defect) { problem(s, level); }
 
   double tolerance(std::initializer_list<double> tols) const {
     double t = 0;
@@ -84,7 +95,7 @@ class Validator {
       ++perFace[pc.face];
       if (!pc.curve) { problem(pname + ": no curve"); continue; }
       if (std::find(ed.faces.begin(), ed.faces.end(), pc.face) == ed.faces.end())
-        problem(pname + ": face " + std::to_string(pc.face + 1) + " is not listed among the edge's faces");
+        defect(pname + ": face " + std::to_string(pc.face + 1) + " is not listed among the edge's faces");
       const ModelFace& f = m_.faces[pc.face];
       if (verticesOk && f.surface)
         checkEnds(pname + " on face " + std::to_string(pc.face + 1), ed,
@@ -110,8 +121,8 @@ class Validator {
   void checkEnds(const std::string& what, const ModelEdge& ed, const Vec3& a, const Vec3& b, double tol) {
     const double t0 = tolerance({tol, vertexTol(ed.v0)}), t1 = tolerance({tol, vertexTol(ed.v1)});
     const double d0 = (a - m_.vertices[ed.v0].p).norm(), d1 = (b - m_.vertices[ed.v1].p).norm();
-    if (!(d0 <= t0)) problem(what + ": start is " + fmt(d0) + " from vertex " + std::to_string(ed.v0 + 1));
-    if (!(d1 <= t1)) problem(what + ": end is " + fmt(d1) + " from vertex " + std::to_string(ed.v1 + 1));
+    if (!(d0 <= t0)) defect(what + ": start is " + fmt(d0) + " from vertex " + std::to_string(ed.v0 + 1));
+    if (!(d1 <= t1)) defect(what + ": end is " + fmt(d1) + " from vertex " + std::to_string(ed.v1 + 1));
   }
 
   /// The pcurve of a use when all references are valid for face f, else null.
@@ -123,7 +134,7 @@ class Validator {
     const PCurve& pc = ed.pcurves[u.pcurve];
     if (pc.face != f) { problem(name + ": pcurve " + std::to_string(u.pcurve + 1) + " of " + en + " is not on this face"); return nullptr; }
     if (std::find(ed.faces.begin(), ed.faces.end(), f) == ed.faces.end())
-      problem(name + ": " + en + " does not list this face");
+      defect(name + ": " + en + " does not list this face");
     return pc.curve ? &pc : nullptr;
   }
 
@@ -135,7 +146,7 @@ class Validator {
     for (size_t l = 0; l < face.loops.size(); ++l) {
       const Loop& loop = face.loops[l];
       const std::string lname = name + " loop " + std::to_string(l + 1);
-      if (loop.outer != (l == 0)) problem(lname + (l == 0 ? ": the first loop is not the outer one" : ": a second outer loop"));
+      if (loop.outer != (l == 0)) defect(lname + (l == 0 ? ": the first loop is not the outer one" : ": a second outer loop"));
       if (loop.uses.empty()) { problem(lname + ": empty"); continue; }
       std::vector<const PCurve*> pcs;
       for (size_t k = 0; k < loop.uses.size(); ++k)
@@ -163,14 +174,21 @@ class Validator {
     const Vec2 ub = pb->curve->point(b.reversed ? pb->t1 : pb->t0);
     const SurfaceDomain dom = face.surface->domain();
     const Vec2 ext = uvExtent(face, dom);
-    const Vec2 gap = (ub - ua).cwiseAbs();
-    const Vec3 sa = face.surface->point(ua), sb = face.surface->point(ub), sm = face.surface->point(0.5 * (ua + ub));
+    // On a periodic surface a jump by whole periods is no gap (the face mesher moves each
+    // use next to the previous one, contour/PeriodicUv.h).
+    Vec2 d = ub - ua;
+    if (dom.uPeriodic && dom.u1 > dom.u0) d.x() = std::remainder(d.x(), dom.u1 - dom.u0);
+    if (dom.vPeriodic && dom.v1 > dom.v0) d.y() = std::remainder(d.y(), dom.v1 - dom.v0);
+    const Vec2 ubn = ua + d;
+    const Vec2 gap = d.cwiseAbs();
+    const Vec3 sa = face.surface->point(ua), sb = face.surface->point(ubn), sm = face.surface->point(0.5 * (ua + ubn));
     const double d3 = std::max({(sb - sa).norm(), (sm - sa).norm(), (sb - sm).norm()});
     const double tol = tolerance({ea.tolerance, eb.tolerance, face.tolerance, vertexTol(va)});
     const bool uvOk = gap.x() <= kUvGapRatio * ext.x() && gap.y() <= kUvGapRatio * ext.y();
     if (!(d3 <= tol) || !uvOk)
-      problem(name + ": open by (" + fmt(gap.x()) + ", " + fmt(gap.y()) + ") in (u,v), " + fmt(d3) +
-              " in 3D (tolerance " + fmt(tol) + ")");
+      defect(name + ": open by (" + fmt(gap.x()) + ", " + fmt(gap.y()) + ") in (u,v), " + fmt(d3) +
+                 " in 3D (tolerance " + fmt(tol) + ")",
+             d3 <= tol ? ModelIssue::Level::Defect : ModelIssue::Level::Gap);
   }
 
   static Vec2 uvExtent(const ModelFace& face, const SurfaceDomain& dom) {
@@ -196,7 +214,7 @@ class Validator {
     for (const auto& [e, n] : uses) {
       const ModelEdge& ed = m_.edges[e];
       if (ed.degenerate || ed.seam || n == 2) continue;
-      problem(name + ": closed, but edge " + std::to_string(e + 1) + " is used " + std::to_string(n) + " times");
+      defect(name + ": closed, but edge " + std::to_string(e + 1) + " is used " + std::to_string(n) + " times");
     }
   }
 
@@ -211,6 +229,12 @@ class Validator {
 
 }  // namespace
 
-std::vector<std::string> Model::validate() const { return Validator(*this).run(); }
+std::vector<ModelIssue> Model::check() const { return Validator(*this).run(); }
+
+std::vector<std::string> Model::validate() const {
+  std::vector<std::string> out;
+  for (ModelIssue& i : check()) out.push_back(std::move(i.message));
+  return out;
+}
 
 }  // namespace aniso

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "mesher/core/Problem.h"
 #include "mesher/core/Types.h"
 #include "mesher/geometry/ParametricCurve2d.h"
 #include "mesher/geometry/ParametricCurve3d.h"
@@ -83,6 +84,20 @@ struct ModelSolid {
   std::vector<int> voidShells; ///< inner shells bounding cavities
 };
 
+/// One finding of Model::check(), on the entity (kind, 0-based index) it concerns.
+struct ModelIssue {
+  enum class Level {
+    Defect,    ///< inconsistent but usable within the CAD tolerance (a loop closing only
+               ///< within tolerance or in 3D, a shell flagged closed with a non-manifold edge)
+    Gap,       ///< usable, but a loop is open beyond the CAD tolerance: meshed across the gap
+    Unusable,  ///< the entity cannot be meshed (missing geometry or references)
+  };
+  EntityKind kind = EntityKind::Model;
+  int index = -1;
+  Level level = Level::Unusable;
+  std::string message;  ///< names the entity by its 1-based id
+};
+
 struct Model {
   std::vector<ModelVertex> vertices;
   std::vector<ModelEdge> edges;
@@ -96,8 +111,11 @@ struct Model {
   double diagonal() const { return bbox.diagonal(); }
 
   /// Structural checks: references in range, every loop closed in parametric space within
-  /// tolerance, pcurves present for every (edge, face) use. Returns one message per
-  /// problem, each naming the entity by its 1-based id; empty when valid.
+  /// tolerance (jumps by whole periods of a periodic surface allowed), pcurves present for
+  /// every (edge, face) use. One issue per problem, graded by what the mesher can still do
+  /// with the entity; empty when valid.
+  std::vector<ModelIssue> check() const;
+  /// check()'s messages, each naming the entity by its 1-based id.
   std::vector<std::string> validate() const;
 };
 

@@ -289,14 +289,18 @@ std::vector<EdgeDiscretization> discretizeEdges(const Model& model,
   std::vector<double> length(ne, 0.0);
   for (int e = 0; e < ne; ++e) {
     if (!used[e]) continue;
-    const ModelEdge& ed = model.edges[e];
-    checkVertex(model, ed.v0, e);
-    checkVertex(model, ed.v1, e);
-    if (ed.degenerate ? ed.v0 != ed.v1 : !ed.curve)
-      throw MeshingError(edgeName(e) + (ed.degenerate ? ": degenerate edge with two vertices" : ": no 3D curve"));
-    arcOf[e] = static_cast<int>(arcs.size());
-    arcs.push_back(edgeArcLength(model, e, faceSpaces));
-    length[e] = arcs.back().total();
+    try {
+      const ModelEdge& ed = model.edges[e];
+      checkVertex(model, ed.v0, e);
+      checkVertex(model, ed.v1, e);
+      if (ed.degenerate ? ed.v0 != ed.v1 : !ed.curve)
+        throw MeshingError(edgeName(e) + (ed.degenerate ? ": degenerate edge with two vertices" : ": no 3D curve"));
+      arcOf[e] = static_cast<int>(arcs.size());
+      arcs.push_back(edgeArcLength(model, e, faceSpaces));
+      length[e] = arcs.back().total();
+    } catch (const MeshingError& err) {
+      throw EntityError(EntityKind::Edge, e, err.what());
+    }
   }
   const std::vector<int> n = segmentCounts(model, faceSpaces, used, length, options);
 
@@ -318,8 +322,14 @@ std::vector<EdgeDiscretization> discretizeEdges(const Model& model,
     if (used[e]) params[e] = arcs[arcOf[e]].equalSpacing(n[e]);
   if (options.evenSegments) contour::matchCuspNodes(model, faceSpaces, params);
   std::vector<EdgeDiscretization> out(ne);
-  for (int e = 0; e < ne; ++e)
-    if (used[e]) out[e] = placeNodes(model, e, std::move(params[e]), vertexNodes, mesh);
+  for (int e = 0; e < ne; ++e) {
+    if (!used[e]) continue;
+    try {
+      out[e] = placeNodes(model, e, std::move(params[e]), vertexNodes, mesh);
+    } catch (const MeshingError& err) {
+      throw EntityError(EntityKind::Edge, e, err.what());
+    }
+  }
   return out;
 }
 

@@ -48,9 +48,9 @@ struct ContourOptions {
 /// Vertex nodes are created first (one per model vertex used, in vertex order), then the
 /// inner nodes of every edge (edge order, increasing t; 3D point from the edge's curve,
 /// NodeOn Edge with t). Returns one entry per model edge, empty for edges not discretized.
-/// Throws MeshingError naming the edge when its geometry or metric cannot be evaluated
-/// (no pcurve on a meshed face, empty parameter range, non-finite metric), and for a
-/// faceSpaces of the wrong size.
+/// Throws EntityError (kind Edge, its index) naming the edge when its geometry or metric
+/// cannot be evaluated (no pcurve on a meshed face, empty parameter range, non-finite
+/// metric), and MeshingError for a faceSpaces of the wrong size.
 std::vector<EdgeDiscretization> discretizeEdges(const Model& model,
                                                 const std::vector<const ControlSpace2d*>& faceSpaces,
                                                 const ContourOptions& options, SurfaceMesh& mesh);
@@ -63,7 +63,8 @@ std::vector<EdgeDiscretization> discretizeEdges(const Model& model,
 /// face's uvBounds (outer loop) or the outer loop (holes). Throws MeshingError naming the
 /// face and loop when an edge of the face was not discretized, when consecutive uses do
 /// not share their vertex, or when a junction (the closing one included) stays open in
-/// (u, v) by more than 1% of the face's parametric extent.
+/// (u, v) by more than 1% of the face's parametric extent (10% when the two ends are one
+/// point in 3D within the CAD tolerance).
 FaceBoundary faceBoundary(const Model& model, int face, const std::vector<EdgeDiscretization>& edges,
                           const SurfaceMesh& mesh);
 

@@ -104,11 +104,12 @@ void runPipeline(const face::FlatBoundary& flat, const ControlSpace2d& cs, const
 
 FaceMeshResult meshFace(const FaceBoundary& boundary, const ControlSpace2d& cs, const FaceMesherOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  const face::FlatBoundary flat = face::flattenBoundary(boundary);  // throws for invalid input
   FaceMeshResult res;
-  res.stats.boundaryNodes = static_cast<int>(flat.size());
-  const std::string prefix = "face " + std::to_string(boundary.face) + ": ";
+  // Problems name no entity: they are the face's own (FaceMeshResult::problems).
+  const std::string prefix;
   try {
+    const face::FlatBoundary flat = face::flattenBoundary(boundary);  // throws for invalid input
+    res.stats.boundaryNodes = static_cast<int>(flat.size());
     runPipeline(flat, cs, options, prefix, res);
   } catch (const std::runtime_error& e) {  // MeshingError / InputError from the control space or kernel
     res.problems.push_back(prefix + e.what());

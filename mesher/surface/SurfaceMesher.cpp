@@ -24,7 +24,10 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-bool faceMeshed(const Model& m, int f) { return !m.faces[f].loops.empty(); }
+bool faceMeshed(const SurfaceMesherInput& in, int f) {
+  if (!in.skipFaces.empty() && in.skipFaces[static_cast<std::size_t>(f)]) return false;
+  return !in.model->faces[static_cast<std::size_t>(f)].loops.empty();
+}
 
 /// Removes pairs of triangles of one face that have the same three nodes with opposite
 /// orientations, from index `first` on. They arise where a face's parametric mesh folds
@@ -77,6 +80,30 @@ int cancelFoldedPairs(SurfaceMesh& mesh, std::size_t first) {
   return removed;
 }
 
+/// discretizeEdges; an edge that cannot be discretized takes its faces out of the run (their
+/// control spaces set to null, the edge's error among their problems), then the others are
+/// discretized again: at most once per face.
+std::vector<EdgeDiscretization> discretizeEdgesLeavingOut(const Model& model, std::vector<const ControlSpace2d*>& cs,
+                                                          const ContourOptions& copt, SurfaceMesh& trial,
+                                                          std::vector<FaceOutcome>& outcomes) {
+  for (std::size_t attempt = 0;; ++attempt) {
+    try {
+      trial = SurfaceMesh{};
+      return discretizeEdges(model, cs, copt, trial);
+    } catch (const EntityError& e) {
+      if (e.kind() != EntityKind::Edge || attempt >= model.faces.size()) throw;
+      bool removed = false;
+      for (const int f : model.edges[static_cast<std::size_t>(e.index())].faces) {
+        if (!cs[static_cast<std::size_t>(f)]) continue;
+        cs[static_cast<std::size_t>(f)] = nullptr;
+        outcomes[static_cast<std::size_t>(f)].problems.push_back(e.what());
+        removed = true;
+      }
+      if (!removed) throw;
+    }
+  }
+}
+
 }  // namespace
 
 bool SurfaceMeshResult::ok() const {
@@ -93,7 +120,7 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
   auto t = Clock::now();
   std::vector<std::unique_ptr<CSQuadtree2d>> spaces(nf);
   parallelFor(nf, in.options.threads, [&](int f) {
-    if (!faceMeshed(model, f)) return;
+    if (!faceMeshed(in, f)) return;
     FaceSizingInput fin;
     fin.model = &model;
     fin.face = f;
@@ -126,9 +153,16 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
   std::vector<FaceBoundary> boundaries(nf);
   for (int round = 0;; ++round) {
     SurfaceMesh trial;
-    edges = discretizeEdges(model, cs, copt, trial);
-    for (int f = 0; f < nf; ++f)
-      if (cs[f]) boundaries[f] = faceBoundary(model, f, edges, trial);
+    edges = discretizeEdgesLeavingOut(model, cs, copt, trial, r.faces);
+    for (int f = 0; f < nf; ++f) {
+      if (!cs[f]) continue;
+      try {
+        boundaries[f] = faceBoundary(model, f, edges, trial);
+      } catch (const MeshingError& e) {  // this face only: left out, the others go on
+        r.faces[f].problems.push_back(e.what());
+        cs[f] = nullptr;
+      }
+    }
     std::atomic<int> updates{0};
     if (round < kRounds) {
       parallelFor(nf, in.options.threads, [&](int f) {

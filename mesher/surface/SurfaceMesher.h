@@ -27,6 +27,9 @@ struct SurfaceMesherInput {
   const ControlSpace2d* analytic = nullptr;  ///< user 2D sizing (single-face analytic models)
   const UserSizing* user = nullptr;          ///< user 3D sources
   FaceMesherOptions face;
+  /// Faces not to mesh (empty, or one flag per face): faces whose CAD topology could not be
+  /// used (the caller reports why). Their edges are still discretized for their neighbours.
+  std::vector<char> skipFaces;
 };
 
 /// Quality in metric space (thesis 2.5) of one face or of the whole mesh: η_M, μ_M and
@@ -58,7 +61,8 @@ struct SurfaceMeshResult {
 };
 
 /// Throws MeshingError only for errors that stop everything (e.g. an edge that cannot be
-/// discretized); a face that fails is reported in faces[f].problems and left unmeshed.
+/// discretized); a face that fails (its boundary loops cannot be chained in (u, v), or its
+/// mesher fails) is reported in faces[f].problems and left unmeshed.
 SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in);
 
 }  // namespace aniso

@@ -43,12 +43,13 @@ struct SolidPiece {
   std::vector<ThinSpot> thin;
 };
 
-void fail(SolidPiece& p, const std::string& entity, const std::string& what) {
+void fail(SolidPiece& p, const EntityRef& entity, const std::string& what) {
   p.outcome.status = SolidOutcome::Status::Failed;
-  p.outcome.problems.push_back({entity, what});
+  p.outcome.problems.push_back({entity, Severity::Failed, "solid-mesh", what, "volume"});
 }
 
 std::string solidName(int s) { return "solid " + std::to_string(s + 1); }
+EntityRef solidRef(int s) { return EntityRef::solid(s); }
 
 /// The CAD edge (0-based) all the given surface nodes lie on, or -1.
 int commonEdge(const SurfaceMesh& surface, const std::vector<int>& nodes) {
@@ -64,14 +65,14 @@ int commonEdge(const SurfaceMesh& surface, const std::vector<int>& nodes) {
 /// Missing entities grouped by face (or by CAD edge when the entity lies on one): one
 /// problem per group with the count and an example.
 void reportLeft(SolidPiece& p, int solid, const SurfaceMesh& surface, const std::vector<RecoveryFailure>& left) {
-  std::map<std::string, std::pair<int, std::string>> byFace;
+  std::map<std::pair<int, int>, std::pair<int, std::string>> byFace;  // (kind: 0 edge, 1 face; index)
   for (const RecoveryFailure& f : left) {
     const int edge = commonEdge(surface, f.nodes);
-    auto& e = byFace[edge >= 0 ? "edge " + std::to_string(edge + 1) : "face " + std::to_string(f.face + 1)];
+    auto& e = byFace[edge >= 0 ? std::make_pair(0, edge) : std::make_pair(1, f.face)];
     if (e.first++ == 0) e.second = f.what;
   }
-  for (const auto& [face, e] : byFace)
-    fail(p, face,
+  for (const auto& [key, e] : byFace)
+    fail(p, key.first == 0 ? EntityRef::edge(key.second) : EntityRef::face(key.second),
          std::to_string(e.first) + " boundary edges/triangles not recovered in the tetrahedra of " + solidName(solid) +
              " (e.g. " + e.second + ")");
 }
@@ -114,25 +115,55 @@ bool validated(SolidPiece& p, const VolumeMesherInput& in, const SolidTetMesh& s
                const char* phase) {
   if (!in.validate) return true;
   for (const std::string& problem : validateSolidTetMesh(s, b.triangles))
-    fail(p, solidName(s.solid), std::string("after ") + phase + ": " + problem);
+    fail(p, solidRef(s.solid), std::string("after ") + phase + ": " + problem);
   return p.outcome.status == SolidOutcome::Status::Ok;
+}
+
+/// The faces of the solid's shells that have no surface mesh (a face the surface mesher
+/// left out: its own problem says why).
+std::vector<int> unmeshedFaces(const Model& model, const std::vector<std::vector<int>>& faceTriangles, int solid) {
+  std::vector<int> out;
+  const ModelSolid& so = model.solids[static_cast<std::size_t>(solid)];
+  std::vector<int> shells = so.voidShells;
+  shells.push_back(so.outerShell);
+  for (const int sh : shells) {
+    if (sh < 0 || static_cast<std::size_t>(sh) >= model.shells.size()) continue;
+    for (const FaceUse& fu : model.shells[static_cast<std::size_t>(sh)].faces)
+      if (fu.face >= 0 && static_cast<std::size_t>(fu.face) < faceTriangles.size() &&
+          faceTriangles[static_cast<std::size_t>(fu.face)].empty())
+        out.push_back(fu.face);
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
 }
 
 SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<int>>& faceTriangles, int solid) {
   SolidPiece p;
   auto t0 = Clock::now();
+  if (const std::vector<int> gone = unmeshedFaces(*in.model, faceTriangles, solid); !gone.empty()) {
+    std::string list;
+    for (std::size_t k = 0; k < gone.size() && k < 5; ++k) list += (k ? ", " : "") + std::to_string(gone[k] + 1);
+    if (gone.size() > 5) list += ", ...";
+    p.outcome.status = SolidOutcome::Status::Failed;
+    p.outcome.problems.push_back({solidRef(solid), Severity::Failed, "face-unmeshed",
+                                  "left without tetrahedra: its boundary is open where face" + std::string(gone.size() > 1 ? "s " : " ") +
+                                      list + " could not be meshed",
+                                  "volume"});
+    return p;
+  }
   const BoundaryMesh b = buildBoundaryMesh(*in.model, *in.surface, faceTriangles, solid);
   for (const int f : b.internalFaces)
     logWarning(solidName(solid) + ": face " + std::to_string(f + 1) + " lies inside the solid; it is not kept as a boundary");
   const std::vector<std::string> broken = checkBoundaryMesh(b, *in.surface);
   p.outcome.times.emplace_back("volume boundary", since(t0));
-  for (const std::string& s : broken) fail(p, solidName(solid), "surface mesh bug: " + s);
+  for (const std::string& s : broken) fail(p, solidRef(solid), "surface mesh bug: " + s);
   if (!broken.empty()) return p;
 
   t0 = Clock::now();
   BoundaryTriangulation bt = triangulateBoundary(*in.surface, b);
   p.outcome.times.emplace_back("volume triangulation", since(t0));
-  for (const std::string& s : bt.problems) fail(p, solidName(solid), s);
+  for (const std::string& s : bt.problems) fail(p, solidRef(solid), s);
   if (!bt.problems.empty()) return p;
 
   t0 = Clock::now();
@@ -148,7 +179,7 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
   t0 = Clock::now();
   const std::vector<std::string> carved = carveSolid(bt.tets, bt.boundary, bt.box);
   p.outcome.times.emplace_back("volume carving", since(t0));
-  for (const std::string& s : carved) fail(p, solidName(solid), s);
+  for (const std::string& s : carved) fail(p, solidRef(solid), s);
   if (!carved.empty() || !validated(p, in, bt.tets, b, "boundary recovery")) return p;
   p.thin = findThinBoundary(bt.tets, b.triangles, b.triangleFace);
   if (in.stopWhenThin && !p.thin.empty()) return p;
@@ -262,8 +293,14 @@ std::vector<int> mendSlivers(const Model& model, const MeshOptions& options, Sur
 
 }  // namespace
 
+bool SolidOutcome::leftOutBySurface() const {
+  return status == Status::Failed && !problems.empty() &&
+         std::all_of(problems.begin(), problems.end(), [](const Problem& p) { return p.code == "face-unmeshed"; });
+}
+
 bool VolumeMeshResult::ok() const {
-  return std::all_of(solids.begin(), solids.end(), [](const SolidOutcome& s) { return s.status == SolidOutcome::Status::Ok; });
+  return std::all_of(solids.begin(), solids.end(),
+                     [](const SolidOutcome& s) { return s.status == SolidOutcome::Status::Ok || s.leftOutBySurface(); });
 }
 
 VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {

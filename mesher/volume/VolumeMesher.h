@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "mesher/core/MeshOptions.h"
+#include "mesher/core/Problem.h"
 #include "mesher/model/Model.h"
 #include "mesher/sizing/UserSizing.h"
 #include "mesher/surface/SurfaceMesh.h"
@@ -70,10 +71,9 @@ struct VolumeMesherInput {
 /// Geometric tolerance of the surface sliver mending (SurfaceSlivers.h), times h_min.
 inline constexpr double kSurfaceSliverTolerance = 0.1;
 
-struct VolumeProblem {
-  std::string entity;  ///< "solid 3", "face 12"
-  std::string what;
-};
+/// A solid's problems name the solid, or the face or CAD edge where recovery failed, by
+/// 1-based id (mesher/core/Problem.h); severity Failed (the solid has no tetrahedra).
+using VolumeProblem = Problem;
 
 struct SolidOutcome {
   enum class Status { Ok, Failed } status = Status::Ok;
@@ -85,6 +85,9 @@ struct SolidOutcome {
   std::vector<std::pair<std::string, double>> times;  ///< phase -> seconds
   std::vector<std::pair<std::string, double>> counters;  ///< phase statistics (refinement, improvement)
   TetQualitySummary quality;   ///< Euclidean and metric quality of the solid's tetrahedra
+  /// Failed only because a face of its boundary has no surface mesh (problem code
+  /// "face-unmeshed"): the surface's shortcoming, not the volume mesher's.
+  bool leftOutBySurface() const;
 };
 
 struct VolumeMeshResult {
@@ -101,6 +104,7 @@ struct VolumeMeshResult {
   std::vector<ThinSpot> thin;
   TetQualitySummary quality;                          ///< over all solids
   std::vector<std::pair<std::string, double>> times;  ///< phase -> seconds summed over the solids
+  /// Every solid meshed, or left out only because the surface left out one of its faces.
   bool ok() const;
 };
 

@@ -24,7 +24,7 @@ std::string joined(const std::vector<std::string>& v) {
 std::string problems(const VolumeMeshResult& r) {
   std::string s;
   for (const SolidOutcome& o : r.solids)
-    for (const VolumeProblem& p : o.problems) s += p.entity + ": " + p.what + "\n";
+    for (const VolumeProblem& p : o.problems) s += entityName(p.entity) + ": " + p.detail + "\n";
   return s;
 }
 

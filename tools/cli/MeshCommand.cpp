@@ -71,12 +71,92 @@ void writeReport(const MeshArgs& a, const io::Report& r) {
   r.status = io::RunStatus::Failed;
   r.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   writeReport(a, r);
-  throw MeshingError(a.file + ": " + r.failures.front().entity + ": " + r.failures.front().what);
+  const Problem* p = firstOf(r.problems, Severity::Failed);
+  if (!p) p = firstOf(r.problems, Severity::Degraded);
+  throw MeshingError(a.file + ": " + (p ? entityLabel(p->entity) + ": " + p->detail : std::string("nothing could be meshed")));
+}
+
+/// The run's grade from its problems (mesher/core/Problem.h) once a mesh is written; a
+/// degraded run says so on the terminal, naming the first shortcomings.
+void finishRun(const MeshArgs& a, io::Report& r, std::chrono::steady_clock::time_point t0) {
+  r.status = gradeRun(r.problems, true);
+  r.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  writeReport(a, r);
+  if (r.status != io::RunStatus::Degraded) return;
+  int failed = 0, degraded = 0;
+  for (const Problem& p : r.problems) {
+    failed += p.severity == Severity::Failed;
+    degraded += p.severity == Severity::Degraded;
+  }
+  std::string text = a.file + ": the mesh is degraded: ";
+  if (failed) text += std::to_string(failed) + " entit" + (failed == 1 ? "y" : "ies") + " left out";
+  if (failed && degraded) text += ", ";
+  if (degraded) text += std::to_string(degraded) + " meshed with shortcomings";
+  const Problem* p = firstOf(r.problems, Severity::Failed);
+  if (!p) p = firstOf(r.problems, Severity::Degraded);
+  text += "; first: " + entityLabel(p->entity) + ": " + p->detail;
+  if (a.report.empty()) text += " (--report FILE.json lists them all)";
+  else text += " (all in " + a.report + ")";
+  logWarning(text);
+}
+
+/// The name of the first solid whose shells use each face ("" for a face of no solid).
+std::vector<std::string> facePartNames(const Model& m) {
+  std::vector<std::string> out(m.faces.size());
+  for (const ModelSolid& so : m.solids) {
+    std::vector<int> shells = so.voidShells;
+    shells.push_back(so.outerShell);
+    for (const int sh : shells) {
+      if (sh < 0 || static_cast<std::size_t>(sh) >= m.shells.size()) continue;
+      for (const FaceUse& fu : m.shells[static_cast<std::size_t>(sh)].faces)
+        if (fu.face >= 0 && static_cast<std::size_t>(fu.face) < out.size() && out[static_cast<std::size_t>(fu.face)].empty())
+          out[static_cast<std::size_t>(fu.face)] = so.name;
+    }
+  }
+  return out;
+}
+
+/// Model::check() as problems of the run, and the faces that cannot be meshed at all (an
+/// unusable face, or a face of an unusable edge). Throws MeshingError when a solid or shell
+/// is unusable: nothing sensible could be meshed.
+std::vector<char> gradeModel(const MeshArgs& a, const Model& topo, io::Report& report,
+                             std::chrono::steady_clock::time_point t0) {
+  const std::vector<std::string> parts = facePartNames(topo);
+  std::vector<char> skip(topo.faces.size(), 0);
+  bool fatal = false;
+  for (const ModelIssue& i : topo.check()) {
+    // the message names its entity; the problem's detail is the rest of it
+    const std::size_t colon = i.message.find(": ");
+    const std::string detail = colon == std::string::npos ? i.message : i.message.substr(colon + 2);
+    EntityRef ref{i.kind, i.index + 1, {}};
+    if (i.kind == EntityKind::Face) ref.part = parts[static_cast<std::size_t>(i.index)];
+    Problem p{ref, Severity::Note, "cad-defect", detail, "model"};
+    if (i.level == ModelIssue::Level::Gap) {
+      p.severity = Severity::Degraded;
+      p.code = "loop-gap";
+      p.detail += "; meshed across the gap";
+    } else if (i.level == ModelIssue::Level::Unusable) {
+      p.severity = Severity::Failed;
+      p.code = "cad-unusable";
+      if (i.kind == EntityKind::Face) skip[static_cast<std::size_t>(i.index)] = 1;
+      else if (i.kind == EntityKind::Edge)
+        for (const int f : topo.edges[static_cast<std::size_t>(i.index)].faces) skip[static_cast<std::size_t>(f)] = 1;
+      else fatal = true;
+    }
+    report.problems.push_back(std::move(p));
+  }
+  if (fatal || std::all_of(skip.begin(), skip.end(), [](char c) { return c != 0; })) {
+    const Problem* p = firstOf(report.problems, Severity::Failed);
+    report.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    writeReport(a, report);
+    throw MeshingError(a.file + ": invalid model topology: " + entityLabel(p->entity) + ": " + p->detail);
+  }
+  return skip;
 }
 
 }  // namespace
 
-static void fillSurfaceReport(const SurfaceMeshResult& sr, io::Report& report) {
+static void fillSurfaceReport(const Model& topo, const SurfaceMeshResult& sr, io::Report& report) {
   report.nodes = static_cast<long long>(sr.mesh.nodes.size());
   report.triangles = static_cast<long long>(sr.mesh.triangles.size());
   auto stats = [](const QualityStats& s) {
@@ -93,7 +173,18 @@ static void fillSurfaceReport(const SurfaceMeshResult& sr, io::Report& report) {
                      {"mu_M", o.quality.mu.count() ? o.quality.mu.mean() : 0.0},
                      {"E_K", o.quality.ek.count() ? o.quality.ek.mean() : 0.0},
                      {"missing_boundary_edges", o.stats.missingBoundaryEdges}});
-    for (const std::string& p : o.problems) report.failures.push_back({"face " + std::to_string(f + 1), p});
+  }
+  // the surface's problems, replaced when the surface is meshed again (proximity rounds)
+  report.problems.erase(std::remove_if(report.problems.begin(), report.problems.end(),
+                                       [](const Problem& p) { return p.where == "surface"; }),
+                        report.problems.end());
+  const std::vector<std::string> parts = facePartNames(topo);
+  for (size_t f = 0; f < sr.faces.size(); ++f) {
+    const std::vector<std::string>& ps = sr.faces[f].problems;
+    if (ps.empty()) continue;
+    std::string detail = "not meshed: " + ps.front();
+    if (ps.size() > 1) detail += " (and " + std::to_string(ps.size() - 1) + " more)";
+    report.problems.push_back({EntityRef::face(static_cast<int>(f), parts[f]), Severity::Failed, "face-mesh", detail, "surface"});
   }
   report.quality["faces"] = faces;
   report.quads = static_cast<long long>(sr.mesh.quads.size());
@@ -109,6 +200,12 @@ static void fillSurfaceReport(const SurfaceMeshResult& sr, io::Report& report) {
   const SurfaceMesh::EdgeCounts ec = sr.mesh.edgeCounts();
   report.extra["surface"] = {{"open_edges", ec.open}, {"non_manifold_edges", ec.nonManifold},
                              {"misoriented_edges", ec.misoriented}};
+}
+
+/// Faces the surface mesher could not mesh (a finer surface must not lose more of them).
+static std::size_t failedFaces(const SurfaceMeshResult& sr) {
+  return static_cast<std::size_t>(
+      std::count_if(sr.faces.begin(), sr.faces.end(), [](const FaceOutcome& o) { return !o.problems.empty(); }));
 }
 
 /// --order 2: quadratic elements (mesher/highorder/Order2.h), after meshing and before
@@ -174,7 +271,7 @@ static int runVolume(const MeshArgs& args, const Model& topo, SurfaceMesherInput
     if (!vin.stopWhenThin && rounds > 0 && !vr.ok()) {
       // the finer surface could not be meshed: the volume of the first surface instead
       sr = first;
-      fillSurfaceReport(sr, report);
+      fillSurfaceReport(topo, sr, report);
       rounds = 0;
       facesRefined = 0;
       loop = false;
@@ -199,13 +296,13 @@ static int runVolume(const MeshArgs& args, const Model& topo, SurfaceMesherInput
     SurfaceMeshResult finer = meshSurfaces(sin);
     proximitySeconds += seconds(tr, Clock::now());
     ++rounds;
-    if (!finer.ok()) {  // keep the surface that meshed: the volume as it is
+    if (failedFaces(finer) > failedFaces(sr)) {  // keep the surface that meshed: the volume as it is
       loop = false;
       continue;
     }
     facesRefined += sources.size();
     sr = std::move(finer);
-    fillSurfaceReport(sr, report);
+    fillSurfaceReport(topo, sr, report);
   }
   // a solid still below the quality bar: its surface once more at a finer size, kept when
   // the whole mesh's mean ratio is better (CoarseSolids.h)
@@ -222,7 +319,7 @@ static int runVolume(const MeshArgs& args, const Model& topo, SurfaceMesherInput
       // a retry that fails (by status or by an error) leaves the first result
       try {
         SurfaceMeshResult finer = meshSurfaces(sin);
-        if (finer.ok()) {
+        if (failedFaces(finer) <= failedFaces(sr)) {
           VolumeMesherInput fin = vin;
           fin.surface = &finer.mesh;
           fin.stopWhenThin = false;
@@ -230,7 +327,7 @@ static int runVolume(const MeshArgs& args, const Model& topo, SurfaceMesherInput
           if (fvr.ok() && fvr.quality.meanRatio.mean() > vr.quality.meanRatio.mean()) {
             vr = std::move(fvr);
             sr = std::move(finer);
-            fillSurfaceReport(sr, report);
+            fillSurfaceReport(topo, sr, report);
             coarseKept = true;
           }
         }
@@ -249,16 +346,13 @@ static int runVolume(const MeshArgs& args, const Model& topo, SurfaceMesherInput
                                {"seconds", proximitySeconds}};
   for (const auto& p : vr.times) report.times.push_back(p);
   fillVolumeReport(topo, vr, report);
-  if (!vr.ok()) {
-    failRun(args, report, t0);
-  }
+  // a solid that failed leaves the mesh degraded; no solid meshed at all fails the run
+  if (vr.mesh.tets.empty()) failRun(args, report, t0);
   if (args.options.order == 2) elevateForOutput(topo, vr.mesh, report);
   const auto tw = Clock::now();
   io::writeVolumeMesh(topo, vr.mesh, args.output, wopt);
   report.times.emplace_back("write", seconds(tw, Clock::now()));
-  report.status = io::RunStatus::Ok;
-  report.totalSeconds = seconds(t0, Clock::now());
-  writeReport(args, report);
+  finishRun(args, report, t0);
   return 0;
 }
 
@@ -297,18 +391,9 @@ int runMesh(const MeshArgs& given) {
     report.options["anisotropy"] = 1.0;
   }
   const Model& topo = in.model;
-  for (const std::string& problem : topo.validate()) {
-    const auto colon = problem.find(':');
-    report.failures.push_back({colon == std::string::npos ? "model" : problem.substr(0, colon),
-                               colon == std::string::npos ? problem : problem.substr(colon + 2)});
-  }
-
-  if (!report.failures.empty()) {  // the model's topology is broken: nothing sensible to mesh
-    report.totalSeconds = seconds(t0, Clock::now());
-    writeReport(args, report);
-    throw MeshingError(args.file + ": invalid model topology: " + report.failures.front().entity + ": " +
-                       report.failures.front().what);
-  }
+  // CAD defects: faces that cannot be used are left out (the run is then degraded); a model
+  // with nothing usable is refused
+  std::vector<char> skip = gradeModel(args, topo, report, t0);
 
   const std::unique_ptr<ControlSpace2d> analytic = analyticControlSpace(in);
   SurfaceMesherInput sin;
@@ -316,12 +401,12 @@ int runMesh(const MeshArgs& given) {
   sin.options = args.options;
   sin.analytic = analytic.get();
   sin.user = &user;
+  sin.skipFaces = std::move(skip);
   SurfaceMeshResult sr = meshSurfaces(sin);
   for (const auto& p : sr.times) report.times.push_back(p);
-  fillSurfaceReport(sr, report);
-  if (!sr.ok()) {
-    failRun(args, report, t0);
-  }
+  fillSurfaceReport(topo, sr, report);
+  // faces that failed are left out (degraded); nothing meshed fails the run
+  if (sr.mesh.triangles.empty()) failRun(args, report, t0);
   io::WriteOptions wopt;
   wopt.binary = args.binary;
   wopt.mshVersion = args.mshVersion;
@@ -330,9 +415,7 @@ int runMesh(const MeshArgs& given) {
   const auto tw = Clock::now();
   io::writeSurfaceMesh(topo, sr.mesh, args.output, wopt);
   report.times.emplace_back("write", seconds(tw, Clock::now()));
-  report.status = io::RunStatus::Ok;
-  report.totalSeconds = seconds(t0, Clock::now());
-  writeReport(args, report);
+  finishRun(args, report, t0);
   return 0;
 }
 

@@ -14,7 +14,9 @@
 // and afterwards each loop as a whole so that it overlaps the face's parametric bounds
 // (the outer loop) or the outer loop (the holes) as much as possible: the control space
 // covers the face's stored bounds. Every junction, the closing one included, must then
-// meet within kLoopGapRatio of the face's parametric extent. Copies of one node that differ
+// meet within kLoopGapRatio of the face's parametric extent, or within
+// kLoopGapWithinTolerance of it when its two ends are one point in 3D within the CAD
+// tolerance. Copies of one node that differ
 // by round-off only (a hole touching the outer loop at a vertex) are given one (u, v).
 #include <algorithm>
 #include <array>
@@ -33,6 +35,11 @@ namespace {
 /// Largest (u, v) gap between consecutive uses, relative to the diagonal of the face's
 /// parametric extent (the same order as Model::validate's kUvGapRatio).
 constexpr double kLoopGapRatio = 1e-2;
+/// A wider gap, up to this share of the extent, is bridged when its two ends are one point in
+/// 3D within the CAD tolerance (kMissFactor × the largest tolerance of the vertex, the two
+/// edges and the face, plus kMissRelative × the model size): a loop that CAD closes by its
+/// vertex tolerance on a face small in (u, v).
+constexpr double kLoopGapWithinTolerance = 0.1;
 /// Copies of one node closer than this (relative to the parametric extent) are made equal:
 /// a hole touching the outer loop at a vertex, the two pcurve ends differing by round-off.
 constexpr double kSnapRatio = 1e-9;
@@ -49,6 +56,7 @@ struct UseNodes {
 struct Junction {
   double gap = 0;
   int from = -1, to = -1;  ///< edges (0-based) of the two uses
+  bool closedIn3d = false;  ///< the two ends are one point within the CAD tolerance
 };
 
 std::string where(int face, std::size_t loop) {
@@ -135,7 +143,15 @@ std::vector<BoundaryNode> chainLoop(const Model& model, int face, std::size_t l,
         << " starts at node " << startNode << " (the loop does not chain)";
       throw MeshingError(s.str());
     }
-    junctions.push_back({(start - end).norm(), endEdge, startEdge});
+    const ModelFace& f = model.faces[face];
+    const ModelEdge& ea = model.edges[endEdge];
+    const ModelEdge& eb = model.edges[startEdge];
+    const NodeOn& on = mesh.nodeOn[static_cast<std::size_t>(startNode)];
+    const double vertexTol = on.kind == NodeOn::Kind::Vertex ? model.vertices[static_cast<std::size_t>(on.entity)].tolerance : 0.0;
+    const double tol = kMissFactor * std::max({ea.tolerance, eb.tolerance, f.tolerance, vertexTol}) +
+                       kMissRelative * model.diagonal();
+    const bool closedIn3d = (f.surface->point(start) - f.surface->point(end)).norm() <= tol;
+    junctions.push_back({(start - end).norm(), endEdge, startEdge, closedIn3d});
     start = 0.5 * (start + end);
   };
   for (std::size_t k = 0; k < loop.uses.size(); ++k) {
@@ -228,7 +244,7 @@ FaceBoundary faceBoundary(const Model& model, int face, const std::vector<EdgeDi
   const double extent = extentDiagonal(f, out.loops);
   for (std::size_t l = 0; l < junctions.size(); ++l)
     for (const Junction& j : junctions[l])
-      if (!(j.gap <= kLoopGapRatio * extent)) {
+      if (!(j.gap <= kLoopGapRatio * extent) && !(j.closedIn3d && j.gap <= kLoopGapWithinTolerance * extent)) {
         std::ostringstream s;
         s << where(face, l) << ": edges " << j.from + 1 << " and " << j.to + 1 << " do not meet in (u,v): gap " << j.gap
           << " for a parametric extent of " << extent << " (the loop is not closed)";

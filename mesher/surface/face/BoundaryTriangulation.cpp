@@ -23,7 +23,7 @@ std::string FlatBoundary::describe(std::uint32_t k) const {
 }
 
 FlatBoundary flattenBoundary(const FaceBoundary& boundary) {
-  if (boundary.loops.empty()) throw MeshingError("face " + std::to_string(boundary.face) + ": no boundary loop");
+  if (boundary.loops.empty()) throw MeshingError("face " + std::to_string(boundary.face + 1) + ": no boundary loop");
   FlatBoundary f;
   std::size_t total = 0;
   for (const auto& loop : boundary.loops) total += loop.size();
@@ -33,13 +33,13 @@ FlatBoundary flattenBoundary(const FaceBoundary& boundary) {
   for (std::size_t l = 0; l < boundary.loops.size(); ++l) {
     const auto& loop = boundary.loops[l];
     if (loop.size() < 2)
-      throw MeshingError("face " + std::to_string(boundary.face) + ": boundary loop " + std::to_string(l) +
+      throw MeshingError("face " + std::to_string(boundary.face + 1) + ": boundary loop " + std::to_string(l + 1) +
                          " has fewer than 2 nodes");
     const auto begin = static_cast<std::uint32_t>(f.uv.size());
     f.loopBegin.push_back(begin);
     for (std::size_t i = 0; i < loop.size(); ++i) {
       if (!loop[i].uv.allFinite())
-        throw MeshingError("face " + std::to_string(boundary.face) + ": boundary node " +
+        throw MeshingError("face " + std::to_string(boundary.face + 1) + ": boundary node " +
                            std::to_string(loop[i].node) + " has a non-finite (u, v)");
       f.uv.push_back(loop[i].uv);
       f.node.push_back(loop[i].node);
