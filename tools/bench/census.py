@@ -3,6 +3,7 @@
 
 usage: census.py --cli BUILD/anisomesh --dir FOLDER [--extra "ARGS"] [--time-limit S] [--gmsh]
                  [--gmsh-time-limit S] [--gmsh-fragment] [--only a,b] [--jsonl OUT] [--shared DIR]
+       census.py --table OUT.jsonl      (the results as a Markdown table, for docs/census.md)
 
 The models are the files listed in FOLDER/MANIFEST.json when there is one, else every
 .step/.stp/.iges/.igs/.brep file of the folder (then `anisomesh info --json` gives the solids, the
@@ -441,9 +442,42 @@ def summary(name, rows, key, seconds):
     return passed == len(done)
 
 
+TABLE_COLUMNS = ("model", "dim", "status", "s", "MB", "elements", "mean ratio", "min dihedral", "vol/area err",
+                 "exposed err", "pass")
+
+
+def table(path):
+    """Markdown rows of docs/census.md's results table from a --jsonl file (Gmsh's columns when
+    the census ran with --gmsh)."""
+    with open(path) as f:
+        rows = [json.loads(x) for x in f if x.strip()]
+    gmsh = any(r.get("gmsh") for r in rows)
+    head = list(TABLE_COLUMNS) + ["Gmsh " + c for c in TABLE_COLUMNS[2:]] * gmsh
+    print("| " + " | ".join(head) + " |")
+    print("|" + "---|" * len(head))
+    for row in rows:
+        cells = [row["file"], f"{row['dim']}D"] + table_cells(row["us"], row["dim"])
+        if gmsh:
+            cells += table_cells(row.get("gmsh") or {"status": "-"}, row["dim"])
+        print("| " + " | ".join(cells) + " |")
+
+
+def table_cells(r, dim):
+    def number(key, form):
+        return format(r[key], form) if r.get(key) is not None else "-"
+    three = dim == 3
+    return [r["status"], number("wall_s", ".1f"), number("rss_mb", ".0f"), number("tets" if three else "tris", "d"),
+            number("eta_avg" if three else "tri_eta_avg", ".3f"), number("dihedral_min", ".2f") if three else "-",
+            number("vol_err" if three else "area_err", "+.2%"), number("exposed_err", "+.2%"),
+            {True: "yes", False: "no"}.get(r.get("pass"), "-")]
+
+
 def main(argv):
     if argv[:1] == ["--gmsh-driver"]:
         gmsh_driver(argv[1:])
+        return 0
+    if argv[:1] == ["--table"] and len(argv) == 2:
+        table(argv[1])
         return 0
     args = parse_args(argv)
     meshq = load_referee(args.shared)
