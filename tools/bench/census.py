@@ -75,7 +75,7 @@ def load_referee(shared):
 
 def run_limited(cmd, limit, folder):
     """Runs cmd under /usr/bin/time in its own process group; after `limit` seconds the command is
-    killed (then the group). Returns a dict: code (exit code, -signal when a signal ended it),
+    killed, then what is left of its group. Returns a dict: code (exit code, -signal when a signal ended it),
     timeout, wall_s, rss_mb (peak resident memory of the command; None when unknown), stdout, stderr.
     /usr/bin/time measures the peak because a child forked from this Python process would count
     the parent's memory in its own high-water mark."""
@@ -98,14 +98,14 @@ def run_limited(cmd, limit, folder):
                     p.wait(5)
                 except subprocess.TimeoutExpired:
                     pass
+                try:  # whatever is left of the group (the timer, the command's own children)
+                    os.killpg(p.pid, signal.SIGKILL)
+                except ProcessLookupError:
+                    pass
                 break
             time.sleep(pause)
             pause = min(2 * pause, 0.05)
         wall = time.perf_counter() - t0
-    try:  # whatever is left of the group (the timer, grandchildren)
-        os.killpg(p.pid, signal.SIGKILL)
-    except ProcessLookupError:
-        pass
     code = p.wait()
     peak, measured = None, read_text(rss)
     m = re.search(r"maxrss (\d+)", measured)
