@@ -12,31 +12,27 @@ namespace {
 /// Refits of the parametric step so that the sample lies at the 3D distance h.
 constexpr int kStepFits = 3;
 
-/// How far uv may move along the unit direction d without leaving the box.
-double exitDistance(const Box2& box, const Vec2& uv, const Vec2& d) {
-  double t = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < 2; ++i) {
-    if (d(i) > 0) t = std::min(t, (box.hi(i) - uv(i)) / d(i));
-    if (d(i) < 0) t = std::min(t, (box.lo(i) - uv(i)) / d(i));
-  }
-  return std::max(t, 0.0);
-}
+/// uv clamped into the box.
+Vec2 clampInto(const Box2& box, const Vec2& uv) { return uv.cwiseMax(box.lo).cwiseMin(box.hi); }
 
-/// A sample on the surface about h away from p along d, or false when the box leaves no room.
+/// A sample on the surface about h away from p towards uv + t·d (the target clamped into the
+/// box, so that a point on the box's side or corner still has samples inside), or false when
+/// the box leaves no room in that sense.
 bool sampleAt(const ParametricSurface& s, const Vec2& uv, const Vec3& p, const Vec2& d, double speed, double h,
               const Box2& box, Vec3& q) {
-  const double room = exitDistance(box, uv, d);
-  if (!(room > 1e-12 * box.diagonal())) return false;
-  double t = speed > 0 ? std::min(h / speed, room) : room;
+  const double span = box.diagonal();
+  const auto target = [&](double t) { return clampInto(box, uv + t * d); };
+  double t = speed > 0 ? std::min(h / speed, span) : span;
+  if (!((target(t) - uv).norm() > 1e-9 * span)) return false;
   for (int k = 0; k < kStepFits; ++k) {
-    q = s.point(uv + t * d);
+    q = s.point(target(t));
     const double dist = (q - p).norm();
     if (!(dist > 0) || !q.allFinite()) return false;
-    const double next = std::min(t * h / dist, room);
+    const double next = std::min(t * h / dist, span);
     if (std::abs(next - t) <= 0.02 * t) break;
     t = next;
   }
-  q = s.point(uv + t * d);
+  q = s.point(target(t));
   return q.allFinite() && (q - p).norm() > 0;
 }
 
@@ -55,16 +51,17 @@ RobustCurvatureBounds RobustCurvatureBounds::of(const Box2& uv, const CurvatureS
 double secantCurvature(const ParametricSurface& surface, const Vec2& uv, const Vec3& n, const Vec2 (&dirs)[kSecantLines],
                        double h, const Box2& box) {
   const SurfaceD1 d = surface.d1(uv);
-  double kappa = 0;
+  double kappa = -1;
   for (const Vec2& dir : dirs) {
     const double speed = (d.pu * dir.x() + d.pv * dir.y()).norm();
     Vec3 qp, qm;
     const bool plus = sampleAt(surface, uv, d.p, dir, speed, h, box, qp);
     const bool minus = sampleAt(surface, uv, d.p, -dir, speed, h, box, qm);
+    if (!plus && !minus) continue;
     double k = 0;
     if (plus && minus)
       k = 2 * std::abs(n.dot(qp - d.p) + n.dot(qm - d.p)) / ((qp - d.p).squaredNorm() + (qm - d.p).squaredNorm());
-    else if (plus || minus) {
+    else {
       const Vec3 q = plus ? qp : qm;
       k = 2 * std::abs(n.dot(q - d.p)) / (q - d.p).squaredNorm();
     }
@@ -85,6 +82,7 @@ Metric2d robustCurvatureSizing(const ParametricSurface& surface, const Vec2& uv,
     const Vec3 n = surface.normal(uv);
     for (int step = 0; step < kSecantSteps && hr < sizing.hMax; ++step) {
       const double ks = secantCurvature(surface, uv, n, dirs, hr, bounds.uv);
+      if (ks < 0) break;  // no sample: the point curvature stands
       const double asked = ks * sizing.hMax > sizing.curvatureRatio ? sizing.curvatureRatio / ks : sizing.hMax;
       if (!(asked > (1 + kSecantSlack) * hr)) break;
       hr = std::min(asked, sizing.hMax);

@@ -12,7 +12,8 @@
 //     p along kSecantLines parametric lines through p (the principal directions and their
 //     bisectors), and the secant curvature of a line is
 //         κ_s = 2 |n·(q₊ − p) + n·(q₋ − p)| / (|q₊ − p|² + |q₋ − p|²)
-//     (one-sided, 2|n·(q − p)|/|q − p|², where a side leaves the face's (u, v) box). It is
+//     (one-sided, 2|n·(q − p)|/|q − p|², where a side has no room in the face's (u, v) box;
+//     targets beyond the box are clamped into it, so corners keep their samples). It is
 //     exactly 1/R on a circle of radius R (a cylinder, a fillet, a hole), and a tilt of n
 //     cancels. With κ_s(h) the largest over the lines: while γ_c / κ_s(h) > (1 + kSecantSlack) h,
 //     h ← min(γ_c / κ_s(h), h_max), at most kSecantSteps times (h only grows). A spike or a
@@ -57,7 +58,8 @@ struct RobustCurvatureBounds {
 };
 
 /// The largest secant curvature κ_s at distance h from uv (step 1, the lines along `dirs`,
-/// unit (u, v) directions) with the normal n at uv; 0 when no sample could be placed.
+/// unit (u, v) directions; a sample's target is clamped into `box`) with the normal n at
+/// uv; −1 when no sample could be placed (then the point curvature stands).
 double secantCurvature(const ParametricSurface& surface, const Vec2& uv, const Vec3& n, const Vec2 (&dirs)[kSecantLines],
                        double h, const Box2& box);
 

@@ -17,6 +17,7 @@
 #include "mesher/volume/CoarseSolids.h"
 #include "mesher/volume/ThinBoundary.h"
 #include "mesher/volume/VolumeMesher.h"
+#include "tools/cli/BudgetReport.h"
 #include "tools/cli/VolumeReport.h"
 #include "tools/cli/ModelInput.h"
 
@@ -107,6 +108,7 @@ static void fillSurfaceReport(const SurfaceMeshResult& sr, io::Report& report) {
                               {"mu_M", {{"mean", sr.quality.mu.mean()}, {"sd", sr.quality.mu.stddev()}}}};
   }
   const SurfaceMesh::EdgeCounts ec = sr.mesh.edgeCounts();
+  reportBudget(sr.budget, report);
   report.extra["surface"] = {{"open_edges", ec.open}, {"non_manifold_edges", ec.nonManifold},
                              {"misoriented_edges", ec.misoriented}};
 }
@@ -296,6 +298,7 @@ int runMesh(const MeshArgs& given) {
     args.options.sizing.anisotropy = 1;
     report.options["anisotropy"] = 1.0;
   }
+  args.options.maxElements = report.options["max_elements"] = elementBudget(args.options.maxElements, dim);
   const Model& topo = in.model;
   for (const std::string& problem : topo.validate()) {
     const auto colon = problem.find(':');
