@@ -43,7 +43,7 @@ RobustCurvatureBounds RobustCurvatureBounds::of(const Box2& uv, const CurvatureS
   RobustCurvatureBounds b;
   b.uv = uv;
   b.floor = std::max({sizing.hMin, kToleranceFactor * std::max(tolerance, 0.0),
-                      kFaceSizeFraction * (std::isfinite(faceWidth) ? faceWidth : 0.0)});
+                      sizing.curvatureRatio * kMinRadiusFraction * (std::isfinite(faceWidth) ? faceWidth : 0.0)});
   b.floor = std::min(b.floor, sizing.hMax);
   return b;
 }

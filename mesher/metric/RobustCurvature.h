@@ -20,13 +20,14 @@
 //     ripple narrower than the size it asks for is bounded by what the surface deviates at
 //     that size; a curvature real over its own size keeps its length.
 //   2 floor: no length below RobustCurvatureBounds::floor (h_min, the CAD tolerance times
-//     kToleranceFactor, a fraction kFaceSizeFraction of the face's own width).
+//     kToleranceFactor, and γ_c times the smallest radius of curvature believed on a face,
+//     kMinRadiusFraction of the face's own width).
 // Every h_i is raised to at least the result, then the anisotropy limit (eq. 2.42).
-// Which rule does what (models/passage.step, a B-spline patch with a collapsed control row
-// and noise): the point of the collapsed row is cone-like, its curvature real at every
-// scale, so the secant check keeps it and the width floor bounds it (without the floor:
-// 1.4 M control vertices, h_min there, > 60 s; with it 0.8 s). The secant check is for
-// spikes and ripples narrower than the size they ask for (tests/unit: a bump on a plane).
+// Which rule does what (models/passage.step, a B-spline patch whose v = 0 row of control
+// points is collapsed onto a corner, plus noise): the point curvature near the collapsed row
+// is spurious (the fan the row makes is nearly flat), and the secant check removes it: the
+// build before never left the control spaces (h_min along the row, > 120 s at the census
+// options), now 0.3 s. The floor is a backstop (see the constants).
 // Throws MeshingError as surfaceCurvatureSizing() does.
 #include "mesher/geometry/ParametricSurface.h"
 #include "mesher/metric/CurvatureSizing.h"
@@ -43,17 +44,20 @@ inline constexpr double kSecantSlack = 0.05;
 /// No curvature length below this many times the face's CAD tolerance: geometry below the
 /// tolerance is not defined, and a size within a few tolerances of it is noise.
 inline constexpr double kToleranceFactor = 10.0;
-/// No curvature length below this fraction of the face's width (its area / its extent): a
-/// fillet of radius r has width ~ π r / 2 and asks for γ_c r (0.26 r at the census options,
-/// 0.03 r at γ_c = 0.05 is still 0.019 of its width), so only spurious curvature reaches it.
-inline constexpr double kFaceSizeFraction = 0.01;
+/// No radius of curvature below this fraction of the face's width (its area / its extent),
+/// i.e. no curvature length below γ_c · kMinRadiusFraction · width: the backstop for
+/// curvature without bound (a singular point) when h_min is set far below the model's scale.
+/// Real features come close: the thesis' SURF2 ridge has radii down to 3.7e-4 of its face's
+/// width (the floor at 5e-3 cut SURF2 from 28 k to 10 k triangles); fillets and holes have
+/// radii of ~0.6 of their faces' widths.
+inline constexpr double kMinRadiusFraction = 1e-3;
 
 /// What the sampling and the floor of a face need to know.
 struct RobustCurvatureBounds {
   Box2 uv;             ///< the face's (u, v) box: secant samples stay inside it
   double floor = 0;    ///< smallest curvature length (≥ h_min)
 
-  /// max(h_min, kToleranceFactor · tolerance, kFaceSizeFraction · faceWidth).
+  /// max(h_min, kToleranceFactor · tolerance, γ_c · kMinRadiusFraction · faceWidth), ≤ h_max.
   static RobustCurvatureBounds of(const Box2& uv, const CurvatureSizing& sizing, double tolerance, double faceWidth);
 };
 

@@ -75,12 +75,12 @@ TEST(RobustCurvature, CylinderUnchangedEverywhere) {
   }
 }
 
-// The floor: never below 10 CAD tolerances nor 1 % of the face's width.
+// The floor: never below 10 CAD tolerances nor γ_c times 0.5 % of the face's width.
 TEST(RobustCurvature, FloorFromToleranceAndWidth) {
   const CurvatureSizing cs = sizing(1e-4, 5.0);
   const Box2 box(Vec2(0, 0), Vec2(1, 1));
   EXPECT_DOUBLE_EQ(RobustCurvatureBounds::of(box, cs, 0.01, 1.0).floor, kToleranceFactor * 0.01);
-  EXPECT_DOUBLE_EQ(RobustCurvatureBounds::of(box, cs, 1e-7, 20.0).floor, kFaceSizeFraction * 20.0);
+  EXPECT_DOUBLE_EQ(RobustCurvatureBounds::of(box, cs, 1e-7, 2000.0).floor, cs.curvatureRatio * kMinRadiusFraction * 2000.0);
   EXPECT_DOUBLE_EQ(RobustCurvatureBounds::of(box, cs, 1e-7, 1e-3).floor, cs.hMin);
   const CylinderSurface s(Frame(Vec3::Zero(), Vec3::UnitZ()), 2.0, 0.0, 10.0);
   const RobustCurvatureBounds rb = RobustCurvatureBounds::of(Box2(Vec2(0, 0), Vec2(6, 10)), cs, 0.1, 1.0);

@@ -311,12 +311,11 @@ void writeBlocks2(const std::filesystem::path& path) {
 // the curvature spurious:
 //   - a degenerate corner: the whole v = 0 row of control points is collapsed onto the
 //     corner (0, 0), so the patch is a fan from that point (p_u = 0 along the row, the
-//     normal undefined there, a cone-like point whose curvature grows without bound);
+//     normal undefined there, the point curvature next to it spurious and unbounded);
 //   - noise: every interior control point moved along z by a deterministic pseudo-random
 //     amount of up to 0.02 mm (1e-4 of the model's size).
 // Measured (issue 20): at --hmax-rel 0.02 --curvature-ratio 0.26 --anisotropy 1 the build
-// before the robust curvature never left the control spaces (1.4 M control vertices, h_min
-// at the fan's point, > 120 s).
+// before the robust curvature never left the control spaces (> 120 s, 1 GB).
 TopoDS_Shape makePassage() {
   const int nu = 10, nv = 8;
   TColgp_Array2OfPnt poles(1, nu, 1, nv);
