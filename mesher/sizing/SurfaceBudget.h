@@ -3,6 +3,7 @@
 // spaces, after the contours are discretized and before any face is meshed (SurfaceMesher
 // step 2b).
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "mesher/control/CSQuadtree2d.h"
@@ -23,7 +24,11 @@ ElementBudget surfaceBudget(const Model& model, const std::vector<std::unique_pt
 /// Applies the budget's floor (if any) to every control space; returns whether any changed.
 bool applyBudgetFloor(const ElementBudget& budget, std::vector<std::unique_ptr<CSQuadtree2d>>& spaces);
 
-/// The sentence of a run that cannot fit: the prediction, what h_max would make, the limit.
+/// The sentence of a run that cannot fit: the prediction (triangles, tets) and the limit.
 std::string budgetRefusal(const ElementBudget& budget);
+/// The one warning line of a coarsened run: the prediction, the limit, the coarsened faces
+/// (1-based, the first maxNamed of them), the floor and the new prediction; empty when
+/// nothing was coarsened.
+std::string budgetWarning(const ElementBudget& budget, std::size_t maxNamed = 10);
 
 }  // namespace aniso

@@ -43,4 +43,10 @@ tri=$(json "$tmp/c.json" "r['counts']['triangles']")
 [ "$tri" -lt 2000 ] || fail "budget 1500: $tri triangles (asked $full)"
 [ "$(json "$tmp/c.json" "r['surface']['open_edges']")" = 0 ] || fail "budget 1500: open edges"
 echo "bracket: $full triangles asked, $tri within the budget of 1500 ($faces faces coarsened)"
+# 4. dim 3: the tets count too (the census options ask for ~8 k triangles and ~71 k tets).
+"$bin" mesh "$models/bracket.step" -o "$tmp/v.msh" --hmax-rel 0.02 --curvature-ratio 0.26 --max-elements 20000 2> "$tmp/err"
+rc=$?
+[ $rc = 2 ] || fail "dim 3, max-elements 20000: exit $rc, expected 2"
+grep -q "triangles, [0-9]* tets)" "$tmp/err" || fail "no tets in: $(cat "$tmp/err")"
+[ ! -e "$tmp/v.msh" ] || fail "a volume mesh was written"
 echo PASS

@@ -2,26 +2,13 @@
 
 #include <unistd.h>
 
-#include <cstdio>
-#include <algorithm>
-#include <cmath>
 #include <fstream>
 #include <string>
 
 #include "mesher/core/Log.h"
+#include "mesher/sizing/SurfaceBudget.h"
 
 namespace aniso::cli {
-namespace {
-
-std::string count(double x) { return std::to_string(static_cast<long long>(std::llround(std::min(x, 1e18)))); }
-
-std::string g3(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.3g", x);
-  return text;
-}
-
-}  // namespace
 
 double availableMemoryBytes() {
   std::ifstream in("/proc/meminfo");
@@ -46,14 +33,7 @@ void reportBudget(const ElementBudget& b, io::Report& report) {
   report.extra["budget"] = {{"limit", b.limit},       {"predicted", b.predicted}, {"triangles", b.triangles},
                             {"tets", b.tets},         {"floor", b.floor},         {"predicted_after", b.predictedAfter},
                             {"coarsened_faces", faces}};
-  if (b.coarsened.empty()) return;
-  std::string names;
-  const std::size_t shown = std::min<std::size_t>(b.coarsened.size(), 10);
-  for (std::size_t i = 0; i < shown; ++i) names += (i ? ", " : "") + std::to_string(b.coarsened[i].face + 1);
-  if (shown < b.coarsened.size()) names += " and " + std::to_string(b.coarsened.size() - shown) + " more";
-  logWarning("the sizing asks for " + count(b.predicted) + " elements, over the budget of " + count(b.limit) + " (--max-elements): face" +
-             (b.coarsened.size() > 1 ? "s " : " ") + names + " coarsened to sizes of at least " + g3(b.floor) + " (" +
-             count(b.predictedAfter) + " elements predicted)");
+  if (!b.coarsened.empty()) logWarning(budgetWarning(b));
 }
 
 }  // namespace aniso::cli
