@@ -48,6 +48,9 @@ struct MeshOptions {
   int threads = 0;      ///< 0 = all cores
   SizingParameters sizing;
   std::string sizingFile;  ///< user sizing sources (--sizing FILE.json)
+  /// Element budget checked before meshing (mesher/sizing/ElementBudget.h): triangles, plus
+  /// tets for a volume mesh. ≤ 0: none.
+  double maxElements = 0;
 };
 
 }  // namespace aniso

@@ -27,6 +27,10 @@ namespace aniso {
 Metric2d surfaceCurvatureSizing(const PrincipalCurvatures& pc, const Mat2& mp,
                                 const CurvatureSizing& sizing);
 
+/// M_s with the lengths h = (h_1, h_2) along pc's principal directions, after the
+/// anisotropy limit γ_a (eq. 2.42, 2.4): the assembly step of the function above.
+Metric2d principalSizing(const PrincipalCurvatures& pc, const Mat2& mp, Vec2 h, double anisotropy);
+
 /// Convenience: curvature() and parameterizationTensor(uv, gMin) of the surface at uv.
 Metric2d surfaceCurvatureSizing(const ParametricSurface& surface, const Vec2& uv, double gMin,
                                 const CurvatureSizing& sizing);

@@ -1,5 +1,7 @@
 #include "mesher/sizing/FaceControlSpace.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 
@@ -7,7 +9,7 @@
 #include "mesher/core/Error.h"
 #include "mesher/metric/ContourCurvatureMetric.h"
 #include "mesher/metric/CurvatureSizing.h"
-#include "mesher/metric/SurfaceCurvatureMetric.h"
+#include "mesher/metric/RobustCurvature.h"
 
 namespace aniso {
 namespace {
@@ -23,6 +25,34 @@ Box2 faceBounds(const ModelFace& f, int face) {
   b.lo -= pad;
   b.hi += pad;
   return b;
+}
+
+/// The face's extent in space and its area, from a (kFaceSamples + 1)² grid over its (u, v)
+/// box (for a trimmed face the box's image: an upper bound).
+struct FaceSample {
+  Box3 box;
+  double area = 0;
+  /// area / extent: about the smaller side of the face (a fillet's developed width).
+  double width() const { return area / std::max(box.diagonal(), 1e-300); }
+};
+constexpr int kFaceSamples = 8;
+
+FaceSample sampleFace(const ParametricSurface& surface, const Box2& bounds) {
+  FaceSample s;
+  std::vector<Vec3> p((kFaceSamples + 1) * (kFaceSamples + 1));
+  for (int i = 0; i <= kFaceSamples; ++i)
+    for (int j = 0; j <= kFaceSamples; ++j) {
+      const Vec2 uv = bounds.lo + Vec2(double(i) / kFaceSamples, double(j) / kFaceSamples).cwiseProduct(bounds.size());
+      s.box.add(p[i * (kFaceSamples + 1) + j] = surface.point(uv));
+    }
+  for (int i = 0; i < kFaceSamples; ++i)
+    for (int j = 0; j < kFaceSamples; ++j) {
+      const Vec3 &a = p[i * (kFaceSamples + 1) + j], &b = p[(i + 1) * (kFaceSamples + 1) + j],
+                 &c = p[(i + 1) * (kFaceSamples + 1) + j + 1], &d = p[i * (kFaceSamples + 1) + j + 1];
+      const double q = 0.5 * ((b - a).cross(c - a).norm() + (c - a).cross(d - a).norm());
+      if (std::isfinite(q)) s.area += q;
+    }
+  return s;
 }
 
 /// Contour curvature of every edge use of the face, inserted as point sources (alg. 3.2
@@ -72,10 +102,7 @@ void insertUserSizing(CSQuadtree2d& cs, const UserSizing& user, const Parametric
   }
   if (user.sources.empty()) return;
   // The face's extent in space, from a coarse sample.
-  Box3 faceBox;
-  for (int i = 0; i <= 8; ++i)
-    for (int j = 0; j <= 8; ++j)
-      faceBox.add(surface.point(bounds.lo + Vec2(i / 8.0, j / 8.0).cwiseProduct(bounds.size())));
+  const Box3 faceBox = sampleFace(surface, bounds).box;
   const double extent = std::max(faceBox.diagonal(), 1e-300);
   // A source whose region misses the face (its sampled box grown by a quarter of its
   // extent, for what the coarse sample misses) is skipped: its sampling costs up to 513².
@@ -127,8 +154,11 @@ std::unique_ptr<CSQuadtree2d> buildFaceControlSpace(const FaceSizingInput& in) {
       const double h = *in.params.size;
       cs->setContinuousSource(CSAnalytic2d(bounds, [h](const Vec2&) { return Metric2d::isotropic(h); }));
     } else {
+      // robust: bounded by the surface's secants and by the face's tolerance and width
+      const RobustCurvatureBounds rb =
+          RobustCurvatureBounds::of(f.uvBounds, sizing, f.tolerance, sampleFace(*surface, bounds).width());
       cs->setContinuousSource(CSAnalytic2d(
-          bounds, [&](const Vec2& uv) { return surfaceCurvatureSizing(*surface, uv, gMin, sizing); }));
+          bounds, [&](const Vec2& uv) { return robustCurvatureSizing(*surface, uv, gMin, sizing, rb); }));
     }
     // 4: the user's control spaces.
     if (in.analytic) cs->superpose(*in.analytic);

@@ -14,6 +14,7 @@
 #include "mesher/core/PredictionBoard.h"
 #include "mesher/sizing/BoundaryUpdate.h"
 #include "mesher/sizing/FaceControlSpace.h"
+#include "mesher/sizing/SurfaceBudget.h"
 #include "mesher/quad/QuadSizing.h"
 #include "mesher/surface/ContourDiscretization.h"
 #include "mesher/surface/improve/FaceQuality.h"
@@ -151,42 +152,64 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
   constexpr int kRounds = 3;
   std::vector<EdgeDiscretization> edges;
   std::vector<FaceBoundary> boundaries(nf);
-  for (int round = 0;; ++round) {
-    SurfaceMesh trial;
-    edges = discretizeEdgesLeavingOut(model, cs, copt, trial, r.faces);
-    for (int f = 0; f < nf; ++f) {
-      if (!cs[f]) continue;
-      try {
-        boundaries[f] = faceBoundary(model, f, edges, trial);
-      } catch (const MeshingError& e) {  // this face only: left out, the others go on
-        r.faces[f].problems.push_back(e.what());
-        cs[f] = nullptr;
+  const auto discretizeContours = [&] {
+    for (int round = 0;; ++round) {
+      SurfaceMesh trial;
+      edges = discretizeEdgesLeavingOut(model, cs, copt, trial, r.faces);
+      for (int f = 0; f < nf; ++f) {
+        if (!cs[f]) continue;
+        try {
+          boundaries[f] = faceBoundary(model, f, edges, trial);
+        } catch (const MeshingError& e) {  // this face only: left out, the others go on
+          r.faces[f].problems.push_back(e.what());
+          cs[f] = nullptr;
+        }
       }
+      std::atomic<int> updates{0};
+      if (round < kRounds) {
+        parallelFor(nf, in.options.threads, [&](int f) {
+          if (!cs[f]) return;
+          BoundaryUpdateOptions bopt;
+          bopt.hMin = hMin;
+          bopt.cadTolerance = model.faces[f].tolerance;
+          const BoundaryUpdateStats u = updateFromBoundary(*spaces[f], boundaries[f], in.options.sizing, bopt);
+          if (u.total() == 0) return;
+          logDebug("face " + std::to_string(f + 1) + " boundary sizing: " + std::to_string(u.shortSegments) +
+                   " short segments, " + std::to_string(u.gaps) + " gaps (" + std::to_string(u.unresolvedGaps) +
+                   " too narrow), h_min " + std::to_string(u.faceMinSize));
+          spaces[f]->smoothGradation(in.options.sizing.gradation);
+          updates += u.total();
+        }, "boundary sizing");
+      }
+      if (updates == 0) {
+        r.mesh = std::move(trial);
+        break;
+      }
+      logDebug("boundary sizing round " + std::to_string(round + 1) + ": " + std::to_string(updates.load()) +
+               " sources");
     }
-    std::atomic<int> updates{0};
-    if (round < kRounds) {
-      parallelFor(nf, in.options.threads, [&](int f) {
-        if (!cs[f]) return;
-        BoundaryUpdateOptions bopt;
-        bopt.hMin = hMin;
-        bopt.cadTolerance = model.faces[f].tolerance;
-        const BoundaryUpdateStats u = updateFromBoundary(*spaces[f], boundaries[f], in.options.sizing, bopt);
-        if (u.total() == 0) return;
-        logDebug("face " + std::to_string(f + 1) + " boundary sizing: " + std::to_string(u.shortSegments) +
-                 " short segments, " + std::to_string(u.gaps) + " gaps (" + std::to_string(u.unresolvedGaps) +
-                 " too narrow), h_min " + std::to_string(u.faceMinSize));
-        spaces[f]->smoothGradation(in.options.sizing.gradation);
-        updates += u.total();
-      }, "boundary sizing");
+  };
+  discretizeContours();
+  for (int f = 0; f < nf; ++f)
+    if (!cs[f]) {  // faces left out: no space, no prediction
+      quadSized[f].reset();
+      spaces[f].reset();
     }
-    if (updates == 0) {
-      r.mesh = std::move(trial);
-      break;
-    }
-    logDebug("boundary sizing round " + std::to_string(round + 1) + ": " + std::to_string(updates.load()) +
-             " sources");
-  }
   r.times.emplace_back("contours", since(t));
+
+  // 2b: the element budget (thesis 6.5, mesher/sizing/SurfaceBudget.h): over it, every size
+  // below a floor is raised to it and the contours are discretized again; when even h_max
+  // cannot fit, the run stops before meshing (InputError).
+  t = Clock::now();
+  r.budget = surfaceBudget(model, spaces, boundaries, in.options);
+  if (!r.budget.fits) throw InputError(budgetRefusal(r.budget));
+  if (applyBudgetFloor(r.budget, spaces)) {
+    discretizeContours();
+    MeshOptions predictOnly = in.options;
+    predictOnly.maxElements = 0;
+    r.budget.predictedAfter = surfaceBudget(model, spaces, boundaries, predictOnly).predicted;
+  }
+  r.times.emplace_back("budget", since(t));
 
   // 3: faces.
   t = Clock::now();

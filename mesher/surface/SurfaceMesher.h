@@ -2,6 +2,9 @@
 // SurfaceMesher — the whole surface meshing process of a model (thesis 3.5.1, ch. 4):
 //   1 the initial control space of every face (alg. 3.2, FaceControlSpace.h), in parallel
 //   2 the discretization of every edge, shared by its faces (alg. 4.1)
+//   2b the element budget (thesis 6.5, SurfaceBudget.h): the count the control spaces ask
+//     for, against options.maxElements; over it the sizes are floored (and step 2 redone),
+//     or, when even h_max cannot fit, InputError with the prediction
 //   3 the anisotropic Delaunay mesh of every face (FaceMesher.h), in parallel
 //   4 the assembly into one conforming SurfaceMesh, faces in id order
 // Faces are independent once their edges are discretized, so steps 1 and 3 run on
@@ -15,6 +18,7 @@
 #include "mesher/metric/QualityStats.h"
 #include "mesher/model/Model.h"
 #include "mesher/quad/QuadConversion.h"
+#include "mesher/sizing/ElementBudget.h"
 #include "mesher/sizing/UserSizing.h"
 #include "mesher/surface/FaceMesher.h"
 #include "mesher/surface/SurfaceMesh.h"
@@ -57,12 +61,14 @@ struct SurfaceMeshResult {
   std::vector<FaceOutcome> faces;
   MetricQuality quality;
   std::vector<std::pair<std::string, double>> times;  ///< phase → seconds
+  ElementBudget budget;  ///< the prediction before meshing, and the floor it applied (if any)
   bool ok() const;
 };
 
-/// Throws MeshingError only for errors that stop everything (e.g. an edge that cannot be
-/// discretized); a face that fails (its boundary loops cannot be chained in (u, v), or its
-/// mesher fails) is reported in faces[f].problems and left unmeshed.
+/// Throws InputError when the element budget cannot be met (step 2b), MeshingError only
+/// for errors that stop everything; a face that fails (an edge of it cannot be discretized,
+/// its boundary loops cannot be chained in (u, v), or its mesher fails) is reported in
+/// faces[f].problems and left unmeshed.
 SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in);
 
 }  // namespace aniso

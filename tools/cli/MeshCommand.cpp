@@ -17,6 +17,7 @@
 #include "mesher/volume/CoarseSolids.h"
 #include "mesher/volume/ThinBoundary.h"
 #include "mesher/volume/VolumeMesher.h"
+#include "tools/cli/BudgetReport.h"
 #include "tools/cli/VolumeReport.h"
 #include "tools/cli/ModelInput.h"
 
@@ -198,6 +199,7 @@ static void fillSurfaceReport(const Model& topo, const SurfaceMeshResult& sr, io
                               {"mu_M", {{"mean", sr.quality.mu.mean()}, {"sd", sr.quality.mu.stddev()}}}};
   }
   const SurfaceMesh::EdgeCounts ec = sr.mesh.edgeCounts();
+  reportBudget(sr.budget, report);
   report.extra["surface"] = {{"open_edges", ec.open}, {"non_manifold_edges", ec.nonManifold},
                              {"misoriented_edges", ec.misoriented}};
 }
@@ -390,6 +392,7 @@ int runMesh(const MeshArgs& given) {
     args.options.sizing.anisotropy = 1;
     report.options["anisotropy"] = 1.0;
   }
+  args.options.maxElements = report.options["max_elements"] = elementBudget(args.options.maxElements, dim);
   const Model& topo = in.model;
   // CAD defects: faces that cannot be used are left out (the run is then degraded); a model
   // with nothing usable is refused

@@ -63,6 +63,10 @@ int main(int argc, char** argv) {
   addSizingOptions(*meshCmd, mesh.options.sizing);
   meshCmd->add_option("--sizing", mesh.options.sizingFile, "User sizing sources (JSON)");
   meshCmd->add_option("--threads", mesh.options.threads, "Threads (0 = all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
+  meshCmd->add_option("--max-elements", mesh.options.maxElements,
+                      "Element budget (triangles, plus tets in 3D) checked before meshing; over it the finest sizes are "
+                      "coarsened, or the run stops (exit 2). Default: the available memory / bytes per element")
+      ->check(CLI::PositiveNumber);
   meshCmd->add_flag("--binary", mesh.binary, "Binary output where the format has it");
   meshCmd->add_option("--msh-version", mesh.mshVersion, "MSH format version: 4.1 or 2.2")
       ->transform(CLI::CheckedTransformer(std::map<std::string, int>{{"4.1", 41}, {"2.2", 22}}))

@@ -1,6 +1,6 @@
 // make_models: writes anisomesh's own sample models as STEP AP214 through XCAF.
 //
-//   make_models OUTDIR        build the five models and write OUTDIR/{bracket,assembly2,plate,cylinder,cantilever}.step
+//   make_models OUTDIR        build the models and write OUTDIR/{bracket,assembly2,plate,cylinder,cantilever,blocks2,passage}.step
 //   make_models --check FILE  read FILE with STEPCAFControl_Reader and print solids, volume, part names
 //
 // Output is deterministic: the STEP header (name, time stamp, author, organization,
@@ -17,11 +17,14 @@
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepFilletAPI_MakeFillet.hxx>
 #include <BRepGProp.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <GProp_GProps.hxx>
+#include <Geom_BSplineSurface.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <Interface_Static.hxx>
 #include <Message.hxx>
@@ -46,7 +49,11 @@
 #include <TopLoc_Location.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS.hxx>
+#include <TColStd_Array1OfInteger.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TColgp_Array2OfPnt.hxx>
 #include <TopoDS_Edge.hxx>
+#include <TopoDS_Shell.hxx>
 #include <TopoDS_Shape.hxx>
 #include <TopoDS_Vertex.hxx>
 #include <XCAFApp_Application.hxx>
@@ -297,6 +304,68 @@ void writeBlocks2(const std::filesystem::path& path) {
   writeTwoParts(path, "BLOCKS2", left, "LEFT", TopLoc_Location(), right, "RIGHT", TopLoc_Location(shift));
 }
 
+// A turbine-passage-like surface model (no solid): the closed shell of a B-spline patch
+// swept 20 mm along z (5 faces: the patch twice, three extruded sides; the collapsed edge
+// sweeps to nothing). The patch (x 0..100, y 0..60, a cambered blade-like bump of 8 mm) is
+// bicubic on 10 x 8 control points and has the two defects of fitted CAD surfaces that make
+// the curvature spurious:
+//   - a degenerate corner: the whole v = 0 row of control points is collapsed onto the
+//     corner (0, 0), so the patch is a fan from that point (p_u = 0 along the row, the
+//     normal undefined there, the point curvature next to it spurious and unbounded);
+//   - noise: every interior control point moved along z by a deterministic pseudo-random
+//     amount of up to 0.02 mm (1e-4 of the model's size).
+// Measured (issue 20): at --hmax-rel 0.02 --curvature-ratio 0.26 --anisotropy 1 the build
+// before the robust curvature never left the control spaces (> 120 s, 1 GB).
+TopoDS_Shape makePassage() {
+  const int nu = 10, nv = 8;
+  TColgp_Array2OfPnt poles(1, nu, 1, nv);
+  unsigned seed = 12345u;
+  auto noise = [&seed] {  // deterministic LCG in [-1, 1]
+    seed = seed * 1664525u + 1013904223u;
+    return 2.0 * ((seed >> 8) & 0xFFFF) / 65535.0 - 1.0;
+  };
+  for (int i = 1; i <= nu; ++i)
+    for (int j = 1; j <= nv; ++j) {
+      const double x = 100.0 * (i - 1) / (nu - 1), y = 60.0 * (j - 1) / (nv - 1);
+      const double camber = 8.0 * std::sin(M_PI * x / 100.0) * (0.5 + 0.5 * y / 60.0);
+      const bool interior = i > 1 && i < nu && j > 1 && j < nv;
+      poles(i, j) = gp_Pnt(x, y, camber + (interior ? 0.02 * noise() : 0.0));
+    }
+  for (int i = 2; i <= nu; ++i) poles(i, 1) = poles(1, 1);  // the collapsed row
+  auto knots = [](int n, TColStd_Array1OfReal& k, TColStd_Array1OfInteger& m) {
+    const int spans = n - 3;
+    for (int i = 0; i <= spans; ++i) {
+      k(i + 1) = double(i) / spans;
+      m(i + 1) = (i == 0 || i == spans) ? 4 : 1;
+    }
+  };
+  TColStd_Array1OfReal uk(1, nu - 2), vk(1, nv - 2);
+  TColStd_Array1OfInteger um(1, nu - 2), vm(1, nv - 2);
+  knots(nu, uk, um);
+  knots(nv, vk, vm);
+  Handle(Geom_BSplineSurface) surf = new Geom_BSplineSurface(poles, uk, vk, um, vm, 3, 3);
+  BRepBuilderAPI_MakeFace mf(surf, 1e-6);
+  if (!mf.IsDone()) fail("passage: face construction failed");
+  BRepPrimAPI_MakePrism prism(mf.Face(), gp_Vec(0, 0, 20));
+  prism.Build();
+  if (!prism.IsDone()) fail("passage: sweep failed");
+  TopExp_Explorer ex(prism.Shape(), TopAbs_SHELL);
+  if (!ex.More()) fail("passage: no shell");
+  const TopoDS_Shape shell = ex.Current();
+  if (!BRepCheck_Analyzer(shell).IsValid()) fail("passage: BRepCheck_Analyzer reports an invalid shell");
+  return shell;
+}
+
+// A surface model (no solid) as one part.
+void writeSurfacePart(const TopoDS_Shape& s, const char* name, const std::filesystem::path& path) {
+  Handle(TDocStd_Document) doc = newDoc();
+  Handle(XCAFDoc_ShapeTool) st = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
+  TDF_Label l = st->AddShape(s, Standard_False);
+  if (l.IsNull()) fail(std::string(name) + ": cannot add shape to the document");
+  setName(l, name);
+  writeStep(doc, path);
+}
+
 // ---------------------------------------------------------------- --check
 
 // Round-off below the printed precision would otherwise show up as "-0.00".
@@ -412,6 +481,7 @@ int main(int argc, char** argv) {
     writeSinglePart(makeCylinder(), "CYLINDER", out / "cylinder.step");
     writeSinglePart(makeCantilever(), "CANTILEVER", out / "cantilever.step");
     writeBlocks2(out / "blocks2.step");
+    writeSurfacePart(makePassage(), "PASSAGE", out / "passage.step");
     return 0;
   } catch (const Standard_Failure& e) {
     std::cerr << "make_models: OCCT exception: " << e.GetMessageString() << "\n";
