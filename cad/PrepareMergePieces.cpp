@@ -13,8 +13,9 @@
 namespace aniso::cad::detail {
 namespace {
 
-/// The merged solids may differ from the pieces only by integration round-off.
-constexpr double kMergeVolumeRel = 1e-6;
+/// The merged solids may differ from the pieces only by integration error (OCCT integrates
+/// B-spline faces to about 1e-5 relative).
+constexpr double kMergeVolumeRel = 1e-3;
 
 double volumeOfList(const TopTools_ListOfShape& solids) {
   double v = 0;
@@ -53,8 +54,8 @@ TopTools_ListOfShape mergePieces(const TopTools_ListOfShape& pieces) {
     builder.SetRunParallel(false);
     builder.SetAvoidInternalShapes(true);
     builder.Perform();
-    if (builder.HasErrors() || builder.HasWarnings() || builder.Areas().IsEmpty()) return pieces;
     const double before = volumeOfList(pieces), after = volumeOfList(builder.Areas());
+    if (builder.HasErrors() || builder.HasWarnings() || builder.Areas().IsEmpty()) return pieces;
     if (std::abs(after - before) > kMergeVolumeRel * std::abs(before)) return pieces;
     return builder.Areas();
   } catch (const Standard_Failure&) {
