@@ -16,7 +16,7 @@ void sewLooseFaces(CadModel::Impl& impl, double tol, PrepareReport& report);
 
 /// General fuse of the solids so that touching solids share their interface faces. Parts
 /// that touch within the model's tolerance are glued: the fuzzy value is the largest
-/// vertex/edge tolerance, between 1e-7 and 1e-4 of the diagonal, and the fuse falls back to
+/// vertex/edge tolerance, between 1e-7 and 1e-6 of the diagonal, and the fuse falls back to
 /// 1e-7 × diagonal if that one fails. Overlapping solids are reported (report.overlaps, ids
 /// as in the current shape) and then, by `policy`: Merge — every common region is kept in
 /// one part (OverlapRule.h) and the others lose it; Keep — the whole shape is left
