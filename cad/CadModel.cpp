@@ -28,6 +28,15 @@ const char* formatName(CadFormat f) {
   return "?";
 }
 
+const char* overlapPolicyName(OverlapPolicy p) {
+  switch (p) {
+    case OverlapPolicy::Merge: return "merge";
+    case OverlapPolicy::Keep: return "keep";
+    case OverlapPolicy::Error: return "error";
+  }
+  return "?";
+}
+
 std::string CadModel::Impl::solidName(const TopoDS_Shape& solid, int id) const {
   const TopoDS_Shape key = solid.Located(TopLoc_Location());
   if (nameIndex.IsBound(key)) return names[static_cast<size_t>(nameIndex.Find(key))];
@@ -99,7 +108,7 @@ PrepareReport CadModel::prepare(const PrepareOptions& options) {
   const double diag = detail::exactBoundingBox(impl_->shape).diagonal();
   if (options.fix) detail::fixShape(*impl_, diag, report);
   if (options.sew) detail::sewLooseFaces(*impl_, options.sewRelTolerance * diag, report);
-  if (options.fragment) detail::fragmentSolids(*impl_, diag, report);
+  if (options.fragment) detail::fragmentSolids(*impl_, diag, options.overlaps, report);
   return report;
 }
 

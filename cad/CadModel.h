@@ -38,18 +38,39 @@ struct ShapeSummary {
   std::vector<SolidSummary> solidList;
 };
 
+/// What fragmenting does with solids that overlap (--overlaps).
+enum class OverlapPolicy {
+  Merge,  ///< fragment anyway: each common region is meshed once, in one part (OverlapRule.h)
+  Keep,   ///< leave the whole shape unfragmented (overlapping, unconnected meshes), with a warning
+  Error,  ///< refuse the model: InputError naming the first pair and its overlap volume
+};
+
+/// "merge", "keep", "error" (the --overlaps values).
+const char* overlapPolicyName(OverlapPolicy p);
+
 struct PrepareOptions {
   bool fix = true;        ///< ShapeFix on the whole shape
   bool sew = true;        ///< sew loose faces into shells (tolerance relative to model size)
   bool fragment = true;   ///< general fuse of the solids: conformal interfaces (--no-fragment)
+  OverlapPolicy overlaps = OverlapPolicy::Merge;
   /// Sewing tolerance as a fraction of the bounding-box diagonal.
   double sewRelTolerance = 1e-5;
+};
+
+/// Two solids that overlap: ids are 1-based, in the order of the shape fragmented (as read).
+struct Overlap {
+  int a = 0, b = 0;  ///< a < b
+  std::string nameA, nameB;
+  double volume = 0;    ///< volume of their common region(s)
+  int assignedTo = 0;   ///< a or b: the part that keeps the common region (0: neither, see
+                        ///< OverlapRule.h; always 0 unless the policy is Merge)
 };
 
 struct PrepareReport {
   int facesSewn = 0;                                ///< loose faces joined into shells
   int sharedFaces = 0;                              ///< faces used by two solids after fragmenting
-  std::vector<std::pair<int, int>> overlappingSolids;  ///< 1-based ids (as read) of solids that overlap
+  double fuzzyValue = 0;                            ///< the general fuse's fuzzy value (model units)
+  std::vector<Overlap> overlaps;                    ///< pairs of overlapping solids, by (a, b)
   std::vector<std::string> warnings;
 };
 

@@ -1,6 +1,8 @@
 #pragma once
 // Internal: the preparation steps run by CadModel::prepare(), each its own operator.
 // Every step keeps the part names of solids: it rebinds impl.nameIndex for the images.
+#include <TopTools_ListOfShape.hxx>
+
 #include "cad/detail/CadModelImpl.h"
 
 namespace aniso::cad::detail {
@@ -12,10 +14,24 @@ void fixShape(CadModel::Impl& impl, double diag, PrepareReport& report);
 /// tol; keeps the result only if it leaves fewer free edges. Solids are not touched.
 void sewLooseFaces(CadModel::Impl& impl, double tol, PrepareReport& report);
 
-/// General fuse of the solids so that touching solids share their interface faces.
-/// Overlapping solids are reported (ids as in the current shape) and then the shape is
-/// left unfragmented: merging them would change the volume the user modelled.
-void fragmentSolids(CadModel::Impl& impl, double diag, PrepareReport& report);
+/// General fuse of the solids so that touching solids share their interface faces. Parts
+/// that touch within the model's tolerance are glued: the fuzzy value is the largest
+/// vertex/edge tolerance, between 1e-7 and 1e-6 of the diagonal, and the fuse falls back to
+/// 1e-7 × diagonal if that one fails. Overlapping solids are reported (report.overlaps, ids
+/// as in the current shape) and then, by `policy`: Merge — every common region is kept in
+/// one part (OverlapRule.h) and the others lose it; Keep — the whole shape is left
+/// unfragmented; Error — InputError naming the first pair. A failed fuse, or one whose
+/// images do not add up to their solids' volumes, leaves the shape as it was, with a warning.
+void fragmentSolids(CadModel::Impl& impl, double diag, OverlapPolicy policy, PrepareReport& report);
+
+/// The solids a part made of several fuse pieces becomes: the faces shared by two pieces
+/// are dropped and the rest rebuilt into solids (BOPAlgo_BuilderSolid) from the same faces,
+/// so the interfaces with other parts stay shared. The pieces themselves if that fails or
+/// changes the volume.
+TopTools_ListOfShape mergePieces(const TopTools_ListOfShape& pieces);
+
+/// Volume of a solid (OCCT GProp), 0 if OCCT fails.
+double solidVolume(const TopoDS_Shape& solid);
 
 /// Number of edges (not degenerate) bounding exactly one face of the shape.
 int countFreeEdges(const TopoDS_Shape& shape);

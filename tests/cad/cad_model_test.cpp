@@ -32,7 +32,7 @@ TEST(CadModel, AssemblyBecomesConformalAndKeepsNames) {
   ASSERT_EQ(before.solids, 2);
   const PrepareReport r = m.prepare({});
   EXPECT_EQ(r.sharedFaces, 1);
-  EXPECT_TRUE(r.overlappingSolids.empty());
+  EXPECT_TRUE(r.overlaps.empty());
   const ShapeSummary after = m.summary();
   ASSERT_EQ(after.solids, 2);
   std::vector<std::string> names{after.solidList[0].name, after.solidList[1].name};

@@ -4,6 +4,7 @@
 // main() turns into a one-line message and the same codes.
 #include <string>
 
+#include "cad/CadModel.h"
 #include "mesher/core/MeshOptions.h"
 
 namespace aniso::cli {
@@ -12,6 +13,7 @@ struct InfoArgs {
   std::string file;
   bool json = false;
   bool fragment = true;
+  cad::OverlapPolicy overlaps = cad::OverlapPolicy::Merge;  ///< --overlaps
 };
 int runInfo(const InfoArgs& args);
 
@@ -22,6 +24,7 @@ struct MeshArgs {
   bool binary = false;
   int mshVersion = 41;  ///< MSH output: 41 or 22 (--msh-version 4.1 | 2.2)
   bool fragment = true;
+  cad::OverlapPolicy overlaps = cad::OverlapPolicy::Merge;  ///< --overlaps
   MeshOptions options;
   /// --anisotropy was given. Without it a volume mesh (dim 3) is isotropic (γ_a = 1): the
   /// tetrahedra on a stretched boundary triangle are stretched too, and FE solvers want

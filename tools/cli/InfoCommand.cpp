@@ -51,6 +51,7 @@ int runInfo(const InfoArgs& args) {
   const cad::ShapeSummary asRead = model.summary();
   cad::PrepareOptions popt;
   popt.fragment = args.fragment;
+  popt.overlaps = args.overlaps;
   const cad::PrepareReport prep = model.prepare(popt);
   const cad::ShapeSummary prepared = model.summary();
 
@@ -70,7 +71,7 @@ int runInfo(const InfoArgs& args) {
               summaryText(prepared, "  ").c_str());
   if (prep.facesSewn) std::printf("  %d loose faces sewn\n", prep.facesSewn);
   if (prep.sharedFaces) std::printf("  %d faces shared by two solids\n", prep.sharedFaces);
-  for (const auto& [a, b] : prep.overlappingSolids) std::printf("  solids %d and %d overlap\n", a, b);
+  std::printf("%s", overlapsText(prep, "  ").c_str());
   for (const auto& w : prep.warnings) std::printf("  warning: %s\n", w.c_str());
   return 0;
 }

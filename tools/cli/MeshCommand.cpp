@@ -37,6 +37,7 @@ nlohmann::ordered_json optionsJson(const MeshArgs& a) {
   }
   j["threads"] = a.options.threads;
   j["fragment"] = a.fragment;
+  j["overlaps"] = cad::overlapPolicyName(a.overlaps);
   j["anisotropy"] = s.anisotropy;
   j["gradation"] = s.gradation;
   j["curvature_ratio"] = s.curvatureRatio;
@@ -378,7 +379,7 @@ int runMesh(const MeshArgs& given) {
   report.options = optionsJson(args);
 
   // Reading and preparing the model: failures here are bad input (exit 2).
-  ModelInput in = loadModel(args.file, args.fragment);
+  ModelInput in = loadModel(args.file, args.fragment, args.overlaps);
   report.times = in.times;
   report.extra["model"] = in.summary;
   int dim = args.options.dim;

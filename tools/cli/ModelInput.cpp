@@ -9,7 +9,7 @@
 
 namespace aniso::cli {
 
-ModelInput loadModel(const std::string& file, bool fragment) {
+ModelInput loadModel(const std::string& file, bool fragment, cad::OverlapPolicy overlaps) {
   using Clock = std::chrono::steady_clock;
   auto since = [](Clock::time_point a) { return std::chrono::duration<double>(Clock::now() - a).count(); };
   ModelInput in;
@@ -29,6 +29,7 @@ ModelInput loadModel(const std::string& file, bool fragment) {
   t = Clock::now();
   cad::PrepareOptions popt;
   popt.fragment = fragment;
+  popt.overlaps = overlaps;
   const cad::PrepareReport prep = model.prepare(popt);
   const cad::ShapeSummary summary = model.summary();
   in.times.emplace_back("prepare", since(t));

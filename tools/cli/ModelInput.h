@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "cad/CadModel.h"
 #include "io/AnalyticModel.h"
 #include "mesher/control/ControlSpace2d.h"
 #include "mesher/model/Model.h"
@@ -21,7 +22,10 @@ struct ModelInput {
   std::vector<std::pair<std::string, double>> times; ///< read, prepare, topology
 };
 
-ModelInput loadModel(const std::string& file, bool fragment);
+/// Reads and prepares `file` (fragmenting the solids if `fragment`, overlapping ones by
+/// `overlaps`); the preparation's warnings are logged.
+ModelInput loadModel(const std::string& file, bool fragment,
+                     cad::OverlapPolicy overlaps = cad::OverlapPolicy::Merge);
 
 /// The analytic sizing of an analytic model as a control space over its (u, v) domain.
 std::unique_ptr<ControlSpace2d> analyticControlSpace(const ModelInput& in);

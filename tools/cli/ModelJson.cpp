@@ -28,9 +28,14 @@ nlohmann::ordered_json prepareJson(const cad::PrepareReport& r) {
   nlohmann::ordered_json j;
   j["sewn_faces"] = r.facesSewn;
   j["shared_faces"] = r.sharedFaces;
+  j["fuzzy"] = r.fuzzyValue;
   nlohmann::ordered_json ov = nlohmann::ordered_json::array();
-  for (const auto& [a, b] : r.overlappingSolids) ov.push_back({a, b});
-  j["overlapping_solids"] = ov;
+  for (const cad::Overlap& o : r.overlaps) {
+    nlohmann::ordered_json e{{"a", o.a}, {"b", o.b}, {"name_a", o.nameA}, {"name_b", o.nameB}, {"volume", o.volume}};
+    e["assigned_to"] = o.assignedTo > 0 ? nlohmann::ordered_json(o.assignedTo) : nlohmann::ordered_json();
+    ov.push_back(e);
+  }
+  j["overlaps"] = ov;
   j["warnings"] = r.warnings;
   return j;
 }
@@ -45,6 +50,18 @@ std::string summaryText(const cad::ShapeSummary& s, const std::string& in) {
     << s.bbox.hi.x() << ", " << s.bbox.hi.y() << ", " << s.bbox.hi.z() << "], diagonal " << s.bbox.diagonal() << "\n";
   for (const auto& so : s.solidList)
     o << in << "  solid " << so.id << " \"" << so.name << "\" volume " << so.volume << "\n";
+  return o.str();
+}
+
+std::string overlapsText(const cad::PrepareReport& r, const std::string& in) {
+  std::ostringstream o;
+  o.precision(6);
+  for (const cad::Overlap& x : r.overlaps) {
+    o << in << "solids " << x.a << " \"" << x.nameA << "\" and " << x.b << " \"" << x.nameB << "\" overlap, volume "
+      << x.volume;
+    if (x.assignedTo > 0) o << ", kept in " << x.assignedTo;
+    o << "\n";
+  }
   return o.str();
 }
 

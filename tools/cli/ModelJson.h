@@ -10,9 +10,12 @@ namespace aniso::cli {
 
 /// {"solids","shells","faces","edges","vertices","volume","area","bbox":{...},"solid_list":[...]}
 nlohmann::ordered_json summaryJson(const cad::ShapeSummary& s);
-/// {"sewn_faces","shared_faces","overlapping_solids":[[i,j]],"warnings":[...]}
+/// {"sewn_faces","shared_faces","fuzzy","overlaps":[{"a","b","name_a","name_b","volume","assigned_to"}],
+///  "warnings":[...]}; assigned_to is null when the common region stayed in both (--overlaps keep).
 nlohmann::ordered_json prepareJson(const cad::PrepareReport& r);
 /// Human-readable lines.
 std::string summaryText(const cad::ShapeSummary& s, const std::string& indent);
+/// One line per overlapping pair: ids, names, volume, the part that keeps the region.
+std::string overlapsText(const cad::PrepareReport& r, const std::string& indent);
 
 }  // namespace aniso::cli

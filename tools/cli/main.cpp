@@ -15,6 +15,15 @@ using namespace aniso;
 
 namespace {
 
+void addOverlapsOption(CLI::App& cmd, cad::OverlapPolicy& p) {
+  cmd.add_option("--overlaps", p,
+                 "Overlapping solids: merge (each common region meshed once, in the smaller part), keep (left "
+                 "unfragmented, overlapping meshes) or error (exit 2)")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, cad::OverlapPolicy>{
+          {"merge", cad::OverlapPolicy::Merge}, {"keep", cad::OverlapPolicy::Keep}, {"error", cad::OverlapPolicy::Error}}))
+      ->default_str("merge");
+}
+
 void addSizingOptions(CLI::App& cmd, SizingParameters& s) {
   cmd.add_option("--size", s.size, "Uniform target element size H (model units)");
   cmd.add_option("--hmax", s.hmax, "Largest element size (model units)");
@@ -46,6 +55,7 @@ int main(int argc, char** argv) {
   infoCmd->add_option("FILE", info.file, "STEP, IGES or BREP file")->required();
   infoCmd->add_flag("--json", info.json, "One JSON object on stdout");
   infoCmd->add_flag("!--no-fragment", info.fragment, "Do not fragment touching solids in the prepared model");
+  addOverlapsOption(*infoCmd, info.overlaps);
   infoCmd->fallthrough();
 
   cli::MeshArgs mesh;
@@ -72,6 +82,7 @@ int main(int argc, char** argv) {
       ->transform(CLI::CheckedTransformer(std::map<std::string, int>{{"4.1", 41}, {"2.2", 22}}))
       ->default_str("4.1");
   meshCmd->add_flag("!--no-fragment", mesh.fragment, "Do not make touching solids conformal");
+  addOverlapsOption(*meshCmd, mesh.overlaps);
   meshCmd->add_option("--report", mesh.report, "Write the JSON run report here");
   meshCmd->fallthrough();
 

@@ -1,6 +1,6 @@
 // make_models: writes anisomesh's own sample models as STEP AP214 through XCAF.
 //
-//   make_models OUTDIR        build the models and write OUTDIR/{bracket,assembly2,plate,cylinder,cantilever,blocks2,passage}.step
+//   make_models OUTDIR        build the models and write OUTDIR/{bracket,assembly2,plate,cylinder,cantilever,blocks2,passage,overlap2}.step
 //   make_models --check FILE  read FILE with STEPCAFControl_Reader and print solids, volume, part names
 //
 // Output is deterministic: the STEP header (name, time stamp, author, organization,
@@ -364,6 +364,14 @@ void writeSurfacePart(const TopoDS_Shape& s, const char* name, const std::filesy
   if (l.IsNull()) fail(std::string(name) + ": cannot add shape to the document");
   setName(l, name);
   writeStep(doc, path);
+// Two cubes 10 x 10 x 10 overlapping by half along x: A at the origin, B at (5, 0, 0). Their
+// common region (5 x 10 x 10, volume 500) is what --overlaps merge meshes once; the union's
+// volume is 1500 and its outer area 2 * (15 * 10) * 2 + 2 * 10 * 10 = 800.
+void writeOverlap2(const std::filesystem::path& path) {
+  TopoDS_Shape a = box(0, 0, 0, 10, 10, 10), b = box(0, 0, 0, 10, 10, 10);
+  gp_Trsf shift;
+  shift.SetTranslation(gp_Vec(5, 0, 0));
+  writeTwoParts(path, "OVERLAP2", a, "BOX_A", TopLoc_Location(), b, "BOX_B", TopLoc_Location(shift));
 }
 
 // ---------------------------------------------------------------- --check
@@ -482,6 +490,7 @@ int main(int argc, char** argv) {
     writeSinglePart(makeCantilever(), "CANTILEVER", out / "cantilever.step");
     writeBlocks2(out / "blocks2.step");
     writeSurfacePart(makePassage(), "PASSAGE", out / "passage.step");
+    writeOverlap2(out / "overlap2.step");
     return 0;
   } catch (const Standard_Failure& e) {
     std::cerr << "make_models: OCCT exception: " << e.GetMessageString() << "\n";

@@ -1,0 +1,47 @@
+// The rule deciding which overlapping part keeps a common region (cad/OverlapRule.h).
+#include <gtest/gtest.h>
+
+#include "cad/OverlapRule.h"
+
+using namespace aniso::cad;
+
+TEST(OverlapRule, SmallerPartKeepsTheRegion) {
+  const std::vector<double> vol{0, 5000, 12.5, 300};  // 1 a plate, 2 a screw, 3 a washer
+  EXPECT_EQ(regionOwner({1, 2}, vol), 2);
+  EXPECT_EQ(regionOwner({1, 3}, vol), 3);
+  EXPECT_EQ(regionOwner({1, 2, 3}, vol), 2);
+  EXPECT_EQ(regionOwner({3, 1}, vol), 3);
+}
+
+TEST(OverlapRule, TiesGoToThePartFirstInTheFile) {
+  const std::vector<double> vol{0, 1000, 1000 * (1 + 0.1 * kVolumeTieRel), 1000 * (1 - 0.1 * kVolumeTieRel)};
+  EXPECT_EQ(regionOwner({1, 2}, vol), 1);
+  EXPECT_EQ(regionOwner({2, 1}, vol), 1);
+  EXPECT_EQ(regionOwner({3, 2}, vol), 2);
+  // Beyond the tie tolerance the volume decides again.
+  const std::vector<double> apart{0, 1000, 1000 * (1 - 10 * kVolumeTieRel)};
+  EXPECT_EQ(regionOwner({1, 2}, apart), 2);
+}
+
+TEST(OverlapRule, PairsSumTheirRegionsAndNameTheKeeper) {
+  // Region 1: parts 1, 2 (kept by 2); region 2: parts 1, 2, 3 (kept by 3); region 3: 1, 2 (kept by 1).
+  const std::vector<CommonRegion> regions{{{1, 2}, 4.0, 2}, {{1, 2, 3}, 1.0, 3}, {{1, 2}, 2.0, 1}};
+  const std::vector<Overlap> pairs = overlapPairs(regions);
+  ASSERT_EQ(pairs.size(), 3u);
+  EXPECT_EQ(std::make_pair(pairs[0].a, pairs[0].b), std::make_pair(1, 2));
+  EXPECT_DOUBLE_EQ(pairs[0].volume, 7.0);
+  EXPECT_EQ(pairs[0].assignedTo, 2);  // 4 kept by 2 against 2 kept by 1
+  EXPECT_EQ(std::make_pair(pairs[1].a, pairs[1].b), std::make_pair(1, 3));
+  EXPECT_DOUBLE_EQ(pairs[1].volume, 1.0);
+  EXPECT_EQ(pairs[1].assignedTo, 3);
+  EXPECT_EQ(std::make_pair(pairs[2].a, pairs[2].b), std::make_pair(2, 3));
+  EXPECT_EQ(pairs[2].assignedTo, 3);
+  // The volume counted twice or more: 4 + 2 × 1 + 2.
+  EXPECT_DOUBLE_EQ(overlapExcess(regions), 8.0);
+}
+
+TEST(OverlapRule, UnassignedRegionsNameNoKeeper) {
+  const std::vector<Overlap> pairs = overlapPairs({{{1, 2}, 3.0, 0}});
+  ASSERT_EQ(pairs.size(), 1u);
+  EXPECT_EQ(pairs[0].assignedTo, 0);
+}
