@@ -16,6 +16,7 @@
 #include "cad/detail/Readers.h"
 #include "cad/detail/ShapeSummary.h"
 #include "mesher/core/Error.h"
+#include "mesher/core/Log.h"
 
 namespace aniso::cad {
 
@@ -84,6 +85,7 @@ CadModel CadModel::read(const std::string& path) {
     case CadFormat::Brep: detail::readBrep(*impl); break;
   }
   if (impl->shape.IsNull()) throw InputError(path + ": the file contains no shape");
+  for (const std::string& w : impl->readWarnings) logWarning(path + ": " + w);
   TopTools_IndexedMapOfShape faces, edges;
   TopExp::MapShapes(impl->shape, TopAbs_FACE, faces);
   TopExp::MapShapes(impl->shape, TopAbs_EDGE, edges);
@@ -97,9 +99,17 @@ ShapeSummary CadModel::summary() const { return detail::summarize(*impl_); }
 PrepareReport CadModel::prepare(const PrepareOptions& options) {
   PrepareReport report;
   const double diag = detail::exactBoundingBox(impl_->shape).diagonal();
-  if (options.fix) detail::fixShape(*impl_, diag, report);
-  if (options.sew) detail::sewLooseFaces(*impl_, options.sewRelTolerance * diag, report);
-  if (options.fragment) detail::fragmentSolids(*impl_, diag, report);
+  // each step in a child process: a crash of OCCT costs that step only (detail/Prepare.h)
+  if (options.fix)
+    detail::runPrepareStep("shape fixing", "prepare-fix", *impl_, report,
+                           [&](Impl& impl, PrepareReport& r) { detail::fixShape(impl, diag, r); });
+  if (options.sew)
+    detail::runPrepareStep("sewing", "prepare-sew", *impl_, report, [&](Impl& impl, PrepareReport& r) {
+      detail::sewLooseFaces(impl, options.sewRelTolerance * diag, r);
+    });
+  if (options.fragment)
+    detail::runPrepareStep("fragmenting the solids", "prepare-fragment", *impl_, report,
+                           [&](Impl& impl, PrepareReport& r) { detail::fragmentSolids(impl, diag, r); });
   return report;
 }
 

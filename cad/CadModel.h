@@ -7,7 +7,9 @@
 //   PrepareReport r = m.prepare(opts);          // fix, sew, fragment (conformal assemblies)
 //   Model model = m.topology();                 // the mesher's view (mesher/model/Model.h)
 //
-// OCCT exceptions never escape: they become InputError (reading) or MeshingError.
+// OCCT exceptions never escape: they become InputError (reading) or MeshingError. OCCT runs
+// in child processes (cad/detail/ChildProcess.h): a crash of the kernel (SIGSEGV) while
+// reading makes read() try the next reader path, and while preparing costs that step.
 #include <memory>
 #include <string>
 #include <vector>
@@ -46,6 +48,8 @@ struct PrepareOptions {
   double sewRelTolerance = 1e-5;
 };
 
+/// Crosses a process boundary (cad/PrepareIsolated.cpp encodes it): a new field must be
+/// added to encode() and decode() there.
 struct PrepareReport {
   int facesSewn = 0;                                ///< loose faces joined into shells
   int sharedFaces = 0;                              ///< faces used by two solids after fragmenting
@@ -58,7 +62,10 @@ class CadModel {
   /// Reads a STEP, IGES or BREP file. The reader is chosen by the file's content first
   /// (STEP "ISO-10303-21", IGES's 80-column S/G/D/P/T records, BREP's "DBRep_DrawableShape"
   /// or "CASCADE Topology"), by extension second. Throws InputError with a one-line message
-  /// naming the file for a missing, unreadable, empty, non-CAD or shapeless file.
+  /// naming the file for a missing, unreadable, empty, non-CAD or shapeless file. STEP is
+  /// read through XCAF (part names), else the plain reader, else root by root skipping the
+  /// roots that fail; what was given up is logged as a warning. When every path crashes
+  /// or fails: InputError "...: OpenCASCADE could not read this STEP file (...)".
   static CadModel read(const std::string& path);
 
   CadModel(CadModel&&) noexcept;

@@ -1,0 +1,59 @@
+#include <sstream>
+
+#include "cad/detail/ChildProcess.h"
+#include "cad/detail/Prepare.h"
+#include "mesher/core/Error.h"
+
+namespace aniso::cad::detail {
+namespace {
+
+// The report crosses the process boundary as text: one field per line, strings length-
+// prefixed. Every field of PrepareReport must be here (CadModel.h says so).
+std::string encode(const PrepareReport& r) {
+  std::ostringstream out;
+  out << r.facesSewn << ' ' << r.sharedFaces << ' ' << r.overlappingSolids.size();
+  for (const auto& [a, b] : r.overlappingSolids) out << ' ' << a << ' ' << b;
+  out << ' ' << r.warnings.size();
+  for (const std::string& w : r.warnings) out << ' ' << w.size() << ':' << w;
+  return out.str();
+}
+
+PrepareReport decode(const std::string& text) {
+  std::istringstream in(text);
+  PrepareReport r;
+  size_t n = 0;
+  in >> r.facesSewn >> r.sharedFaces >> n;
+  r.overlappingSolids.resize(n);
+  for (auto& [a, b] : r.overlappingSolids) in >> a >> b;
+  in >> n;
+  r.warnings.resize(n);
+  for (std::string& w : r.warnings) {
+    size_t len = 0;
+    char colon = 0;
+    in >> len >> colon;
+    w.resize(len);
+    in.read(w.data(), static_cast<std::streamsize>(len));
+  }
+  if (!in) throw MeshingError("the preparation report of the child process is corrupt");
+  return r;
+}
+
+}  // namespace
+
+void runPrepareStep(const char* step, const char* crashPoint, CadModel::Impl& impl, PrepareReport& report,
+                    const std::function<void(CadModel::Impl&, PrepareReport&)>& run) {
+  // the child starts from copies of impl and report, and sends both back
+  const ChildOutcome o = runInChild(impl, [&](CadModel::Impl& i) {
+    testCrashPoint(crashPoint);
+    run(i, report);
+    return encode(report);
+  });
+  if (o.kind == ChildOutcome::Done) {
+    report = decode(o.payload);
+    return;
+  }
+  report.warnings.push_back(std::string(step) + (o.kind == ChildOutcome::Crashed ? " crashed in OpenCASCADE (" : " failed (") +
+                            o.message + "); the shape is kept as it was before it");
+}
+
+}  // namespace aniso::cad::detail

@@ -1,0 +1,47 @@
+#pragma once
+// Internal: OCCT work run in a forked child process, so that a crash of the kernel (a
+// SIGSEGV in a reader, in ShapeFix, in the general fuse) ends the child, never us.
+//
+// runInChild(impl, work) forks; the child runs work(impl) on its copy of impl and writes
+// the resulting shape (binary BREP, exact) with its part names and work's returned payload
+// to a private temporary folder; the parent reads them back into impl. Turning the signal
+// into an exception in-process (OSD::SetSignal, OCC_CATCH_SIGNALS: a longjmp out of the
+// middle of OCCT) could leave the heap inconsistent for the rest of the run, which is why
+// the work runs in a process that is thrown away. Cost: one fork (copy-on-write) and one
+// binary BREP write + read of a changed shape (measured: reading 3 large STEP files is not
+// slower). The child's stdout and stderr go to /dev/null.
+//
+// A shape crosses the boundary exactly except for its placements: BinTools rebuilds each
+// gp_Trsf from its 12 values (gp_Trsf::SetValues), so a rotated instance may move by an
+// ulp (a solid's volume differs in the 16th digit); counts and names are unchanged.
+//
+// Outcome:
+//   Done     impl holds the child's shape and names; `payload` what work returned.
+//   Input    work threw InputError: `message` is its text; impl unchanged.
+//   Failed   work threw anything else (Standard_Failure, MeshingError, std::exception).
+//   Crashed  the child was killed by a signal (`message`: "signal 11 (Segmentation fault)").
+#include <functional>
+#include <string>
+
+#include "cad/detail/CadModelImpl.h"
+
+namespace aniso::cad::detail {
+
+struct ChildOutcome {
+  enum Kind { Done, Input, Failed, Crashed } kind = Failed;
+  std::string message;
+  std::string payload;
+  bool ok() const { return kind == Done; }
+};
+
+ChildOutcome runInChild(CadModel::Impl& impl, const std::function<std::string(CadModel::Impl&)>& work);
+
+/// Test hook: true when the environment variable ANISOMESH_TEST_CRASH lists `point`
+/// (comma-separated, e.g. "reader-xcaf,prepare-fix"). The points are named where they are
+/// used; each raises SIGSEGV there, so that the recovery from a kernel crash is tested
+/// without a model that crashes OCCT.
+bool testCrashRequested(const char* point);
+/// Raises SIGSEGV when testCrashRequested(point).
+void testCrashPoint(const char* point);
+
+}  // namespace aniso::cad::detail
