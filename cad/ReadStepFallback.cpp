@@ -9,6 +9,10 @@
 #include <STEPControl_Reader.hxx>
 #include <Standard_ErrorHandler.hxx>
 #include <Standard_Failure.hxx>
+#include <StepData_StepModel.hxx>
+#include <StepShape_ManifoldSolidBrep.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS_Compound.hxx>
 
 #include "cad/detail/ChildProcess.h"
@@ -20,6 +24,21 @@ namespace {
 
 void readFile(STEPControl_Reader& reader, const std::string& path) {
   if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) throw InputError(path + ": not a readable STEP file");
+}
+
+/// "; k of n solids could not be transferred" when the shape has fewer distinct solids
+/// than the file has solid B-reps (OCCT's transfer skips an entity that raised), else "".
+std::string lostSolids(STEPControl_Reader& reader, const TopoDS_Shape& shape) {
+  const Handle(StepData_StepModel) model = reader.StepModel();
+  int breps = 0;
+  for (int i = 1; i <= model->NbEntities(); ++i)
+    if (model->Value(i)->IsKind(STANDARD_TYPE(StepShape_ManifoldSolidBrep))) ++breps;
+  TopTools_IndexedMapOfShape solids, distinct;
+  TopExp::MapShapes(shape, TopAbs_SOLID, solids);
+  for (int i = 1; i <= solids.Extent(); ++i) distinct.Add(solids(i).Located(TopLoc_Location()));
+  if (distinct.Extent() >= breps) return {};
+  return "; " + std::to_string(breps - distinct.Extent()) + " of " + std::to_string(breps) +
+         " solid(s) could not be transferred";
 }
 
 }  // namespace
@@ -59,7 +78,9 @@ std::string readStepRoots(CadModel::Impl& impl) {
   }
   if (kept == 0) throw MeshingError("no root of " + std::to_string(n) + " could be transferred");
   impl.shape = kept == 1 && n == 1 ? TopoDS_Shape(reader.OneShape()) : TopoDS_Shape(c);
-  return skipped.empty() ? std::string() : "skipped root(s) " + skipped + " of " + std::to_string(n);
+  const std::string lost = lostSolids(reader, impl.shape);
+  if (skipped.empty()) return lost.empty() ? std::string() : lost.substr(2);
+  return "skipped root(s) " + skipped + " of " + std::to_string(n) + lost;
 }
 
 }  // namespace aniso::cad::detail

@@ -14,8 +14,9 @@ void readStepXcaf(CadModel::Impl& impl);
 void readStepPlain(CadModel::Impl& impl);
 /// STEPControl_Reader one root at a time with OCCT's signals turned into exceptions
 /// (OSD::SetSignal, for the child process only): a root that fails or crashes is skipped.
-/// Returns "" or which roots were skipped ("skipped root(s) 2, 5 of 7"); throws InputError
-/// when no root could be transferred.
+/// Returns "" or what was lost ("skipped root(s) 2, 5 of 7; 3 of 40 solid(s) could not be
+/// transferred": OCCT's transfer drops an entity that raised); throws when no root could
+/// be transferred.
 std::string readStepRoots(CadModel::Impl& impl);
 void readIges(CadModel::Impl& impl);
 void readBrep(CadModel::Impl& impl);

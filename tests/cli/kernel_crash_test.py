@@ -98,6 +98,20 @@ with tempfile.TemporaryDirectory() as t:
         expect("two roots, the first crashes: the second read", j["solids"] == 1, str(j["solids"]))
         expect("two roots, the first crashes: warning names it", "skipped root(s) 1 of 2" in err, err)
 
+    # 3c: a malformed file that crashes OCCT 7.6 itself (no hook): a VERTEX_POINT whose
+    # point is its own EDGE_CURVE. XCAF and plain readers die with SIGSEGV; root by root,
+    # OCCT's transfer drops the broken solid and the warning says so.
+    text = open(blocks).read()
+    edge = re.search(r"^#(\d+) = EDGE_CURVE\('',#(\d+),", text, re.M)
+    broken = os.path.join(t, "cyclic.step")
+    open(broken, "w").write(re.sub(r"^#%s = VERTEX_POINT\(.*$" % edge.group(2),
+                                   "#%s = VERTEX_POINT('',#%s);" % (edge.group(2), edge.group(1)), text, flags=re.M))
+    rc, j, err = info(broken)
+    expect("cyclic vertex: not a crash, exit 0", rc == 0, f"exit {rc}: {err}")
+    if rc == 0:
+        expect("cyclic vertex: the good cube read", j["solids"] == 1 and abs(j["volume"] - 1000) < 1e-6, str(j["solids"]))
+        expect("cyclic vertex: warning", "crashed" in err and "1 of 2 solid(s) could not be transferred" in err, err)
+
     # 4: preparation steps: a crash keeps the shape as it was before the step.
     rc, ref_blocks, err = info(blocks)
     expect("blocks2 reference", rc == 0 and ref_blocks["prepared"]["shared_faces"] == 1, err)
