@@ -1,8 +1,11 @@
 #pragma once
 // MeshOptions — every parameter of the meshing process in one struct, passed down by
 // reference; no globals (STYLE.md). Defaults are the thesis' table 3.2.
+#include <memory>
 #include <optional>
 #include <string>
+
+#include "mesher/core/Cancel.h"
 
 namespace aniso {
 
@@ -48,6 +51,9 @@ struct MeshOptions {
   int threads = 0;      ///< 0 = all cores
   SizingParameters sizing;
   std::string sizingFile;  ///< user sizing sources (--sizing FILE.json)
+  /// Stops the run (--time-limit; Cancel.h); shared by every copy of the options, null:
+  /// never stops.
+  std::shared_ptr<const CancelToken> cancel;
 };
 
 }  // namespace aniso

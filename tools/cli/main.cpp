@@ -63,6 +63,8 @@ int main(int argc, char** argv) {
   addSizingOptions(*meshCmd, mesh.options.sizing);
   meshCmd->add_option("--sizing", mesh.options.sizingFile, "User sizing sources (JSON)");
   meshCmd->add_option("--threads", mesh.options.threads, "Threads (0 = all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
+  meshCmd->add_option("--time-limit", mesh.timeLimit, "Stop after S seconds: status failed, exit 3, no mesh (0 = none)")
+      ->check(CLI::NonNegativeNumber);
   meshCmd->add_flag("--binary", mesh.binary, "Binary output where the format has it");
   meshCmd->add_option("--msh-version", mesh.mshVersion, "MSH format version: 4.1 or 2.2")
       ->transform(CLI::CheckedTransformer(std::map<std::string, int>{{"4.1", 41}, {"2.2", 22}}))
