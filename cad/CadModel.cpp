@@ -64,7 +64,7 @@ std::string readHead(const std::string& path) {
 
 }  // namespace
 
-CadModel CadModel::read(const std::string& path) {
+CadModel CadModel::read(const std::string& path, const CancelToken* cancel) {
   detail::silenceOcctMessages();
   const std::string head = readHead(path);
   const std::optional<CadFormat> byExt = formatFromExtension(path);
@@ -79,11 +79,13 @@ CadModel CadModel::read(const std::string& path) {
   auto impl = std::make_unique<Impl>();
   impl->path = path;
   impl->format = *byContent;
+  impl->cancel = cancel;
   switch (impl->format) {
     case CadFormat::Step: detail::readStep(*impl); break;
     case CadFormat::Iges: detail::readIges(*impl); break;
     case CadFormat::Brep: detail::readBrep(*impl); break;
   }
+  impl->cancel = nullptr;
   if (impl->shape.IsNull()) throw InputError(path + ": the file contains no shape");
   for (const std::string& w : impl->readWarnings) logWarning(path + ": " + w);
   TopTools_IndexedMapOfShape faces, edges;
@@ -98,6 +100,11 @@ ShapeSummary CadModel::summary() const { return detail::summarize(*impl_); }
 
 PrepareReport CadModel::prepare(const PrepareOptions& options) {
   PrepareReport report;
+  impl_->cancel = options.cancel;
+  struct Reset {  // the token lives no longer than this call
+    Impl& impl;
+    ~Reset() { impl.cancel = nullptr; }
+  } reset{*impl_};
   const double diag = detail::exactBoundingBox(impl_->shape).diagonal();
   // each step in a child process: a crash of OCCT costs that step only (detail/Prepare.h)
   if (options.fix)

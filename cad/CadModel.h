@@ -17,6 +17,10 @@
 #include "mesher/core/Types.h"
 #include "mesher/model/Model.h"
 
+namespace aniso {
+class CancelToken;  // mesher/core/Cancel.h
+}
+
 namespace aniso::cad {
 
 enum class CadFormat { Step, Iges, Brep };
@@ -46,6 +50,8 @@ struct PrepareOptions {
   bool fragment = true;   ///< general fuse of the solids: conformal interfaces (--no-fragment)
   /// Sewing tolerance as a fraction of the bounding-box diagonal.
   double sewRelTolerance = 1e-5;
+  /// Stops a step under way (its child process is killed): Cancelled naming the step.
+  const CancelToken* cancel = nullptr;
 };
 
 /// Crosses a process boundary (cad/PrepareIsolated.cpp encodes it): a new field must be
@@ -66,7 +72,9 @@ class CadModel {
   /// read through XCAF (part names), else the plain reader, else root by root skipping the
   /// roots that fail; what was given up is logged as a warning. When every path crashes
   /// or fails: InputError "...: OpenCASCADE could not read this STEP file (...)".
-  static CadModel read(const std::string& path);
+  /// With `cancel`, a read still running when the token stops is killed: Cancelled
+  /// ("... during reading").
+  static CadModel read(const std::string& path, const CancelToken* cancel = nullptr);
 
   CadModel(CadModel&&) noexcept;
   CadModel& operator=(CadModel&&) noexcept;

@@ -7,6 +7,7 @@
 #include <TopoDS_Iterator.hxx>
 
 #include <fcntl.h>
+#include <poll.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -20,6 +21,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "mesher/core/Cancel.h"
 #include "mesher/core/Error.h"
 
 namespace aniso::cad::detail {
@@ -134,6 +136,22 @@ void readShape(CadModel::Impl& impl, const Exchange& x, std::istream& meta) {
   _exit(meta ? 0 : 1);  // no atexit handlers, no flushing of the parent's buffers
 }
 
+/// Waits until the child has ended (its end of `alive` closes) or the token stops the
+/// run: then the child is killed and Cancelled thrown naming `phase`.
+void awaitChild(pid_t pid, int alive, const CancelToken* cancel, const char* phase) {
+  constexpr int kPollMs = 50;  // how often a request without deadline is noticed
+  pollfd p{alive, POLLIN, 0};
+  while (cancel) {  // bounded by the token's deadline
+    const int r = poll(&p, 1, kPollMs);
+    if (r > 0 || (r < 0 && errno != EINTR)) return;
+    if (cancel->stopped()) {
+      kill(pid, SIGKILL);
+      waitpid(pid, nullptr, 0);
+      cancel->check(phase);
+    }
+  }
+}
+
 /// The parent's side: the child's status and files.
 ChildOutcome collect(pid_t pid, CadModel::Impl& impl, const Exchange& x) {
   int status = 0;
@@ -162,21 +180,35 @@ ChildOutcome collect(pid_t pid, CadModel::Impl& impl, const Exchange& x) {
 
 }  // namespace
 
-ChildOutcome runInChild(CadModel::Impl& impl, const std::function<std::string(CadModel::Impl&)>& work) {
+ChildOutcome runInChild(CadModel::Impl& impl, const char* phase,
+                        const std::function<std::string(CadModel::Impl&)>& work) {
   std::string pattern = (fs::temp_directory_path() / "anisomesh-XXXXXX").string();
   if (!mkdtemp(pattern.data()))
     throw MeshingError(std::string("cannot create a temporary folder: ") + std::strerror(errno));
   const Exchange x{pattern};
   std::fflush(nullptr);  // nothing buffered is written twice
-  const pid_t pid = fork();
+  int alive[2];  // the child holds the write end until it ends
+  const pid_t pid = pipe(alive) == 0 ? fork() : -1;
+  std::error_code ec;
   if (pid < 0) {
-    std::error_code ec;
     fs::remove_all(x.dir, ec);
     throw MeshingError(std::string("cannot start a child process: ") + std::strerror(errno));
   }
-  if (pid == 0) childMain(impl, work, x);
-  ChildOutcome o = collect(pid, impl, x);
-  std::error_code ec;
+  if (pid == 0) {
+    close(alive[0]);
+    childMain(impl, work, x);
+  }
+  close(alive[1]);
+  ChildOutcome o;
+  try {
+    awaitChild(pid, alive[0], impl.cancel, phase);
+    o = collect(pid, impl, x);
+  } catch (...) {
+    close(alive[0]);
+    fs::remove_all(x.dir, ec);
+    throw;
+  }
+  close(alive[0]);
   fs::remove_all(x.dir, ec);
   return o;
 }

@@ -43,7 +43,7 @@ PrepareReport decode(const std::string& text) {
 void runPrepareStep(const char* step, const char* crashPoint, CadModel::Impl& impl, PrepareReport& report,
                     const std::function<void(CadModel::Impl&, PrepareReport&)>& run) {
   // the child starts from copies of impl and report, and sends both back
-  const ChildOutcome o = runInChild(impl, [&](CadModel::Impl& i) {
+  const ChildOutcome o = runInChild(impl, step, [&](CadModel::Impl& i) {
     testCrashPoint(crashPoint);
     run(i, report);
     return encode(report);

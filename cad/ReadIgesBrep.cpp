@@ -30,7 +30,7 @@ namespace {
 /// Runs a reader in a child process (ChildProcess.h); its InputError passes, a crash or an
 /// OCCT failure becomes an InputError naming the format.
 void readIsolated(CadModel::Impl& impl, const char* format, void (*reader)(CadModel::Impl&)) {
-  const ChildOutcome o = runInChild(impl, [reader](CadModel::Impl& i) {
+  const ChildOutcome o = runInChild(impl, "reading", [reader](CadModel::Impl& i) {
     reader(i);
     return std::string();
   });

@@ -130,14 +130,14 @@ void readStep(CadModel::Impl& impl) {
   if (!hasStepTerminator(impl.path))
     throw InputError(impl.path + ": STEP file is truncated (no END-ISO-10303-21)");
   // 1: XCAF, with part names. Its refusals (not STEP, nothing to transfer) are the file's.
-  const ChildOutcome xcaf = runInChild(impl, [](CadModel::Impl& i) {
+  const ChildOutcome xcaf = runInChild(impl, "reading", [](CadModel::Impl& i) {
     readStepXcaf(i);
     return std::string();
   });
   if (xcaf.kind == ChildOutcome::Done) return;
   if (xcaf.kind == ChildOutcome::Input) throw InputError(xcaf.message);
   // 2: the plain reader, without the XCAF document (no part names).
-  const ChildOutcome plain = runInChild(impl, [](CadModel::Impl& i) {
+  const ChildOutcome plain = runInChild(impl, "reading", [](CadModel::Impl& i) {
     readStepPlain(i);
     return std::string();
   });
@@ -147,7 +147,7 @@ void readStep(CadModel::Impl& impl) {
     return;
   }
   // 3: root by root, skipping the roots that fail.
-  const ChildOutcome roots = runInChild(impl, [](CadModel::Impl& i) { return readStepRoots(i); });
+  const ChildOutcome roots = runInChild(impl, "reading", [](CadModel::Impl& i) { return readStepRoots(i); });
   if (roots.kind == ChildOutcome::Done) {
     impl.readWarnings.push_back("the XCAF and plain STEP readers failed (" + failure(xcaf) + "; " + failure(plain) +
                                 "); read root by root, without part names" +

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cad/CadModel.h"
+#include "mesher/core/Cancel.h"
 
 namespace aniso::cad {
 
@@ -20,6 +21,8 @@ struct CadModel::Impl {
   /// What reading had to give up (a reader path that crashed, parts skipped); logged as
   /// warnings by CadModel::read.
   std::vector<std::string> readWarnings;
+  /// The token of the operation under way (read, prepare): stops the child processes.
+  const CancelToken* cancel = nullptr;
 
   /// Name of a solid: its part name if known, else "SOLID<id>".
   std::string solidName(const TopoDS_Shape& solid, int id) const;

@@ -34,7 +34,10 @@ struct ChildOutcome {
   bool ok() const { return kind == Done; }
 };
 
-ChildOutcome runInChild(CadModel::Impl& impl, const std::function<std::string(CadModel::Impl&)>& work);
+/// With impl.cancel set, the child is killed when the token stops the run, and Cancelled
+/// (mesher/core/Cancel.h) is thrown naming `phase`.
+ChildOutcome runInChild(CadModel::Impl& impl, const char* phase,
+                        const std::function<std::string(CadModel::Impl&)>& work);
 
 /// Test hook: true when the environment variable ANISOMESH_TEST_CRASH lists `point`
 /// (comma-separated, e.g. "reader-xcaf,prepare-fix"). The points are named where they are

@@ -2,9 +2,10 @@
 # --time-limit (issue 20, "never hang"): a run stopped by its limit exits 3 with one line
 # naming the limit and the phase, writes its report with status failed and no mesh; a
 # generous limit changes nothing (byte-identical mesh).
-# usage: time_limit_test.sh CLI SHARED_BENCH_DIR
-cli=$1; bench=$2
-cube=$bench/cube_1.step
+# usage: time_limit_test.sh CLI SHARED_DIR
+cli=$1; shared=$2
+cube=$shared/bench/cube_1.step
+big=$shared/assemblies/NEO.step   # 3.5 MB: several seconds to read
 t=$(mktemp -d); trap 'rm -rf "$t"' EXIT
 pass=0; fail=0
 result() { if [ -z "$2" ]; then pass=$((pass+1)); echo "ok $1"; else fail=$((fail+1)); echo "FAIL $1: $2"; fi; }
@@ -35,6 +36,19 @@ why=""
 [ -z "$why" ] && ! grep -q "during reading" "$t/se" && why="message: $(cat "$t/se")"
 [ -z "$why" ] && [ -e "$t/r.msh" ] && why="left a mesh file"
 result "limit while reading" "$why"
+
+# 2b: a read still running at the limit is killed (it runs in a child process), soon,
+# leaving no temporary folder.
+mkdir "$t/tmp"
+start=$(date +%s.%N)
+TMPDIR=$t/tmp timeout 120 "$cli" mesh "$big" -o "$t/big.msh" --time-limit 0.3 > /dev/null 2> "$t/se"; rc=$?
+took=$(echo "$(date +%s.%N) - $start" | bc)
+why=""
+[ $rc -eq 3 ] || why="exit $rc (want 3)"
+[ -z "$why" ] && ! grep -q "time limit of 0.3 s during reading" "$t/se" && why="message: $(cat "$t/se")"
+[ -z "$why" ] && [ "$(echo "$took > 3" | bc)" -eq 1 ] && why="took $took s"
+[ -z "$why" ] && [ -n "$(ls "$t/tmp")" ] && why="left $(ls "$t/tmp")"
+result "limit during a long read: killed after $took s" "$why"
 
 # 3: a generous limit changes nothing.
 timeout 120 "$cli" mesh "$cube" --size 0.05 -o "$t/free.msh" -q; rc1=$?

@@ -284,7 +284,7 @@ static int meshRun(const MeshArgs& given, io::Report& report) {
   report.options = optionsJson(args);
 
   // Reading and preparing the model: failures here are bad input (exit 2).
-  ModelInput in = loadModel(args.file, args.fragment);
+  ModelInput in = loadModel(args.file, args.fragment, args.options.cancel.get());
   checkCancel(args.options.cancel.get(), "reading");
   report.times = in.times;
   report.extra["model"] = in.summary;

@@ -8,6 +8,7 @@
 
 #include "io/AnalyticModel.h"
 #include "mesher/control/ControlSpace2d.h"
+#include "mesher/core/Cancel.h"
 #include "mesher/model/Model.h"
 
 namespace aniso::cli {
@@ -21,7 +22,8 @@ struct ModelInput {
   std::vector<std::pair<std::string, double>> times; ///< read, prepare, topology
 };
 
-ModelInput loadModel(const std::string& file, bool fragment);
+/// `cancel` (--time-limit) stops reading and preparing too (cad::CadModel).
+ModelInput loadModel(const std::string& file, bool fragment, const CancelToken* cancel = nullptr);
 
 /// The analytic sizing of an analytic model as a control space over its (u, v) domain.
 std::unique_ptr<ControlSpace2d> analyticControlSpace(const ModelInput& in);
