@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <string>
 #include <thread>
 
 #include "mesher/core/Cancel.h"
@@ -67,10 +68,24 @@ TEST(Cancel, OneWorkerStopsTheOthers) {
   EXPECT_TRUE(token.stopped());
 }
 
-}  // namespace aniso
-
 // The meshers stop at their first check and name the phase; no partial result escapes.
-namespace aniso {
+namespace {
+
+/// Runs mesh(options) with a token already stopped: it must throw Cancelled naming phase.
+template <class Input, class Mesh>
+void expectStoppedIn(Input in, Mesh mesh, const std::string& phase) {
+  auto token = std::make_shared<CancelToken>();
+  token->request();
+  in.options.cancel = token;
+  try {
+    mesh(in);
+    ADD_FAILURE() << "no Cancelled";
+  } catch (const Cancelled& e) {
+    EXPECT_EQ(e.phase(), phase);
+  }
+}
+
+}  // namespace
 
 TEST(Cancel, SurfaceMesherStopsAndNamesThePhase) {
   const Model m = test::sphere();
@@ -80,15 +95,7 @@ TEST(Cancel, SurfaceMesherStopsAndNamesThePhase) {
   in.options.sizing.hmaxRel = 0.05;
   const SurfaceMeshResult whole = meshSurfaces(in);  // the same options with no token: meshes
   ASSERT_TRUE(whole.ok());
-  auto token = std::make_shared<CancelToken>();
-  token->request();
-  in.options.cancel = token;
-  try {
-    meshSurfaces(in);
-    FAIL() << "no Cancelled";
-  } catch (const Cancelled& e) {
-    EXPECT_EQ(e.phase(), "control spaces");
-  }
+  expectStoppedIn(in, meshSurfaces, "control spaces");
 }
 
 TEST(Cancel, VolumeMesherStopsAndNamesThePhase) {
@@ -98,16 +105,8 @@ TEST(Cancel, VolumeMesherStopsAndNamesThePhase) {
   in.surface = &m.surface;
   in.options.threads = 2;
   in.refine = in.improve = in.quality = false;
-  ASSERT_TRUE(meshVolumes(in).ok());
-  auto token = std::make_shared<CancelToken>();
-  token->request();
-  in.options.cancel = token;
-  try {
-    meshVolumes(in);
-    FAIL() << "no Cancelled";
-  } catch (const Cancelled& e) {
-    EXPECT_EQ(e.phase(), "volume meshing");
-  }
+  ASSERT_TRUE(meshVolumes(in).ok());  // no token: meshes
+  expectStoppedIn(in, meshVolumes, "volume meshing");
 }
 
 }  // namespace aniso
