@@ -23,6 +23,7 @@
 
 #include "mesher/core/Cancel.h"
 #include "mesher/core/Error.h"
+#include "mesher/core/Log.h"
 
 namespace aniso::cad::detail {
 namespace {
@@ -99,6 +100,21 @@ void readShape(CadModel::Impl& impl, const Exchange& x, std::istream& meta) {
   }
 }
 
+/// Runs body, every exception an outcome (InputError: Input, anything else: Failed).
+ChildOutcome guarded(const std::function<std::string()>& body) {
+  try {
+    return {ChildOutcome::Done, {}, body()};
+  } catch (const InputError& e) {
+    return {ChildOutcome::Input, e.what(), {}};
+  } catch (const Standard_Failure& e) {
+    return {ChildOutcome::Failed, std::string(e.DynamicType()->Name()) + ": " + e.GetMessageString(), {}};
+  } catch (const std::exception& e) {
+    return {ChildOutcome::Failed, e.what(), {}};
+  } catch (...) {
+    return {ChildOutcome::Failed, "unknown error", {}};
+  }
+}
+
 [[noreturn]] void childMain(CadModel::Impl& impl, const std::function<std::string(CadModel::Impl&)>& work,
                             const Exchange& x) {
   // whatever OCCT prints while dying ("*** Abort ***") is not the program's output
@@ -107,27 +123,18 @@ void readShape(CadModel::Impl& impl, const Exchange& x, std::istream& meta) {
     dup2(devNull, STDOUT_FILENO);
     dup2(devNull, STDERR_FILENO);
   }
-  ChildOutcome o;
   std::ofstream meta(x.meta(), std::ios::binary);
   std::ostringstream shapeMeta;
   const TopoDS_Shape before = impl.shape;
   const int namedBefore = impl.nameIndex.Extent();
-  try {
-    o.payload = work(impl);
-    o.kind = ChildOutcome::Done;
+  const ChildOutcome o = guarded([&] {
+    std::string payload = work(impl);
     // an unchanged shape is not sent back (the parent's copy is the same)
     const bool unchanged = !before.IsNull() && impl.shape.IsEqual(before) && impl.nameIndex.Extent() == namedBefore;
     putInt(shapeMeta, unchanged ? 0 : 1);
     if (!unchanged) writeShape(impl, x, shapeMeta);
-  } catch (const InputError& e) {
-    o = {ChildOutcome::Input, e.what(), {}};
-  } catch (const Standard_Failure& e) {
-    o = {ChildOutcome::Failed, std::string(e.DynamicType()->Name()) + ": " + e.GetMessageString(), {}};
-  } catch (const std::exception& e) {
-    o = {ChildOutcome::Failed, e.what(), {}};
-  } catch (...) {
-    o = {ChildOutcome::Failed, "unknown error", {}};
-  }
+    return payload;
+  });
   putInt(meta, o.kind);
   putString(meta, o.message);
   putString(meta, o.payload);
@@ -187,12 +194,22 @@ ChildOutcome runInChild(CadModel::Impl& impl, const char* phase,
     throw MeshingError(std::string("cannot create a temporary folder: ") + std::strerror(errno));
   const Exchange x{pattern};
   std::fflush(nullptr);  // nothing buffered is written twice
-  int alive[2];  // the child holds the write end until it ends
-  const pid_t pid = pipe(alive) == 0 ? fork() : -1;
+  int alive[2] = {-1, -1};  // the child holds the write end until it ends
+  pid_t pid = -1;
+  if (testCrashRequested("fork-fails")) errno = EAGAIN;  // test hook: no process to spare
+  else if (pipe(alive) == 0) pid = fork();
   std::error_code ec;
-  if (pid < 0) {
+  if (pid < 0) {  // no process to spare (memory, limits): the work runs here, unprotected
+    const int err = errno;
+    for (const int fd : alive)
+      if (fd >= 0) close(fd);
+    logWarning(std::string("cannot start a child process (") + std::strerror(err) + "): " + phase +
+               " runs without protection from a crash of OpenCASCADE");
     fs::remove_all(x.dir, ec);
-    throw MeshingError(std::string("cannot start a child process: ") + std::strerror(errno));
+    const CadModel::Impl saved = impl;
+    ChildOutcome o = guarded([&] { return work(impl); });
+    if (!o.ok()) impl = saved;
+    return o;
   }
   if (pid == 0) {
     close(alive[0]);

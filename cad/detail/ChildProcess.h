@@ -20,6 +20,8 @@
 //   Input    work threw InputError: `message` is its text; impl unchanged.
 //   Failed   work threw anything else (Standard_Failure, MeshingError, std::exception).
 //   Crashed  the child was killed by a signal (`message`: "signal 11 (Segmentation fault)").
+// When no process can be started (fork fails), the work runs in this process with a
+// warning, and impl is restored when it fails.
 #include <functional>
 #include <string>
 
@@ -42,7 +44,7 @@ ChildOutcome runInChild(CadModel::Impl& impl, const char* phase,
 /// Test hook: true when the environment variable ANISOMESH_TEST_CRASH lists `point`
 /// (comma-separated, e.g. "reader-xcaf,prepare-fix"). The points are named where they are
 /// used; each raises SIGSEGV there, so that the recovery from a kernel crash is tested
-/// without a model that crashes OCCT.
+/// without a model that crashes OCCT. "fork-fails" makes runInChild find no process.
 bool testCrashRequested(const char* point);
 /// Raises SIGSEGV when testCrashRequested(point).
 void testCrashPoint(const char* point);

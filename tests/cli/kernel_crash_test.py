@@ -67,6 +67,12 @@ if rc == 0:
     expect("xcaf crash: no part names", all(s["name"].startswith("SOLID") for s in j["solid_list"]),
            str([s["name"] for s in j["solid_list"]]))
 
+# 1b: no child process can be started: the same model, read unprotected, with a warning.
+rc, j, err = info(assembly, "fork-fails")
+expect("fork fails: exit 0, same model and names", rc == 0 and j["solids"] == ref["solids"] and
+       [s["name"] for s in j["solid_list"]] == names, f"exit {rc}: {err}")
+expect("fork fails: warning", "cannot start a child process" in err, err)
+
 # 2: XCAF and plain crash -> root by root.
 rc, j, err = info(assembly, "reader-xcaf,reader-plain")
 expect("xcaf+plain crash: exit 0", rc == 0, f"exit {rc}: {err}")
