@@ -11,9 +11,11 @@
 // binary BREP write + read of a changed shape (measured: reading 3 large STEP files is not
 // slower). The child's stdout and stderr go to /dev/null.
 //
-// A shape crosses the boundary exactly except for its placements: BinTools rebuilds each
-// gp_Trsf from its 12 values (gp_Trsf::SetValues), so a rotated instance may move by an
-// ulp (a solid's volume differs in the 16th digit); counts and names are unchanged.
+// A shape crosses the boundary exactly but for round-off: BinTools rebuilds transformations
+// and axes from their stored values (gp_Trsf::SetValues divides by det^(1/3), gp_Dir
+// normalises), so a tilted or rotated part may move by an ulp (assembly_workbench.step: one
+// solid's volume differs in the 16th digit; restoring the placements' gp_Trsf bit for bit
+// did not remove it). Counts, names and topology are unchanged.
 //
 // Outcome:
 //   Done     impl holds the child's shape and names; `payload` what work returned.
