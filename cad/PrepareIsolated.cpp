@@ -1,4 +1,5 @@
 #include <sstream>
+#include <vector>
 
 #include "cad/detail/ChildProcess.h"
 #include "cad/detail/Prepare.h"
@@ -7,8 +8,11 @@
 namespace aniso::cad::detail {
 namespace {
 
-// The report crosses the process boundary as text: one field per line, strings length-
-// prefixed. Every field of PrepareReport must be here (CadModel.h says so).
+// The report crosses the process boundary as text: numbers space-separated, strings
+// length-prefixed. Every field of PrepareReport must be here (CadModel.h says so); the size
+// check makes a new field a build error here instead of a field silently lost.
+static_assert(sizeof(PrepareReport) == 2 * sizeof(int) + 2 * sizeof(std::vector<int>),
+              "PrepareReport changed: add the new field to encode() and decode()");
 std::string encode(const PrepareReport& r) {
   std::ostringstream out;
   out << r.facesSewn << ' ' << r.sharedFaces << ' ' << r.overlappingSolids.size();
