@@ -16,6 +16,7 @@
 #include "cad/detail/Readers.h"
 #include "cad/detail/ShapeSummary.h"
 #include "mesher/core/Error.h"
+#include "mesher/core/Log.h"
 
 namespace aniso::cad {
 
@@ -72,7 +73,7 @@ std::string readHead(const std::string& path) {
 
 }  // namespace
 
-CadModel CadModel::read(const std::string& path) {
+CadModel CadModel::read(const std::string& path, const CancelToken* cancel) {
   detail::silenceOcctMessages();
   const std::string head = readHead(path);
   const std::optional<CadFormat> byExt = formatFromExtension(path);
@@ -87,12 +88,15 @@ CadModel CadModel::read(const std::string& path) {
   auto impl = std::make_unique<Impl>();
   impl->path = path;
   impl->format = *byContent;
+  impl->cancel = cancel;
   switch (impl->format) {
     case CadFormat::Step: detail::readStep(*impl); break;
     case CadFormat::Iges: detail::readIges(*impl); break;
     case CadFormat::Brep: detail::readBrep(*impl); break;
   }
+  impl->cancel = nullptr;
   if (impl->shape.IsNull()) throw InputError(path + ": the file contains no shape");
+  for (const std::string& w : impl->readWarnings) logWarning(path + ": " + w);
   TopTools_IndexedMapOfShape faces, edges;
   TopExp::MapShapes(impl->shape, TopAbs_FACE, faces);
   TopExp::MapShapes(impl->shape, TopAbs_EDGE, edges);
@@ -105,10 +109,23 @@ ShapeSummary CadModel::summary() const { return detail::summarize(*impl_); }
 
 PrepareReport CadModel::prepare(const PrepareOptions& options) {
   PrepareReport report;
+  impl_->cancel = options.cancel;
+  struct Reset {  // the token lives no longer than this call
+    Impl& impl;
+    ~Reset() { impl.cancel = nullptr; }
+  } reset{*impl_};
   const double diag = detail::exactBoundingBox(impl_->shape).diagonal();
-  if (options.fix) detail::fixShape(*impl_, diag, report);
-  if (options.sew) detail::sewLooseFaces(*impl_, options.sewRelTolerance * diag, report);
-  if (options.fragment) detail::fragmentSolids(*impl_, diag, options.overlaps, report);
+  // each step in a child process: a crash of OCCT costs that step only (detail/Prepare.h)
+  if (options.fix)
+    detail::runPrepareStep("shape fixing", "prepare-fix", *impl_, report,
+                           [&](Impl& impl, PrepareReport& r) { detail::fixShape(impl, diag, r); });
+  if (options.sew)
+    detail::runPrepareStep("sewing", "prepare-sew", *impl_, report, [&](Impl& impl, PrepareReport& r) {
+      detail::sewLooseFaces(impl, options.sewRelTolerance * diag, r);
+    });
+  if (options.fragment)
+    detail::runPrepareStep("fragmenting the solids", "prepare-fragment", *impl_, report,
+                           [&](Impl& impl, PrepareReport& r) { detail::fragmentSolids(impl, diag, options.overlaps, r); });
   return report;
 }
 

@@ -7,13 +7,19 @@
 //   PrepareReport r = m.prepare(opts);          // fix, sew, fragment (conformal assemblies)
 //   Model model = m.topology();                 // the mesher's view (mesher/model/Model.h)
 //
-// OCCT exceptions never escape: they become InputError (reading) or MeshingError.
+// OCCT exceptions never escape: they become InputError (reading) or MeshingError. OCCT runs
+// in child processes (cad/detail/ChildProcess.h): a crash of the kernel (SIGSEGV) while
+// reading makes read() try the next reader path, and while preparing costs that step.
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "mesher/core/Types.h"
 #include "mesher/model/Model.h"
+
+namespace aniso {
+class CancelToken;  // mesher/core/Cancel.h
+}
 
 namespace aniso::cad {
 
@@ -55,6 +61,8 @@ struct PrepareOptions {
   OverlapPolicy overlaps = OverlapPolicy::Merge;
   /// Sewing tolerance as a fraction of the bounding-box diagonal.
   double sewRelTolerance = 1e-5;
+  /// Stops a step under way (its child process is killed): Cancelled naming the step.
+  const CancelToken* cancel = nullptr;
 };
 
 /// Two solids that overlap: ids are 1-based, in the order of the shape fragmented (as read).
@@ -66,6 +74,8 @@ struct Overlap {
                         ///< OverlapRule.h; always 0 unless the policy is Merge)
 };
 
+/// Crosses a process boundary (cad/PrepareIsolated.cpp encodes it): a new field must be
+/// added to encode() and decode() there.
 struct PrepareReport {
   int facesSewn = 0;                                ///< loose faces joined into shells
   int sharedFaces = 0;                              ///< faces used by two solids after fragmenting
@@ -79,8 +89,13 @@ class CadModel {
   /// Reads a STEP, IGES or BREP file. The reader is chosen by the file's content first
   /// (STEP "ISO-10303-21", IGES's 80-column S/G/D/P/T records, BREP's "DBRep_DrawableShape"
   /// or "CASCADE Topology"), by extension second. Throws InputError with a one-line message
-  /// naming the file for a missing, unreadable, empty, non-CAD or shapeless file.
-  static CadModel read(const std::string& path);
+  /// naming the file for a missing, unreadable, empty, non-CAD or shapeless file. STEP is
+  /// read through XCAF (part names), else the plain reader, else root by root skipping the
+  /// roots that fail; what was given up is logged as a warning. When every path crashes
+  /// or fails: InputError "...: OpenCASCADE could not read this STEP file (...)".
+  /// With `cancel`, a read still running when the token stops is killed: Cancelled
+  /// ("... during reading").
+  static CadModel read(const std::string& path, const CancelToken* cancel = nullptr);
 
   CadModel(CadModel&&) noexcept;
   CadModel& operator=(CadModel&&) noexcept;

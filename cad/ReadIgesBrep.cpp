@@ -1,4 +1,4 @@
-// IGES and BREP readers.
+// IGES and BREP readers, each in a child process (detail/ChildProcess.h).
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <IFSelect_ReturnStatus.hxx>
@@ -11,6 +11,7 @@
 #include <fstream>
 #include <mutex>
 
+#include "cad/detail/ChildProcess.h"
 #include "cad/detail/Readers.h"
 #include "mesher/core/Error.h"
 
@@ -24,7 +25,22 @@ void silenceOcctMessages() {
   });
 }
 
-void readIges(CadModel::Impl& impl) {
+namespace {
+
+/// Runs a reader in a child process (ChildProcess.h); its InputError passes, a crash or an
+/// OCCT failure becomes an InputError naming the format.
+void readIsolated(CadModel::Impl& impl, const char* format, void (*reader)(CadModel::Impl&)) {
+  const ChildOutcome o = runInChild(impl, "reading", [reader](CadModel::Impl& i) {
+    reader(i);
+    return std::string();
+  });
+  if (o.kind == ChildOutcome::Done) return;
+  if (o.kind == ChildOutcome::Input) throw InputError(o.message);
+  throw InputError(impl.path + ": OpenCASCADE could not read this " + format + " file (" +
+                   (o.kind == ChildOutcome::Crashed ? "it crashed in the reader: " : "") + o.message + ")");
+}
+
+void readIgesHere(CadModel::Impl& impl) {
   try {
     IGESControl_Reader reader;
     const IFSelect_ReturnStatus st = reader.ReadFile(impl.path.c_str());
@@ -37,7 +53,7 @@ void readIges(CadModel::Impl& impl) {
   }
 }
 
-void readBrep(CadModel::Impl& impl) {
+void readBrepHere(CadModel::Impl& impl) {
   try {
     BRep_Builder builder;
     TopoDS_Shape shape;
@@ -49,5 +65,10 @@ void readBrep(CadModel::Impl& impl) {
     throw InputError(impl.path + ": OpenCASCADE failed reading BREP: " + e.GetMessageString());
   }
 }
+
+}  // namespace
+
+void readIges(CadModel::Impl& impl) { readIsolated(impl, "IGES", readIgesHere); }
+void readBrep(CadModel::Impl& impl) { readIsolated(impl, "BREP", readBrepHere); }
 
 }  // namespace aniso::cad::detail

@@ -1,4 +1,6 @@
-// STEP AP203/214/242 through XCAF, so that each solid keeps the name of its part.
+// STEP AP203/214/242 through XCAF, so that each solid keeps the name of its part, in a
+// child process (detail/ChildProcess.h); when OCCT crashes or fails there, the plain reader
+// and then the root-by-root reader (ReadStepFallback.cpp) are tried.
 #include <IFSelect_ReturnStatus.hxx>
 #include <Interface_Static.hxx>
 #include <STEPCAFControl_Reader.hxx>
@@ -21,6 +23,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "cad/detail/ChildProcess.h"
 #include "cad/detail/Readers.h"
 #include "mesher/core/Error.h"
 
@@ -76,9 +79,7 @@ bool hasStepTerminator(const std::string& path) {
 
 }  // namespace
 
-void readStep(CadModel::Impl& impl) {
-  if (!hasStepTerminator(impl.path))
-    throw InputError(impl.path + ": STEP file is truncated (no END-ISO-10303-21)");
+void readStepXcaf(CadModel::Impl& impl) {
   try {
     Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
     Handle(TDocStd_Document) doc;
@@ -88,6 +89,7 @@ void readStep(CadModel::Impl& impl) {
     reader.SetColorMode(false);
     reader.SetLayerMode(false);
     const IFSelect_ReturnStatus st = reader.ReadFile(impl.path.c_str());
+    testCrashPoint("reader-xcaf");
     if (st != IFSelect_RetDone) {
       app->Close(doc);
       throw InputError(impl.path + ": not a readable STEP file");
@@ -110,9 +112,53 @@ void readStep(CadModel::Impl& impl) {
     }
     collectPartNames(tool, impl);
     app->Close(doc);
-  } catch (const Standard_Failure& e) {
-    throw InputError(impl.path + ": OpenCASCADE failed reading STEP: " + e.GetMessageString());
+  } catch (const Standard_Failure& e) {  // for the next rung: the child reports it as failed
+    throw MeshingError(std::string("OpenCASCADE failed in the XCAF reader: ") + e.GetMessageString());
   }
+}
+
+namespace {
+
+/// Why a reader path failed, for the warning or the final message.
+std::string failure(const ChildOutcome& o) {
+  return o.kind == ChildOutcome::Crashed ? "crashed: " + o.message : o.message;
+}
+
+}  // namespace
+
+void readStep(CadModel::Impl& impl) {
+  if (!hasStepTerminator(impl.path))
+    throw InputError(impl.path + ": STEP file is truncated (no END-ISO-10303-21)");
+  // 1: XCAF, with part names. Its refusals (not STEP, nothing to transfer) are the file's.
+  const ChildOutcome xcaf = runInChild(impl, "reading", [](CadModel::Impl& i) {
+    readStepXcaf(i);
+    return std::string();
+  });
+  if (xcaf.kind == ChildOutcome::Done) return;
+  if (xcaf.kind == ChildOutcome::Input) throw InputError(xcaf.message);
+  // 2: the plain reader, without the XCAF document (no part names).
+  const ChildOutcome plain = runInChild(impl, "reading", [](CadModel::Impl& i) {
+    readStepPlain(i);
+    return std::string();
+  });
+  if (plain.kind == ChildOutcome::Done) {
+    impl.readWarnings.push_back("the XCAF STEP reader failed (" + failure(xcaf) +
+                                "); read by the plain reader, without part names");
+    return;
+  }
+  // 3: root by root, skipping the roots that fail.
+  const ChildOutcome roots = runInChild(impl, "reading", [](CadModel::Impl& i) { return readStepRoots(i); });
+  if (roots.kind == ChildOutcome::Done) {
+    impl.readWarnings.push_back("the XCAF and plain STEP readers failed (" + failure(xcaf) + "; " + failure(plain) +
+                                "); read root by root, without part names" +
+                                (roots.payload.empty() ? std::string() : "; " + roots.payload));
+    return;
+  }
+  const bool crashed = xcaf.kind == ChildOutcome::Crashed || plain.kind == ChildOutcome::Crashed ||
+                       roots.kind == ChildOutcome::Crashed;
+  throw InputError(impl.path + ": OpenCASCADE could not read this STEP file (" +
+                   (crashed ? std::string("it crashed in the reader") : failure(roots)) +
+                   "); tried the XCAF, plain and per-part readers");
 }
 
 }  // namespace aniso::cad::detail

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cad/CadModel.h"
+#include "mesher/core/Cancel.h"
 
 namespace aniso::cad {
 
@@ -17,6 +18,11 @@ struct CadModel::Impl {
   /// Part names of solids from STEP/XCAF, keyed by the solid (TShape + location).
   TopTools_DataMapOfShapeInteger nameIndex;
   std::vector<std::string> names;
+  /// What reading had to give up (a reader path that crashed, parts skipped); logged as
+  /// warnings by CadModel::read.
+  std::vector<std::string> readWarnings;
+  /// The token of the operation under way (read, prepare): stops the child processes.
+  const CancelToken* cancel = nullptr;
 
   /// Name of a solid: its part name if known, else "SOLID<id>".
   std::string solidName(const TopoDS_Shape& solid, int id) const;

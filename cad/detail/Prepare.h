@@ -2,6 +2,7 @@
 // Internal: the preparation steps run by CadModel::prepare(), each its own operator.
 // Every step keeps the part names of solids: it rebinds impl.nameIndex for the images.
 #include <TopTools_ListOfShape.hxx>
+#include <functional>
 
 #include "cad/detail/CadModelImpl.h"
 
@@ -35,5 +36,16 @@ double solidVolume(const TopoDS_Shape& solid);
 
 /// Number of edges (not degenerate) bounding exactly one face of the shape.
 int countFreeEdges(const TopoDS_Shape& shape);
+
+}  // namespace aniso::cad::detail
+
+namespace aniso::cad::detail {
+
+/// Runs one preparation step (fixShape, sewLooseFaces, fragmentSolids) in a child process
+/// (ChildProcess.h), so that a crash of OCCT there costs the step, not the run: the shape
+/// and the report are then kept as they were before the step, with a warning naming it.
+/// `crashPoint` is the step's test hook (testCrashPoint), e.g. "prepare-fix".
+void runPrepareStep(const char* step, const char* crashPoint, CadModel::Impl& impl, PrepareReport& report,
+                    const std::function<void(CadModel::Impl&, PrepareReport&)>& run);
 
 }  // namespace aniso::cad::detail

@@ -5,7 +5,19 @@
 
 namespace aniso::cad::detail {
 
+/// STEP through the ladder XCAF -> plain -> root by root, each in a child process; throws
+/// InputError when every path crashed or failed (or the file is not STEP).
 void readStep(CadModel::Impl& impl);
+/// The rungs, run in the calling process. XCAF: part names in impl.names.
+void readStepXcaf(CadModel::Impl& impl);
+/// STEPControl_Reader, all roots at once, no names.
+void readStepPlain(CadModel::Impl& impl);
+/// STEPControl_Reader one root at a time with OCCT's signals turned into exceptions
+/// (OSD::SetSignal, for the child process only): a root that fails or crashes is skipped.
+/// Returns "" or what was lost ("skipped root(s) 2, 5 of 7; 3 of 40 solid(s) could not be
+/// transferred": OCCT's transfer drops an entity that raised); throws when no root could
+/// be transferred.
+std::string readStepRoots(CadModel::Impl& impl);
 void readIges(CadModel::Impl& impl);
 void readBrep(CadModel::Impl& impl);
 

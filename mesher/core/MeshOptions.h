@@ -1,8 +1,11 @@
 #pragma once
 // MeshOptions — every parameter of the meshing process in one struct, passed down by
 // reference; no globals (STYLE.md). Defaults are the thesis' table 3.2.
+#include <memory>
 #include <optional>
 #include <string>
+
+#include "mesher/core/Cancel.h"
 
 namespace aniso {
 
@@ -51,6 +54,9 @@ struct MeshOptions {
   /// Element budget checked before meshing (mesher/sizing/ElementBudget.h): triangles, plus
   /// tets for a volume mesh. ≤ 0: none.
   double maxElements = 0;
+  /// Stops the run (--time-limit; Cancel.h); shared by every copy of the options, null:
+  /// never stops.
+  std::shared_ptr<const CancelToken> cancel;
 };
 
 }  // namespace aniso

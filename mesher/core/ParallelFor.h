@@ -3,7 +3,8 @@
 // Items are handed out in index order from an atomic counter; each item writes only its own
 // result slot, so the output does not depend on the number of threads. The first exception
 // thrown by an item is rethrown once every thread has stopped (the remaining items are
-// skipped). Progress is reported per finished item through PhaseProgress, whose optional
+// skipped); when it is Cancelled (Cancel.h), the shared token is raised, so the items
+// still running stop at their next check. Progress is reported per finished item through PhaseProgress, whose optional
 // detail (e.g. the predicted element count) is refreshed with every report.
 #include <algorithm>
 #include <atomic>

@@ -35,7 +35,10 @@ QuadStats convertToQuads(FaceMesh& fm, const ControlSpace2d& cs, const Parametri
   const std::vector<Corners> poles = detachPoleTriangles(mesh);
   const std::vector<Corners> sharp = detachSharpCornerTriangles(mesh, nodes);
   VertexMetrics metrics(mesh, cs, surface, nodes);
+  constexpr const char* kPhase = "quad conversion";
+  checkCancel(o.cancel, kPhase);
   st.merge = mergeFront(mesh, metrics, o.merge);
+  checkCancel(o.cancel, kPhase);
   auto pairUp = [&] {
     const TransportStats t = pairTriangles(mesh, metrics, o.transport);
     st.paired += t.paired;
@@ -45,6 +48,7 @@ QuadStats convertToQuads(FaceMesh& fm, const ControlSpace2d& cs, const Parametri
   };
   pairUp();
   for (int pass = 0; pass < o.improvementPasses; ++pass) {
+    checkCancel(o.cancel, kPhase);
     const TopologyStats t = improveTopology(mesh, metrics, o.topology);
     st.doublets += t.doublets;
     st.collapses += t.collapses;

@@ -14,6 +14,7 @@
 // edges stay edges, so neighbouring faces stay conforming. With even segment counts on
 // every loop (ContourOptions::evenSegments) the result is all-quad wherever the checks
 // allow it; whatever cannot be converted legally stays a triangle.
+#include "mesher/core/Cancel.h"
 #include "mesher/control/ControlSpace2d.h"
 #include "mesher/metric/QualityStats.h"
 #include "mesher/quad/BoundaryPostprocess.h"
@@ -33,6 +34,8 @@ struct QuadOptions {
   BoundaryPostprocessOptions boundary;
   bool boundaryPostprocess = true;
   int improvementPasses = 2;  ///< N_imp (alg. 4.6, table 4.7)
+  /// Checked between the conversion's steps and passes (Cancel.h); null: never stops.
+  const CancelToken* cancel = nullptr;
 };
 
 struct QuadStats {

@@ -72,6 +72,7 @@ void runPipeline(const face::FlatBoundary& flat, const ControlSpace2d& cs, const
   ro.mleToCcsQuality = options.mleToCcsQuality;
   ro.innerAngles = options.innerAnglesCriterion;
   ro.onPrediction = options.onPrediction;
+  ro.cancel = options.cancel;
   const face::SurfaceLift lift(options.surface);
   ro.lift = &lift;
   const face::RefineStats rs = face::refineFace(tri, cs, ro);
@@ -87,8 +88,10 @@ void runPipeline(const face::FlatBoundary& flat, const ControlSpace2d& cs, const
     ImproveOptions io;
     io.passes = options.improvementPasses;
     io.lift = &lift;
+    io.cancel = options.cancel;
     improveFaceMesh(tri, cs, fixed, io);
   }
+  checkCancel(options.cancel, "surface improvement");
   // 6: folds the guarded operators could not avoid.
   const face::UnfoldFaceStats uf = face::unfoldFace(tri, lift, fixed);
   res.stats.foldsRepaired = uf.foldedBefore - uf.foldedAfter;
@@ -111,6 +114,8 @@ FaceMeshResult meshFace(const FaceBoundary& boundary, const ControlSpace2d& cs, 
     const face::FlatBoundary flat = face::flattenBoundary(boundary);  // throws for invalid input
     res.stats.boundaryNodes = static_cast<int>(flat.size());
     runPipeline(flat, cs, options, prefix, res);
+  } catch (const Cancelled&) {  // the run stops: not a problem of this face
+    throw;
   } catch (const std::runtime_error& e) {  // MeshingError / InputError from the control space or kernel
     res.problems.push_back(prefix + e.what());
   }

@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "mesher/core/Cancel.h"
 #include "mesher/control/ControlSpace2d.h"
 #include "mesher/geometry/ParametricSurface.h"
 #include "mesher/surface/FaceBoundary.h"
@@ -45,6 +46,9 @@ struct FaceMesherOptions {
   /// whose (u, v) is its plane). When given, no operator may turn a triangle over in 3D
   /// (face/SurfaceOrientation.h), which a (u, v) test cannot see at singular points.
   const ParametricSurface* surface = nullptr;
+  /// Checked between steps and every few hundred iterations (mesher/core/Cancel.h); null:
+  /// never stops.
+  const CancelToken* cancel = nullptr;
 };
 
 struct FaceMeshStats {

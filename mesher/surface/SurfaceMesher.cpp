@@ -120,8 +120,10 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
   // 1: control spaces.
   auto t = Clock::now();
   std::vector<std::unique_ptr<CSQuadtree2d>> spaces(nf);
+  const CancelToken* cancel = in.options.cancel.get();
   parallelFor(nf, in.options.threads, [&](int f) {
     if (!faceMeshed(in, f)) return;
+    checkCancel(cancel, "control spaces");
     FaceSizingInput fin;
     fin.model = &model;
     fin.face = f;
@@ -153,7 +155,8 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
   std::vector<EdgeDiscretization> edges;
   std::vector<FaceBoundary> boundaries(nf);
   const auto discretizeContours = [&] {
-    for (int round = 0;; ++round) {
+    for (int round = 0;; ++round) {  // bounded: updates stop after kRounds
+      checkCancel(cancel, "contours");
       SurfaceMesh trial;
       edges = discretizeEdgesLeavingOut(model, cs, copt, trial, r.faces);
       for (int f = 0; f < nf; ++f) {
@@ -169,6 +172,7 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
       if (round < kRounds) {
         parallelFor(nf, in.options.threads, [&](int f) {
           if (!cs[f]) return;
+          checkCancel(cancel, "boundary sizing");
           BoundaryUpdateOptions bopt;
           bopt.hMin = hMin;
           bopt.cadTolerance = model.faces[f].tolerance;
@@ -222,7 +226,9 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
   });
   parallelFor(nf, in.options.threads, [&](int f) {
     if (!cs[f]) return;
+    checkCancel(cancel, "surface mesh");
     FaceMesherOptions fo = in.face;
+    fo.cancel = cancel;
     fo.surface = model.faces[f].surface.get();
     fo.onPrediction = [&predicted, &faceProgress, f](double n) {
       predicted.post(f, n);
@@ -238,6 +244,7 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
       if (in.options.quad) {
         quad::QuadOptions qo;
         qo.merge.method = in.options.quadMethod;
+        qo.cancel = cancel;
         o.quad = quad::convertToQuads(fm, *spaces[f], model.faces[f].surface.get(), r.mesh.nodes, qo);
       }
       const FaceQuality q = faceQuality(fm.uv, fm.triangles, *spaces[f]);

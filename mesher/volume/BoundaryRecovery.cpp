@@ -63,6 +63,7 @@ class Recovery {
       if (phase == 1 && !opt_.interiorPoints) break;
       const std::size_t e0 = missingEdges_.size(), f0 = missingFaces_.size();
       for (int round = 0; round < opt_.maxRounds && !(missingEdges_.empty() && missingFaces_.empty()); ++round) {
+        checkCancel(opt_.cancel, "boundary recovery");
         const std::size_t before = missingEdges_.size() + missingFaces_.size();
         const long long points = s.steinerPoints;
         if (phase == 1) cavityRound(s);

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "mesher/core/Cancel.h"
 #include "mesher/volume/BoundaryTriangulation.h"
 #include "mesher/volume/PipeReduction.h"
 
@@ -24,6 +25,8 @@ struct RecoveryOptions {
   int maxChangesPerEntity = 64;  ///< kept flips per entity and round (pipe reduction)
   int maxRounds = 10;            ///< rounds per phase (a round ends the phase when it makes no progress)
   bool interiorPoints = true;    ///< phase 2 (interior Steiner points)
+  /// Checked every round (Cancel.h); null: never stops.
+  const CancelToken* cancel = nullptr;
 };
 
 struct RecoveryStats {

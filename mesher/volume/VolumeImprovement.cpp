@@ -62,6 +62,7 @@ VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, cons
     if (pass >= o.passes &&
         improve3d::sampledMeanEta(s.mesh, [&](del3d::TetId t) { return (*scores)[t]; }) >= o.passTarget)
       break;
+    checkCancel(o.cancel, "volume improvement");
     ++st.passes;
     auto t0 = Clock::now();
     // every tet measured once; smoothing and flips read and keep this cache
@@ -71,6 +72,7 @@ VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, cons
     st.smoothingSeconds += since(t0);
     t0 = Clock::now();
     mover.setScores(nullptr);
+    checkCancel(o.cancel, "volume improvement");
     improve3d::QualityFlips flips(s, vm, o.flipGain, &*scores);
     flips.run(o.flipCandidate);
     st.flips23 += flips.counts().f23;
@@ -78,6 +80,7 @@ VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, cons
     st.flips44 += flips.counts().f44;
     st.flipSeconds += since(t0);
     if (o.vertexRemoval) {
+      checkCancel(o.cancel, "volume improvement");
       t0 = Clock::now();
       improve3d::VertexRemoval removal(s, vm, &*scores);
       std::vector<del3d::TetId> created, more;
@@ -91,6 +94,7 @@ VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, cons
       st.removalSeconds += since(t0);
     }
   }
+  checkCancel(o.cancel, "sliver removal");
   const auto t0 = Clock::now();
   if (o.sliverRounds > 0) {
     const improve3d::SliverStats ss = improve3d::removeSlivers(s, cs, vm, o.sliverAngleDeg, o.euclideanSliverAngleDeg,

@@ -47,6 +47,7 @@
 // Deterministic.
 #include <cstddef>
 
+#include "mesher/core/Cancel.h"
 #include "mesher/control/ControlSpace3d.h"
 #include "mesher/volume/SolidTetMesh.h"
 #include "mesher/volume/improve/VertexMetrics.h"
@@ -80,6 +81,8 @@ struct VolumeImproveOptions {
   bool vertexRemoval = true;
   improve3d::VertexRemovalOptions removal;
   bool sliverInsertion = true;  ///< allow step (3)
+  /// Checked before every pass and operator sweep (Cancel.h); null: never stops.
+  const CancelToken* cancel = nullptr;
 };
 
 struct VolumeImproveStats {

@@ -140,6 +140,8 @@ std::vector<int> unmeshedFaces(const Model& model, const std::vector<std::vector
 
 SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<int>>& faceTriangles, int solid) {
   SolidPiece p;
+  const CancelToken* cancel = in.options.cancel.get();
+  checkCancel(cancel, "volume boundary");
   auto t0 = Clock::now();
   if (const std::vector<int> gone = unmeshedFaces(*in.model, faceTriangles, solid); !gone.empty()) {
     std::string list;
@@ -167,7 +169,10 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
   if (!bt.problems.empty()) return p;
 
   t0 = Clock::now();
-  const RecoveryResult rr = recoverBoundary(bt, in.recovery);
+  checkCancel(cancel, "boundary recovery");
+  RecoveryOptions ro = in.recovery;
+  ro.cancel = cancel;
+  const RecoveryResult rr = recoverBoundary(bt, ro);
   p.outcome.recovery = rr.stats;
   if (!rr.left.empty()) {
     p.outcome.times.emplace_back("volume recovery", since(t0));
@@ -186,6 +191,7 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
 
   std::shared_ptr<VolumeMetricSpace> cs;
   if (in.refine || in.improve || in.quality) {
+    checkCancel(cancel, "volume control space");
     t0 = Clock::now();
     // The tetrahedra are made and measured in M_v (VolumeControlSpace.h: M at the surface
     // nodes, edges f·h inside).
@@ -202,7 +208,9 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
   refine3d::VertexTensorTable tensors;  // the refinement's queried metrics, for the improvement
   if (in.refine && cs) {
     t0 = Clock::now();
-    const VolumeRefineStats rs = refineVolume(bt.tets, *cs, {}, &tensors);
+    VolumeRefineOptions ro3;
+    ro3.cancel = cancel;
+    const VolumeRefineStats rs = refineVolume(bt.tets, *cs, ro3, &tensors);
     p.outcome.times.emplace_back("volume refinement", since(t0));
     p.outcome.counters.emplace_back("refinement_inserted", static_cast<double>(rs.inserted));
     p.outcome.counters.emplace_back("refinement_abandoned", static_cast<double>(rs.abandoned));
@@ -211,7 +219,9 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
   std::optional<improve3d::VertexMetrics> metrics;  // the improvement's, read by the report
   if (in.improve && cs) {
     t0 = Clock::now();
-    const VolumeImproveStats is = improveVolume(bt.tets, *cs, {}, &metrics.emplace(bt.tets.mesh, *cs, tensors));
+    VolumeImproveOptions io3;
+    io3.cancel = cancel;
+    const VolumeImproveStats is = improveVolume(bt.tets, *cs, io3, &metrics.emplace(bt.tets.mesh, *cs, tensors));
     p.outcome.times.emplace_back("volume improvement", since(t0));
     p.outcome.counters.emplace_back("improvement_passes", static_cast<double>(is.passes));
     p.outcome.counters.emplace_back("improvement_moved", static_cast<double>(is.moved));
@@ -321,7 +331,8 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
   std::vector<int> todo(static_cast<std::size_t>(ns));
   for (int s = 0; s < ns; ++s) todo[s] = s;
   std::size_t firstMissing = 0;
-  for (int round = 0;; ++round) {
+  for (int round = 0;; ++round) {  // bounded by maxSplitRounds
+    checkCancel(in.options.cancel.get(), "volume meshing");
     const std::vector<std::vector<int>> faceTriangles = trianglesByFace(surface, nf);
     parallelFor(static_cast<int>(todo.size()), in.options.threads,
                 [&](int i) { pieces[todo[i]] = meshSolid(in, faceTriangles, todo[i]); }, "volume");

@@ -327,7 +327,8 @@ VolumeRefineStats Refiner::run() {
   std::vector<refine3d::RefineQueue::Entry> batch;
   std::vector<Vec3> centres;
   refine3d::RefineQueue::Entry e;
-  for (;;) {
+  for (;;) {  // bounded: every batch pops the heap, insertions stop at maxVertices_
+    checkCancel(o_.cancel, "volume refinement");
     // The worst tets of the heap, refined in the Hilbert order of their centroids.
     const std::size_t want = std::clamp<std::size_t>(heap_.size() / o_.batchDivisor, 1, o_.maxBatch);
     batch.clear();

@@ -66,6 +66,7 @@
 #include <cstdint>
 #include <functional>
 
+#include "mesher/core/Cancel.h"
 #include "mesher/control/ControlSpace3d.h"
 #include "mesher/volume/SolidTetMesh.h"
 #include "mesher/volume/refine/VertexTensors.h"
@@ -98,6 +99,8 @@ struct VolumeRefineOptions {
   /// Called about every progressInterval insertions (may be empty).
   std::function<void(const VolumeRefineProgress&)> progress;
   std::size_t progressInterval = 10000;
+  /// Checked every batch (Cancel.h); null: never stops.
+  const CancelToken* cancel = nullptr;
 };
 
 struct VolumeRefineStats {

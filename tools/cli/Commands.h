@@ -30,6 +30,8 @@ struct MeshArgs {
   /// tetrahedra on a stretched boundary triangle are stretched too, and FE solvers want
   /// tetrahedra well shaped in space; surface meshes keep the thesis' default γ_a = 5.
   bool anisotropyGiven = false;
+  /// --time-limit S: the run stops (status failed, exit 3, no mesh) after S seconds; 0 = none.
+  double timeLimit = 0;
 };
 int runMesh(const MeshArgs& args);
 

@@ -48,6 +48,7 @@ nlohmann::ordered_json optionsJson(const MeshArgs& a) {
   if (s.hmax) j["hmax"] = *s.hmax;
   if (s.hmin) j["hmin"] = *s.hmin;
   if (!a.options.sizingFile.empty()) j["sizing"] = a.options.sizingFile;
+  if (a.timeLimit > 0) j["time_limit"] = a.timeLimit;
   return j;
 }
 
@@ -334,6 +335,8 @@ static int runVolume(const MeshArgs& args, const Model& topo, SurfaceMesherInput
             coarseKept = true;
           }
         }
+      } catch (const Cancelled&) {
+        throw;
       } catch (const MeshingError& e) {
         logWarning(std::string("coarse solids: the finer surface failed (") + e.what() + "); the first mesh is kept");
       }
@@ -365,7 +368,7 @@ bool isKnownOutputExtension(const std::string& path) {
   return std::any_of(std::begin(known), std::end(known), [&](const char* k) { return ext == k; });
 }
 
-int runMesh(const MeshArgs& given) {
+static int meshRun(const MeshArgs& given, io::Report& report) {
   MeshArgs args = given;
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
@@ -374,12 +377,12 @@ int runMesh(const MeshArgs& given) {
   // The sizing file is read (and checked) before the model, so a bad one fails fast.
   const UserSizing user = args.options.sizingFile.empty() ? UserSizing{} : io::readSizingFile(args.options.sizingFile);
 
-  io::Report report;
   report.input = args.file;
   report.options = optionsJson(args);
 
   // Reading and preparing the model: failures here are bad input (exit 2).
-  ModelInput in = loadModel(args.file, args.fragment, args.overlaps);
+  ModelInput in = loadModel(args.file, args.fragment, args.overlaps, args.options.cancel.get());
+  checkCancel(args.options.cancel.get(), "reading");
   report.times = in.times;
   report.extra["model"] = in.summary;
   int dim = args.options.dim;
@@ -421,6 +424,24 @@ int runMesh(const MeshArgs& given) {
   report.times.emplace_back("write", seconds(tw, Clock::now()));
   finishRun(args, report, t0);
   return 0;
+}
+
+/// --time-limit: the token every mesher checks (mesher/core/Cancel.h); when it fires, the
+/// report says failed, no mesh is written, and the one line names the phase (exit 3).
+int runMesh(const MeshArgs& given) {
+  const auto t0 = std::chrono::steady_clock::now();
+  MeshArgs args = given;
+  if (args.timeLimit > 0) args.options.cancel = std::make_shared<const CancelToken>(args.timeLimit);
+  io::Report report;
+  try {
+    return meshRun(args, report);
+  } catch (const Cancelled& e) {
+    report.problems.push_back({EntityRef::model(), Severity::Failed, "time-limit", e.what(), "run"});
+    report.status = io::RunStatus::Failed;
+    report.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    writeReport(args, report);
+    throw MeshingError(args.file + ": " + e.what());
+  }
 }
 
 }  // namespace aniso::cli

@@ -9,7 +9,7 @@
 
 namespace aniso::cli {
 
-ModelInput loadModel(const std::string& file, bool fragment, cad::OverlapPolicy overlaps) {
+ModelInput loadModel(const std::string& file, bool fragment, cad::OverlapPolicy overlaps, const CancelToken* cancel) {
   using Clock = std::chrono::steady_clock;
   auto since = [](Clock::time_point a) { return std::chrono::duration<double>(Clock::now() - a).count(); };
   ModelInput in;
@@ -24,12 +24,13 @@ ModelInput loadModel(const std::string& file, bool fragment, cad::OverlapPolicy 
     in.model = std::move(am.model);
     return in;
   }
-  cad::CadModel model = cad::CadModel::read(file);
+  cad::CadModel model = cad::CadModel::read(file, cancel);
   in.times.emplace_back("read", since(t));
   t = Clock::now();
   cad::PrepareOptions popt;
   popt.fragment = fragment;
   popt.overlaps = overlaps;
+  popt.cancel = cancel;
   const cad::PrepareReport prep = model.prepare(popt);
   const cad::ShapeSummary summary = model.summary();
   in.times.emplace_back("prepare", since(t));

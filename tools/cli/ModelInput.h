@@ -9,6 +9,7 @@
 #include "cad/CadModel.h"
 #include "io/AnalyticModel.h"
 #include "mesher/control/ControlSpace2d.h"
+#include "mesher/core/Cancel.h"
 #include "mesher/model/Model.h"
 
 namespace aniso::cli {
@@ -23,9 +24,10 @@ struct ModelInput {
 };
 
 /// Reads and prepares `file` (fragmenting the solids if `fragment`, overlapping ones by
-/// `overlaps`); the preparation's warnings are logged.
+/// `overlaps`); the preparation's warnings are logged. `cancel` (--time-limit) stops reading
+/// and preparing too (cad::CadModel).
 ModelInput loadModel(const std::string& file, bool fragment,
-                     cad::OverlapPolicy overlaps = cad::OverlapPolicy::Merge);
+                     cad::OverlapPolicy overlaps = cad::OverlapPolicy::Merge, const CancelToken* cancel = nullptr);
 
 /// The analytic sizing of an analytic model as a control space over its (u, v) domain.
 std::unique_ptr<ControlSpace2d> analyticControlSpace(const ModelInput& in);

@@ -77,6 +77,8 @@ int main(int argc, char** argv) {
                       "Element budget (triangles, plus tets in 3D) checked before meshing; over it the finest sizes are "
                       "coarsened, or the run stops (exit 2). Default: the available memory / bytes per element")
       ->check(CLI::PositiveNumber);
+  meshCmd->add_option("--time-limit", mesh.timeLimit, "Stop after S seconds: status failed, exit 3, no mesh (0 = none)")
+      ->check(CLI::NonNegativeNumber);
   meshCmd->add_flag("--binary", mesh.binary, "Binary output where the format has it");
   meshCmd->add_option("--msh-version", mesh.mshVersion, "MSH format version: 4.1 or 2.2")
       ->transform(CLI::CheckedTransformer(std::map<std::string, int>{{"4.1", 41}, {"2.2", 22}}))

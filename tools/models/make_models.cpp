@@ -364,6 +364,8 @@ void writeSurfacePart(const TopoDS_Shape& s, const char* name, const std::filesy
   if (l.IsNull()) fail(std::string(name) + ": cannot add shape to the document");
   setName(l, name);
   writeStep(doc, path);
+}
+
 // Two cubes 10 x 10 x 10 overlapping by half along x: A at the origin, B at (5, 0, 0). Their
 // common region (5 x 10 x 10, volume 500) is what --overlaps merge meshes once; the union's
 // volume is 1500 and its outer area 2 * (15 * 10) * 2 + 2 * 10 * 10 = 800.

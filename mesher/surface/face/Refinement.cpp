@@ -65,7 +65,9 @@ class Refiner {
     initialise();
     if (opt_.onPrediction) opt_.onPrediction(stats_.predictedTriangles);
     std::size_t pops = 0;
+    CancelPoll cancel(opt_.cancel, "surface refinement", 256);
     for (;;) {
+      cancel.tick();
       if (heap_.empty()) {
         // Frontal phase over: whatever is still bad (regions the front never reached,
         // triangles whose frontal point was cancelled) gets the mixed MLE/CCS method.

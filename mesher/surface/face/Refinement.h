@@ -42,6 +42,7 @@
 #include <cstddef>
 #include <functional>
 
+#include "mesher/core/Cancel.h"
 #include "mesher/control/ControlSpace2d.h"
 #include "mesher/delaunay/Triangulation2d.h"
 #include "mesher/surface/face/SurfaceLift.h"
@@ -77,6 +78,8 @@ struct RefineOptions {
   /// not all be upright on the surface (SurfaceLift.h) is cancelled, and a triangle that is
   /// not upright counts as the worst (q = 0), so it is refined first.
   const SurfaceLift* lift = nullptr;
+  /// Checked every few hundred heap pops (Cancel.h); null: never stops.
+  const CancelToken* cancel = nullptr;
 };
 
 struct RefineStats {

@@ -34,6 +34,7 @@ ImproveStats improveFaceMesh(del2d::Triangulation2d& tri, const ControlSpace2d& 
   geometric.angleTolerance = options.swapAngleTolerance;
 
   for (int pass = 0; pass < options.passes; ++pass) {  // alg. 4.2
+    checkCancel(options.cancel, "surface improvement");
     metrics.update(tri, cs, fixed);
     const improve::SmoothingStats s = improve::laplaceSmoothing(tri, metrics, smoothing);
     st.moves += s.moved;

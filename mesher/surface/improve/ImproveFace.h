@@ -31,6 +31,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "mesher/core/Cancel.h"
 #include "mesher/control/ControlSpace2d.h"
 #include "mesher/delaunay/Triangulation2d.h"
 #include "mesher/surface/face/SurfaceLift.h"
@@ -65,6 +66,8 @@ struct ImproveOptions {
   /// The fold guard (face/SurfaceLift.h), may be null: no operator turns a triangle over
   /// on the surface.
   const face::SurfaceLift* lift = nullptr;
+  /// Checked before every pass (Cancel.h); null: never stops.
+  const CancelToken* cancel = nullptr;
 };
 
 struct ImproveStats {

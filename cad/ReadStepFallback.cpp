@@ -1,0 +1,86 @@
+// The fallback rungs of the STEP reader (ReadStep.cpp): no XCAF document, no part names.
+// OCCT 7.6 on Linux raises a caught signal through Standard_ErrorHandler (its handler
+// aborts when none is on the stack): OCC_CATCH_SIGNALS must expand to one, so the macro
+// that enables it is defined before the header.
+#define OCC_CONVERT_SIGNALS
+#include <BRep_Builder.hxx>
+#include <IFSelect_ReturnStatus.hxx>
+#include <OSD.hxx>
+#include <STEPControl_Reader.hxx>
+#include <Standard_ErrorHandler.hxx>
+#include <Standard_Failure.hxx>
+#include <StepData_StepModel.hxx>
+#include <StepShape_ManifoldSolidBrep.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS_Compound.hxx>
+
+#include "cad/detail/ChildProcess.h"
+#include "cad/detail/Readers.h"
+#include "mesher/core/Error.h"
+
+namespace aniso::cad::detail {
+namespace {
+
+void readFile(STEPControl_Reader& reader, const std::string& path) {
+  if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) throw InputError(path + ": not a readable STEP file");
+}
+
+/// "; k of n solids could not be transferred" when the shape has fewer distinct solids
+/// than the file has solid B-reps (OCCT's transfer skips an entity that raised), else "".
+std::string lostSolids(STEPControl_Reader& reader, const TopoDS_Shape& shape) {
+  const Handle(StepData_StepModel) model = reader.StepModel();
+  int breps = 0;
+  for (int i = 1; i <= model->NbEntities(); ++i)
+    if (model->Value(i)->IsKind(STANDARD_TYPE(StepShape_ManifoldSolidBrep))) ++breps;
+  TopTools_IndexedMapOfShape solids, distinct;
+  TopExp::MapShapes(shape, TopAbs_SOLID, solids);
+  for (int i = 1; i <= solids.Extent(); ++i) distinct.Add(solids(i).Located(TopLoc_Location()));
+  if (distinct.Extent() >= breps) return {};
+  return "; " + std::to_string(breps - distinct.Extent()) + " of " + std::to_string(breps) +
+         " solid(s) could not be transferred";
+}
+
+}  // namespace
+
+void readStepPlain(CadModel::Impl& impl) {
+  STEPControl_Reader reader;
+  readFile(reader, impl.path);
+  testCrashPoint("reader-plain");
+  if (reader.TransferRoots() == 0 || reader.NbShapes() == 0)
+    throw InputError(impl.path + ": STEP file has no shape OpenCASCADE can transfer");
+  impl.shape = reader.OneShape();
+}
+
+std::string readStepRoots(CadModel::Impl& impl) {
+  OSD::SetSignal(false);  // this process only: a kernel crash becomes OSD_SIGSEGV
+  STEPControl_Reader reader;
+  readFile(reader, impl.path);
+  const int n = reader.NbRootsForTransfer();
+  std::string skipped;
+  BRep_Builder b;
+  TopoDS_Compound c;
+  b.MakeCompound(c);
+  int kept = 0;
+  for (int k = 1; k <= n; ++k) {
+    try {
+      OCC_CATCH_SIGNALS
+      if (k == 1) testCrashPoint("reader-root");
+      reader.ClearShapes();
+      if (reader.TransferRoot(k) && reader.NbShapes() > 0) {
+        b.Add(c, reader.OneShape());
+        ++kept;
+        continue;
+      }
+    } catch (const Standard_Failure&) {
+    }
+    skipped += (skipped.empty() ? "" : ", ") + std::to_string(k);
+  }
+  if (kept == 0) throw MeshingError("no root of " + std::to_string(n) + " could be transferred");
+  impl.shape = kept == 1 && n == 1 ? TopoDS_Shape(reader.OneShape()) : TopoDS_Shape(c);
+  const std::string lost = lostSolids(reader, impl.shape);
+  if (skipped.empty()) return lost.empty() ? std::string() : lost.substr(2);
+  return "skipped root(s) " + skipped + " of " + std::to_string(n) + lost;
+}
+
+}  // namespace aniso::cad::detail
