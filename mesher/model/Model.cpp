@@ -174,11 +174,10 @@ class Validator {
     const Vec2 ub = pb->curve->point(b.reversed ? pb->t1 : pb->t0);
     const SurfaceDomain dom = face.surface->domain();
     const Vec2 ext = uvExtent(face, dom);
-    // On a periodic surface a jump by whole periods is no gap (the face mesher moves each
-    // use next to the previous one, contour/PeriodicUv.h).
-    Vec2 d = ub - ua;
-    if (dom.uPeriodic && dom.u1 > dom.u0) d.x() = std::remainder(d.x(), dom.u1 - dom.u0);
-    if (dom.vPeriodic && dom.v1 > dom.v0) d.y() = std::remainder(d.y(), dom.v1 - dom.v0);
+    // A jump by whole periods of a periodic surface is reported too (a Defect when closed in
+    // 3D): the face mesher moves each use next to the previous one and finds whether the
+    // loop closes (contour/FaceLoops.cpp); a pole without its degenerate edge does not.
+    const Vec2 d = ub - ua;
     const Vec2 ubn = ua + d;
     const Vec2 gap = d.cwiseAbs();
     const Vec3 sa = face.surface->point(ua), sb = face.surface->point(ubn), sm = face.surface->point(0.5 * (ua + ubn));

@@ -206,12 +206,18 @@ TEST(FaceMesher, CrossingLoopsAreReportedNotMeshed) {
   EXPECT_FALSE(meshFace(ccwHole, *cs).ok());
 }
 
-TEST(FaceMesher, InvalidInputThrows) {
+TEST(FaceMesher, InvalidInputIsTheFacesProblem) {
   const auto cs = isotropicSpace(boxOf(0, 0, 1, 1), 0.1);
   FaceBoundary b;
-  EXPECT_THROW(meshFace(b, *cs), MeshingError);
+  b.face = 11;
+  FaceMeshResult r = meshFace(b, *cs);
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.problems.front().find("face 12"), std::string::npos) << r.problems.front();  // 1-based
+  EXPECT_TRUE(r.mesh.triangles.empty());
   b.loops.push_back({BoundaryNode{Vec2(0, 0), 1}});
-  EXPECT_THROW(meshFace(b, *cs), MeshingError);
+  r = meshFace(b, *cs);
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.problems.front().find("loop 1"), std::string::npos) << r.problems.front();
 }
 
 TEST(FaceMesher, Deterministic) {

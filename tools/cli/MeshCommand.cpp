@@ -413,7 +413,7 @@ static int meshRun(const MeshArgs& given, io::Report& report) {
   for (const auto& p : sr.times) report.times.push_back(p);
   fillSurfaceReport(topo, sr, report);
   // faces that failed are left out (degraded); nothing meshed fails the run
-  if (sr.mesh.triangles.empty()) failRun(args, report, t0);
+  if (sr.mesh.triangles.empty() && sr.mesh.quads.empty()) failRun(args, report, t0);
   io::WriteOptions wopt;
   wopt.binary = args.binary;
   wopt.mshVersion = args.mshVersion;
