@@ -228,6 +228,17 @@ class Validator {
 
 }  // namespace
 
+std::vector<int> Model::solidFaces(int s) const {
+  const ModelSolid& so = solids.at(static_cast<std::size_t>(s));
+  std::vector<int> shellIds = so.voidShells;
+  shellIds.push_back(so.outerShell);
+  std::vector<int> out;
+  for (const int sh : shellIds)
+    if (sh >= 0 && static_cast<std::size_t>(sh) < shells.size())
+      for (const FaceUse& u : shells[static_cast<std::size_t>(sh)].faces) out.push_back(u.face);
+  return out;
+}
+
 std::vector<ModelIssue> Model::check() const { return Validator(*this).run(); }
 
 std::vector<std::string> Model::validate() const {

@@ -115,6 +115,9 @@ struct Model {
   /// every (edge, face) use. One issue per problem, graded by what the mesher can still do
   /// with the entity; empty when valid.
   std::vector<ModelIssue> check() const;
+  /// The faces (0-based) of solid s's shells: its void shells', then its outer shell's, each
+  /// in shell order (a face used twice appears twice); shell references out of range skipped.
+  std::vector<int> solidFaces(int s) const;
   /// check()'s messages, each naming the entity by its 1-based id.
   std::vector<std::string> validate() const;
 };

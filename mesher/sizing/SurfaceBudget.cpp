@@ -22,14 +22,7 @@ ElementBudget surfaceBudget(const Model& model, const std::vector<std::unique_pt
   std::vector<std::vector<int>> solidFaces;
   const bool volume = options.dim == 3 || (options.dim == 0 && !model.solids.empty());
   if (volume)
-    for (const ModelSolid& s : model.solids) {
-      std::vector<int>& list = solidFaces.emplace_back();
-      std::vector<int> shells = s.voidShells;
-      shells.push_back(s.outerShell);
-      for (int sh : shells)
-        if (sh >= 0)
-          for (const FaceUse& u : model.shells.at(static_cast<std::size_t>(sh)).faces) list.push_back(u.face);
-    }
+    for (std::size_t s = 0; s < model.solids.size(); ++s) solidFaces.push_back(model.solidFaces(static_cast<int>(s)));
   return decideBudget(faces, solidFaces, options.maxElements, options.sizing.hmaxFor(model.diagonal()));
 }
 

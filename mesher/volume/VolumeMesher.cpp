@@ -123,16 +123,9 @@ bool validated(SolidPiece& p, const VolumeMesherInput& in, const SolidTetMesh& s
 /// left out: its own problem says why).
 std::vector<int> unmeshedFaces(const Model& model, const std::vector<std::vector<int>>& faceTriangles, int solid) {
   std::vector<int> out;
-  const ModelSolid& so = model.solids[static_cast<std::size_t>(solid)];
-  std::vector<int> shells = so.voidShells;
-  shells.push_back(so.outerShell);
-  for (const int sh : shells) {
-    if (sh < 0 || static_cast<std::size_t>(sh) >= model.shells.size()) continue;
-    for (const FaceUse& fu : model.shells[static_cast<std::size_t>(sh)].faces)
-      if (fu.face >= 0 && static_cast<std::size_t>(fu.face) < faceTriangles.size() &&
-          faceTriangles[static_cast<std::size_t>(fu.face)].empty())
-        out.push_back(fu.face);
-  }
+  for (const int f : model.solidFaces(solid))
+    if (f >= 0 && static_cast<std::size_t>(f) < faceTriangles.size() && faceTriangles[static_cast<std::size_t>(f)].empty())
+      out.push_back(f);
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;

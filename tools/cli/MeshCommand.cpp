@@ -68,14 +68,19 @@ void writeReport(const MeshArgs& a, const io::Report& r) {
   io::writeFileAtomically(a.report, r.toJson().dump(1) + "\n");
 }
 
+/// The problem a one-line message names: the first failed one, else the first degraded one.
+const Problem* firstShortcoming(const io::Report& r) {
+  const Problem* p = firstOf(r.problems, Severity::Failed);
+  return p ? p : firstOf(r.problems, Severity::Degraded);
+}
+
 /// A meshing failure: the report (status failed, the total time) is written, no mesh, and
 /// the first failure becomes the one-line error (exit 3).
 [[noreturn]] void failRun(const MeshArgs& a, io::Report& r, std::chrono::steady_clock::time_point t0) {
   r.status = io::RunStatus::Failed;
   r.totalSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   writeReport(a, r);
-  const Problem* p = firstOf(r.problems, Severity::Failed);
-  if (!p) p = firstOf(r.problems, Severity::Degraded);
+  const Problem* p = firstShortcoming(r);
   throw MeshingError(a.file + ": " + (p ? entityLabel(p->entity) + ": " + p->detail : std::string("nothing could be meshed")));
 }
 
@@ -95,8 +100,7 @@ void finishRun(const MeshArgs& a, io::Report& r, std::chrono::steady_clock::time
   if (failed) text += std::to_string(failed) + " entit" + (failed == 1 ? "y" : "ies") + " left out";
   if (failed && degraded) text += ", ";
   if (degraded) text += std::to_string(degraded) + " meshed with shortcomings";
-  const Problem* p = firstOf(r.problems, Severity::Failed);
-  if (!p) p = firstOf(r.problems, Severity::Degraded);
+  const Problem* p = firstShortcoming(r);
   text += "; first: " + entityLabel(p->entity) + ": " + p->detail;
   if (a.report.empty()) text += " (--report FILE.json lists them all)";
   else text += " (all in " + a.report + ")";
@@ -106,16 +110,10 @@ void finishRun(const MeshArgs& a, io::Report& r, std::chrono::steady_clock::time
 /// The name of the first solid whose shells use each face ("" for a face of no solid).
 std::vector<std::string> facePartNames(const Model& m) {
   std::vector<std::string> out(m.faces.size());
-  for (const ModelSolid& so : m.solids) {
-    std::vector<int> shells = so.voidShells;
-    shells.push_back(so.outerShell);
-    for (const int sh : shells) {
-      if (sh < 0 || static_cast<std::size_t>(sh) >= m.shells.size()) continue;
-      for (const FaceUse& fu : m.shells[static_cast<std::size_t>(sh)].faces)
-        if (fu.face >= 0 && static_cast<std::size_t>(fu.face) < out.size() && out[static_cast<std::size_t>(fu.face)].empty())
-          out[static_cast<std::size_t>(fu.face)] = so.name;
-    }
-  }
+  for (std::size_t s = 0; s < m.solids.size(); ++s)
+    for (const int f : m.solidFaces(static_cast<int>(s)))
+      if (f >= 0 && static_cast<std::size_t>(f) < out.size() && out[static_cast<std::size_t>(f)].empty())
+        out[static_cast<std::size_t>(f)] = m.solids[s].name;
   return out;
 }
 

@@ -233,14 +233,19 @@ void writeStep(const Handle(TDocStd_Document)& doc, const std::filesystem::path&
   std::cout << "wrote " << path.string() << "\n";
 }
 
-void writeSinglePart(const TopoDS_Shape& s, const char* name, const std::filesystem::path& path) {
-  checkShape(s, name, 1);
+// One shape as one named part (no check of what it is).
+void writePart(const TopoDS_Shape& s, const char* name, const std::filesystem::path& path) {
   Handle(TDocStd_Document) doc = newDoc();
   Handle(XCAFDoc_ShapeTool) st = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
   TDF_Label l = st->AddShape(s, Standard_False);
   if (l.IsNull()) fail(std::string(name) + ": cannot add shape to the document");
   setName(l, name);
   writeStep(doc, path);
+}
+
+void writeSinglePart(const TopoDS_Shape& s, const char* name, const std::filesystem::path& path) {
+  checkShape(s, name, 1);
+  writePart(s, name, path);
 }
 
 // An assembly of two components (each its own part with its shape at the origin, placed by
@@ -354,16 +359,6 @@ TopoDS_Shape makePassage() {
   const TopoDS_Shape shell = ex.Current();
   if (!BRepCheck_Analyzer(shell).IsValid()) fail("passage: BRepCheck_Analyzer reports an invalid shell");
   return shell;
-}
-
-// A surface model (no solid) as one part.
-void writeSurfacePart(const TopoDS_Shape& s, const char* name, const std::filesystem::path& path) {
-  Handle(TDocStd_Document) doc = newDoc();
-  Handle(XCAFDoc_ShapeTool) st = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
-  TDF_Label l = st->AddShape(s, Standard_False);
-  if (l.IsNull()) fail(std::string(name) + ": cannot add shape to the document");
-  setName(l, name);
-  writeStep(doc, path);
 }
 
 // Two cubes 10 x 10 x 10 overlapping by half along x: A at the origin, B at (5, 0, 0). Their
@@ -491,7 +486,7 @@ int main(int argc, char** argv) {
     writeSinglePart(makeCylinder(), "CYLINDER", out / "cylinder.step");
     writeSinglePart(makeCantilever(), "CANTILEVER", out / "cantilever.step");
     writeBlocks2(out / "blocks2.step");
-    writeSurfacePart(makePassage(), "PASSAGE", out / "passage.step");
+    writePart(makePassage(), "PASSAGE", out / "passage.step");  // a surface model: no solid
     writeOverlap2(out / "overlap2.step");
     return 0;
   } catch (const Standard_Failure& e) {
