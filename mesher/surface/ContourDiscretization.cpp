@@ -30,6 +30,7 @@
 #include <tuple>
 
 #include "mesher/core/Error.h"
+#include "mesher/surface/contour/CoincidentEdges.h"
 #include "mesher/surface/contour/CornerParity.h"
 #include "mesher/surface/contour/CuspNodes.h"
 #include "mesher/surface/contour/MetricArcLength.h"
@@ -182,7 +183,7 @@ int basicCount(const ModelEdge& ed, int e, double length, const ContourOptions& 
 /// Of single-segment edges joining the same two vertices, only the shortest in the metric
 /// (the lowest index on ties) keeps one segment; the others get two.
 void separateParallelEdges(const Model& model, const std::vector<char>& used, const std::vector<double>& length,
-                           std::vector<int>& n) {
+                           const std::vector<int>& rep, const contour::EdgeTwins& twins, std::vector<int>& n) {
   struct Key {
     int lo, hi;
     double length;
@@ -192,8 +193,9 @@ void separateParallelEdges(const Model& model, const std::vector<char>& used, co
   std::vector<Key> keys;
   for (std::size_t e = 0; e < model.edges.size(); ++e) {
     const ModelEdge& ed = model.edges[e];
-    if (!used[e] || ed.degenerate || ed.v0 == ed.v1 || n[e] != 1) continue;
-    keys.push_back({std::min(ed.v0, ed.v1), std::max(ed.v0, ed.v1), length[e], static_cast<int>(e)});
+    if (!used[e] || ed.degenerate || ed.v0 == ed.v1 || n[e] != 1 || twins.of[e] >= 0) continue;
+    const int p = rep[ed.v0], q = rep[ed.v1];
+    keys.push_back({std::min(p, q), std::max(p, q), length[e], static_cast<int>(e)});
   }
   std::sort(keys.begin(), keys.end());
   for (std::size_t i = 1; i < keys.size(); ++i)
@@ -225,17 +227,23 @@ void fillShortLoops(const Model& model, const std::vector<const ControlSpace2d*>
 
 std::vector<int> segmentCounts(const Model& model, const std::vector<const ControlSpace2d*>& spaces,
                                const std::vector<char>& used, const std::vector<double>& length,
+                               const std::vector<int>& rep, const contour::EdgeTwins& twins,
                                const ContourOptions& options) {
   std::vector<int> n(model.edges.size(), 0);
   for (std::size_t e = 0; e < model.edges.size(); ++e)
     if (used[e]) n[e] = basicCount(model.edges[e], static_cast<int>(e), length[e], options);
-  separateParallelEdges(model, used, length, n);
+  separateParallelEdges(model, used, length, rep, twins, n);
   fillShortLoops(model, spaces, length, n);
   if (options.evenSegments) {
     for (int& k : n)
       if (k % 2) ++k;
     contour::makeCornerParity(model, spaces, used, n);
   }
+  // twins share their nodes: the larger count of the two (two even counts stay even)
+  for (std::size_t e = 0; e < n.size(); ++e)
+    if (twins.of[e] >= 0) n[e] = n[twins.of[e]] = std::max(n[e], n[twins.of[e]]);
+  for (std::size_t e = 0; e < n.size(); ++e)
+    if (twins.of[e] >= 0) n[e] = n[twins.of[e]];
   return n;
 }
 
@@ -273,6 +281,31 @@ EdgeDiscretization placeNodes(const Model& model, int e, std::vector<double> t, 
   return d;
 }
 
+/// Edge e, twin of edge a (CoincidentEdges.h): a's nodes, at e's own parameters (the
+/// nearest points of e's curve, which must increase along e).
+EdgeDiscretization twinNodes(const Model& model, int e, int a, bool reversed, const EdgeDiscretization& da,
+                             const SurfaceMesh& mesh) {
+  const ModelEdge& ed = model.edges[e];
+  EdgeDiscretization d;
+  d.nodes = da.nodes;
+  if (reversed) std::reverse(d.nodes.begin(), d.nodes.end());
+  const std::size_t n = d.nodes.size();
+  d.t.resize(n);
+  d.t.front() = ed.t0;
+  d.t.back() = ed.t1;
+  for (std::size_t i = 1; i + 1 < n; ++i) {
+    const double guess = ed.t0 + (ed.t1 - ed.t0) * static_cast<double>(i) / static_cast<double>(n - 1);
+    d.t[i] = ed.curve->project(mesh.nodes[d.nodes[i]], guess, ed.t0, ed.t1);
+    if (!(d.t[i] > d.t[i - 1]))
+      throw MeshingError(edgeName(e) + " lies on edge " + std::to_string(a + 1) +
+                         " but its curve runs differently: the two cannot share their nodes");
+  }
+  if (n > 1 && !(d.t[n - 1] > d.t[n - 2]))
+    throw MeshingError(edgeName(e) + " lies on edge " + std::to_string(a + 1) +
+                       " but its curve runs differently: the two cannot share their nodes");
+  return d;
+}
+
 }  // namespace
 
 std::vector<EdgeDiscretization> discretizeEdges(const Model& model,
@@ -302,20 +335,24 @@ std::vector<EdgeDiscretization> discretizeEdges(const Model& model,
       throw EntityError(EntityKind::Edge, e, err.what());
     }
   }
-  const std::vector<int> n = segmentCounts(model, faceSpaces, used, length, options);
+  // after the checks above: every used edge has valid vertices
+  const std::vector<int> rep = contour::coincidentVertices(model, used);
+  const contour::EdgeTwins twins = contour::coincidentEdges(model, used, rep);
+  const std::vector<int> n = segmentCounts(model, faceSpaces, used, length, rep, twins, options);
 
   // Vertex nodes first, in vertex order.
   std::vector<char> vertexUsed(model.vertices.size(), 0);
   for (int e = 0; e < ne; ++e)
-    if (used[e]) vertexUsed[model.edges[e].v0] = vertexUsed[model.edges[e].v1] = 1;
+    if (used[e]) vertexUsed[rep[model.edges[e].v0]] = vertexUsed[rep[model.edges[e].v1]] = 1;
   std::vector<int> vertexNodes(model.vertices.size(), -1);
   for (std::size_t v = 0; v < model.vertices.size(); ++v) {
-    if (!vertexUsed[v]) continue;
+    if (!vertexUsed[v] || rep[v] != static_cast<int>(v)) continue;
     NodeOn on;
     on.kind = NodeOn::Kind::Vertex;
     on.entity = static_cast<int>(v);
     vertexNodes[v] = mesh.addNode(model.vertices[v].p, on);
   }
+  for (std::size_t v = 0; v < model.vertices.size(); ++v) vertexNodes[v] = vertexNodes[rep[v]];
 
   std::vector<std::vector<double>> params(ne);
   for (int e = 0; e < ne; ++e)
@@ -325,7 +362,8 @@ std::vector<EdgeDiscretization> discretizeEdges(const Model& model,
   for (int e = 0; e < ne; ++e) {
     if (!used[e]) continue;
     try {
-      out[e] = placeNodes(model, e, std::move(params[e]), vertexNodes, mesh);
+      out[e] = twins.of[e] >= 0 ? twinNodes(model, e, twins.of[e], twins.reversed[e], out[twins.of[e]], mesh)
+                                : placeNodes(model, e, std::move(params[e]), vertexNodes, mesh);
     } catch (const MeshingError& err) {
       throw EntityError(EntityKind::Edge, e, err.what());
     }

@@ -17,6 +17,7 @@
 #include "mesher/sizing/SurfaceBudget.h"
 #include "mesher/quad/QuadSizing.h"
 #include "mesher/surface/ContourDiscretization.h"
+#include "mesher/surface/contour/CoincidentFaces.h"
 #include "mesher/surface/improve/FaceQuality.h"
 
 namespace aniso {
@@ -255,13 +256,28 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
 
   // 4: assembly, in face order.
   t = Clock::now();
+  // faces that coincide with an earlier one take its triangles (contour/CoincidentFaces.h)
+  std::vector<int> twin(nf, -1);
+  if (!in.options.quad) {
+    std::vector<const FaceMesh*> meshed(nf, nullptr);
+    for (int f = 0; f < nf; ++f)
+      if (cs[f] && meshes[f].ok()) meshed[f] = &meshes[f].mesh;
+    twin = contour::coincidentFaces(model, meshed);
+  }
+  std::vector<std::pair<std::size_t, std::size_t>> range(nf, {0, 0});
   for (int f = 0; f < nf; ++f) {
     if (!cs[f] || !meshes[f].ok()) continue;
     const size_t before = r.mesh.triangles.size(), quadsBefore = r.mesh.quads.size();
-    addFaceMesh(model, f, meshes[f].mesh, r.mesh);
+    if (twin[f] >= 0) {
+      contour::shareFaceTriangles(model, f, range[twin[f]].first, range[twin[f]].second, meshes[f].mesh, r.mesh);
+      r.faces[f].sharedWith = twin[f];
+    } else {
+      addFaceMesh(model, f, meshes[f].mesh, r.mesh);
+      if (const int folded = cancelFoldedPairs(r.mesh, before))
+        logDebug("face " + std::to_string(f + 1) + ": " + std::to_string(folded) + " folded triangles removed");
+    }
     r.faces[f].quads = static_cast<int>(r.mesh.quads.size() - quadsBefore);
-    if (const int folded = cancelFoldedPairs(r.mesh, before))
-      logDebug("face " + std::to_string(f + 1) + ": " + std::to_string(folded) + " folded triangles removed");
+    range[f] = {before, r.mesh.triangles.size()};
     r.faces[f].triangles = static_cast<int>(r.mesh.triangles.size() - before);
     r.quality.merge(r.faces[f].quality);
   }

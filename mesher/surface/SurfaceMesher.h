@@ -53,6 +53,9 @@ struct FaceOutcome {
   std::vector<std::string> problems;  ///< empty when the face meshed
   int triangles = 0;
   int quads = 0;
+  /// The face coincides with this earlier face (0-based) and took its triangles
+  /// (contour/CoincidentFaces.h); −1 otherwise.
+  int sharedWith = -1;
   quad::QuadStats quad;  ///< the quad conversion (--quad); quality.mu is then over its edges
 };
 

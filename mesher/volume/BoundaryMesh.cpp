@@ -34,6 +34,53 @@ std::string faceList(const std::set<int>& faces) {
   return s;
 }
 
+/// Two triangles on the same three nodes with opposite orientations — two coincident faces
+/// with the solid on both sides, sharing one mesh (contour/CoincidentFaces.h) — lie inside
+/// the material: both are left out, and a face with no triangle left is internal.
+void cancelOppositePairs(BoundaryMesh& b) {
+  std::vector<std::pair<std::array<int, 3>, int>> sorted;  // sorted triple, triangle
+  sorted.reserve(b.triangles.size());
+  for (std::size_t t = 0; t < b.triangles.size(); ++t) {
+    std::array<int, 3> k = b.triangles[t];
+    std::sort(k.begin(), k.end());
+    sorted.push_back({k, static_cast<int>(t)});
+  }
+  std::sort(sorted.begin(), sorted.end());
+  // orientation of a triple: +1 for an even rotation of its sorted order, -1 otherwise
+  const auto parity = [](const std::array<int, 3>& t) {
+    const int m = static_cast<int>(std::min_element(t.begin(), t.end()) - t.begin());
+    return t[(m + 1) % 3] < t[(m + 2) % 3] ? 1 : -1;
+  };
+  std::vector<char> drop(b.triangles.size(), 0);
+  bool any = false;
+  for (std::size_t i = 0; i + 1 < sorted.size(); ++i) {
+    if (sorted[i].first != sorted[i + 1].first) continue;
+    const bool pairOnly = (i + 2 >= sorted.size() || sorted[i + 2].first != sorted[i].first) &&
+                          (i == 0 || sorted[i - 1].first != sorted[i].first);
+    const int a = sorted[i].second, c = sorted[i + 1].second;
+    if (pairOnly && parity(b.triangles[a]) != parity(b.triangles[c])) {
+      drop[a] = drop[c] = 1;
+      any = true;
+    }
+  }
+  if (!any) return;
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<int> triangleFace;
+  std::set<int> kept;
+  for (std::size_t t = 0; t < b.triangles.size(); ++t) {
+    if (drop[t]) continue;
+    triangles.push_back(b.triangles[t]);
+    triangleFace.push_back(b.triangleFace[t]);
+    kept.insert(b.triangleFace[t]);
+  }
+  std::vector<int> faces;
+  for (const int f : b.faces) (kept.count(f) ? faces : b.internalFaces).push_back(f);
+  std::sort(b.internalFaces.begin(), b.internalFaces.end());
+  b.triangles = std::move(triangles);
+  b.triangleFace = std::move(triangleFace);
+  b.faces = std::move(faces);
+}
+
 }  // namespace
 
 std::vector<std::vector<int>> trianglesByFace(const SurfaceMesh& mesh, int numFaces) {
@@ -106,6 +153,7 @@ BoundaryMesh buildBoundaryMesh(const Model& model, const SurfaceMesh& mesh,
       b.triangleFace.push_back(f);
     }
   }
+  cancelOppositePairs(b);
   b.nodes.assign(nodes.begin(), nodes.end());
   return b;
 }

@@ -12,7 +12,10 @@
 // for a void shell); a shell whose sign comes out wrong as a whole is flipped (an OCCT
 // shell stored reversed). A face used twice by the solid with opposite orientations lies
 // inside the material (both sides are the solid): its triangles are left out (its nodes
-// stay, as fixed interior nodes); with the same orientation it is taken once.
+// stay, as fixed interior nodes); with the same orientation it is taken once. Likewise two
+// triangles of different faces on the same three nodes with opposite orientations (two
+// coincident faces sharing one mesh, surface/contour/CoincidentFaces.h: a slit left by a
+// boolean) are both left out, and a face left with no triangle counts as internal.
 //
 // checkBoundaryMesh validates, BEFORE any 3D work, that the result is closed and
 // consistently oriented: every undirected edge is used by as many triangles in one
