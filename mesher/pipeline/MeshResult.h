@@ -11,6 +11,8 @@
 #include "mesher/core/Problem.h"
 #include "mesher/highorder/Order2.h"
 #include "mesher/surface/SurfaceMesher.h"
+#include "mesher/volume/SurfaceGeometry.h"
+#include "mesher/volume/SurfaceRepair.h"
 #include "mesher/volume/VolumeMesher.h"
 
 namespace aniso {
@@ -52,7 +54,9 @@ struct MeshResult {
   PipelineStop stop = PipelineStop::None;
   /// Every problem: the model's (grading), then the final surface's, then the volume's.
   std::vector<Problem> problems;
-  SurfaceMeshResult surface;  ///< the surface kept (the first, or a finer one of a stage)
+  SurfaceMeshResult surface;  ///< the surface kept (the first, or a finer one of a stage), repaired
+  SurfaceRepairStats surfaceRepair;  ///< what the repair stage did to it (SurfaceStage.h)
+  SurfaceGeometryCheck surfaceCheck;  ///< its geometric postcondition after the repair
   VolumeMeshResult volume;    ///< dim 3 (empty for dim 2 and when stopped before it)
   bool volumeRan = false;     ///< dim 3 and the volume stages ran
   ProximityOutcome proximity;

@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "mesher/pipeline/RunProblems.h"
+#include "mesher/pipeline/SurfaceStage.h"
 #include "mesher/pipeline/VolumeStages.h"
 
 namespace aniso {
@@ -46,7 +47,7 @@ MeshResult meshModel(const Model& model, const MeshRequest& request) {
   sin.analytic = request.analytic;
   sin.user = &request.user;
   sin.skipFaces = std::move(grade.skipFaces);
-  r.surface = meshSurfaces(sin);
+  r.surface = meshRepairedSurface(sin, &r.surfaceRepair);
   r.times = r.surface.times;
   if (r.surface.mesh.triangles.empty() && r.surface.mesh.quads.empty()) {
     append(r.problems, surfaceProblems(model, r.surface));
@@ -66,6 +67,7 @@ MeshResult meshModel(const Model& model, const MeshRequest& request) {
     for (const auto& p : r.volume.times) r.times.push_back(p);
   }
   append(r.problems, surfaceProblems(model, r.surface));
+  r.surfaceCheck = checkSurfaceGeometry(model, r.surface.mesh);
   if (r.volumeRan) {
     append(r.problems, volumeProblems(model, r.volume));
     if (r.volume.mesh.tets.empty()) {

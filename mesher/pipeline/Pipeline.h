@@ -3,7 +3,9 @@
 // 3.5, alg. 3.3; STYLE.md §13). Stages, each bounded, their decisions recorded in the result:
 //   1 model grading (RunProblems.h): Model::check() as problems; unusable faces are left
 //     out, a model with nothing usable stops here (PipelineStop::Model);
-//   2 the surface mesh (SurfaceMesher.h); no face meshed stops here (PipelineStop::Surface);
+//   2 the surface mesh and its repair (SurfaceStage.h), the same for 2D and 3D; no face
+//     meshed stops here (PipelineStop::Surface); the kept surface's geometric
+//     postcondition (SurfaceGeometry.h) is in result.surfaceCheck;
 //   3 dim 3: the volume stages (VolumeStages.h): alg. 3.3's proximity rounds, the final
 //     volume, the fallback to the first surface, the coarse-solid retry; no solid meshed
 //     stops here (PipelineStop::Volume);

@@ -7,6 +7,7 @@
 
 #include "mesher/core/Cancel.h"
 #include "mesher/core/Log.h"
+#include "mesher/pipeline/SurfaceStage.h"
 #include "mesher/volume/CoarseSolids.h"
 #include "mesher/volume/ThinBoundary.h"
 
@@ -28,6 +29,12 @@ std::size_t failedFaces(const SurfaceMeshResult& sr) {
       std::count_if(sr.faces.begin(), sr.faces.end(), [](const FaceOutcome& o) { return !o.problems.empty(); }));
 }
 
+/// The first surface and its repair, kept for the fallback once a finer one replaces it.
+struct FirstSurface {
+  SurfaceMeshResult surface;
+  SurfaceRepairStats repair;
+};
+
 void decide(MeshResult& r, std::string stage, std::string decision, std::string reason) {
   r.decisions.push_back({std::move(stage), std::move(decision), std::move(reason)});
 }
@@ -36,7 +43,7 @@ void decide(MeshResult& r, std::string stage, std::string decision, std::string 
 /// needs its final volume. `sizing` collects the sources of the kept rounds; `first`
 /// receives the first surface when a finer one replaces it.
 bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSizing& sizing,
-                     std::optional<SurfaceMeshResult>& first, MeshResult& r) {
+                     std::optional<FirstSurface>& first, MeshResult& r) {
   ProximityOutcome& px = r.proximity;
   const double hmin = in.options.sizing.hminFor(in.model->diagonal());
   for (int round = 1; round <= kMaxProximityRounds; ++round) {
@@ -68,7 +75,8 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
     sizing.sources.insert(sizing.sources.end(), sources.begin(), sources.end());
     SurfaceMesherInput sin = in.surface;
     sin.user = &sizing;
-    SurfaceMeshResult finer = meshSurfaces(sin);
+    SurfaceRepairStats repair;
+    SurfaceMeshResult finer = meshRepairedSurface(sin, &repair);
     px.seconds += since(tr);
     ++px.rounds;
     if (failedFaces(finer) > failedFaces(r.surface)) {
@@ -77,8 +85,9 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
       return false;
     }
     px.facesRefined += sources.size();
-    if (!first) first = std::move(r.surface);
+    if (!first) first = FirstSurface{std::move(r.surface), r.surfaceRepair};
     r.surface = std::move(finer);
+    r.surfaceRepair = repair;
     decide(r, "proximity", name + ": finer surface kept", std::to_string(sources.size()) + " faces refined, " + asked);
   }
   return false;
@@ -98,7 +107,8 @@ void coarseSolidRetry(const VolumeStagesInput& in, const VolumeMesherInput& vin,
   sin.user = &finerSizing;
   const std::string name = std::to_string(coarse.size()) + " coarse solids";
   try {
-    SurfaceMeshResult finer = meshSurfaces(sin);
+    SurfaceRepairStats repair;
+    SurfaceMeshResult finer = meshRepairedSurface(sin, &repair);
     if (failedFaces(finer) > failedFaces(r.surface)) {
       decide(r, "coarse-solids", "first mesh kept", name + ": the finer surface left more faces unmeshed");
     } else {
@@ -111,6 +121,7 @@ void coarseSolidRetry(const VolumeStagesInput& in, const VolumeMesherInput& vin,
       if (fvr.ok() && fvr.quality.meanRatio.mean() > before) {
         r.volume = std::move(fvr);
         r.surface = std::move(finer);
+        r.surfaceRepair = repair;
         r.coarse.refinedKept = true;
         decide(r, "coarse-solids", "finer mesh kept", name + ", " + ratio);
       } else {
@@ -134,7 +145,7 @@ void runVolumeStages(const VolumeStagesInput& in, MeshResult& r) {
   vin.options = in.options;
   vin.user = in.user;  // the volume follows the finer surface (eq. 3.3) without box sources
   UserSizing sizing = *in.user;  // the user's and the proximity sources, for the surface
-  std::optional<SurfaceMeshResult> first;
+  std::optional<FirstSurface> first;
   if (!proximityRounds(in, vin, sizing, first, r)) {
     // stage 2: the final volume of the surface kept
     vin.surface = &r.surface.mesh;
@@ -148,7 +159,8 @@ void runVolumeStages(const VolumeStagesInput& in, MeshResult& r) {
       r.proximity.rounds = 0;
       r.proximity.facesRefined = 0;
       if (first) {
-        r.surface = std::move(*first);
+        r.surface = std::move(first->surface);
+        r.surfaceRepair = first->repair;
         vin.surface = &r.surface.mesh;
         r.volume = meshVolumes(vin);
       }  // else the surface is the first already, its volume made above (deterministic)

@@ -13,7 +13,8 @@
 //   4 coarse-solid retry (CoarseSolids.h): the surface once more at a finer size around
 //     the solids below the quality bar, kept when the whole mesh's mean ratio is better (a
 //     retry that fails, by status or by a MeshingError, leaves the first result).
-// At most 5 volume meshings and 3 surface meshings. Every decision is appended to
+// Every surface made here goes through the repair stage (SurfaceStage.h). At most 5
+// volume meshings and 3 surface meshings. Every decision is appended to
 // result.decisions.
 #include "mesher/model/Model.h"
 #include "mesher/pipeline/MeshResult.h"

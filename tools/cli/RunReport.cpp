@@ -77,7 +77,14 @@ nlohmann::ordered_json optionsJson(const MeshArgs& a) {
 void fillRunReport(const Model& model, const MeshResult& r, io::Report& report) {
   report.problems.insert(report.problems.end(), r.problems.begin(), r.problems.end());
   for (const auto& p : r.times) report.times.push_back(p);
-  if (r.stop != PipelineStop::Model) fillSurfaceReport(r.surface, report);
+  if (r.stop != PipelineStop::Model) {
+    fillSurfaceReport(r.surface, report);
+    const SurfaceRepairStats& sr = r.surfaceRepair;
+    const SurfaceGeometryCheck& c = r.surfaceCheck;
+    report.extra["surface_repair"] = {{"nodes_merged", sr.nodesMerged},     {"caps_flipped", sr.capsFlipped},
+                                      {"folds_repaired", sr.foldsRepaired}, {"folded_edges", c.foldedEdges},
+                                      {"flat_triangles", c.flatTriangles},  {"open_edges_closed_shells", c.openEdges}};
+  }
   if (r.volumeRan) {
     report.extra["coarse_solids"] = {{"solids", r.coarse.solids}, {"refined_kept", r.coarse.refinedKept}};
     const ProximityOutcome& px = r.proximity;
@@ -88,6 +95,11 @@ void fillRunReport(const Model& model, const MeshResult& r, io::Report& report) 
                                  {"budget_factor", px.budgetFactor},
                                  {"seconds", px.seconds}};
     fillVolumeReport(model, r.volume, report);
+    // the repair stage before the volume and after its split rounds, as one count
+    nlohmann::ordered_json& rec = report.extra["recovery"];
+    rec["surface_folds_repaired"] = r.volume.foldsRepaired + r.surfaceRepair.foldsRepaired;
+    rec["surface_nodes_merged"] = r.volume.surfaceNodesMerged + r.surfaceRepair.nodesMerged;
+    rec["surface_caps_flipped"] = r.volume.surfaceCapsFlipped + r.surfaceRepair.capsFlipped;
   }
   if (r.order2)  // the counts above are of the elevated mesh: its nodes include the mid nodes
     report.extra["order2"] = {{"mid_nodes", r.order2->midNodes}, {"straightened", r.order2->straightened}};
