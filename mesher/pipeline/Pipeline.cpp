@@ -1,6 +1,7 @@
 #include "mesher/pipeline/Pipeline.h"
 
 #include <chrono>
+#include <string>
 
 #include "mesher/pipeline/RunProblems.h"
 #include "mesher/pipeline/SurfaceStage.h"
@@ -68,6 +69,13 @@ MeshResult meshModel(const Model& model, const MeshRequest& request) {
   }
   append(r.problems, surfaceProblems(model, r.surface));
   r.surfaceCheck = checkSurfaceGeometry(model, r.surface.mesh);
+  const SurfaceRepairStats& rep = r.surfaceRepair;
+  std::string findings;
+  for (const std::string& m : r.surfaceCheck.messages()) findings += (findings.empty() ? "" : ", ") + m;
+  r.decisions.push_back({"surface-repair", r.surfaceCheck.ok() ? "surface valid" : "shortcomings left",
+                         std::to_string(rep.nodesMerged) + " nodes merged, " + std::to_string(rep.capsFlipped) +
+                             " caps flipped, " + std::to_string(rep.foldsRepaired) + " folded edges mended" +
+                             (findings.empty() ? "" : "; " + findings)});
   if (r.volumeRan) {
     append(r.problems, volumeProblems(model, r.volume));
     if (r.volume.mesh.tets.empty()) {
