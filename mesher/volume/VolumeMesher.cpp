@@ -21,9 +21,8 @@
 #include "mesher/volume/CarveSolid.h"
 #include "mesher/volume/SolidTetMesh.h"
 #include "mesher/volume/SplitSurfaceEdges.h"
-#include "mesher/volume/UnfoldSurface.h"
 #include "mesher/volume/VolumeControlSpace.h"
-#include "mesher/volume/SurfaceSlivers.h"
+#include "mesher/volume/SurfaceRepair.h"
 #include "mesher/volume/VolumeImprovement.h"
 #include "mesher/volume/VolumeRefinement.h"
 
@@ -264,33 +263,16 @@ std::vector<int> solidsUsingFaces(const Model& model, const std::vector<std::uin
   return out;
 }
 
-/// A folded surface overlaps itself and no tetrahedralization contains it: mended first
-/// (UnfoldSurface.h). Quad-dominant and quadratic meshes are surface meshes only.
-/// Returns the faces whose triangles changed.
-std::vector<int> mendFolds(SurfaceMesh& surface, VolumeMeshResult& r) {
-  if (!surface.quads.empty() || !surface.triangleMid.empty()) return {};
-  const UnfoldStats u = unfoldSurface(surface);
-  r.foldsRepaired += u.foldedBefore - u.foldedAfter;
-  if (u.foldedBefore > 0)
-    logDebug("volume: surface folds: " + std::to_string(u.foldedBefore) + " folded edges, " + std::to_string(u.flips) +
-             " flips, " + std::to_string(u.regions) + " regions (" + std::to_string(u.nodesDropped) +
-             " nodes dropped), " + std::to_string(u.foldedAfter) + " left");
-  return u.facesChanged;
-}
-
-/// Caps and sub-tolerance edges force flat tets (SurfaceSlivers.h): mended first, within
-/// kSurfaceSliverTolerance times h_min (the smallest element size asked for: shorter edges
-/// and flatter caps come from the CAD, not from the sizing).
-/// Returns the faces whose triangles changed.
-std::vector<int> mendSlivers(const Model& model, const MeshOptions& options, SurfaceMesh& surface,
-                             VolumeMeshResult& r) {
-  const SurfaceSliverStats s =
-      mendSurfaceSlivers(surface, kSurfaceSliverTolerance * options.sizing.hminFor(model.diagonal()), &model);
+/// A split next to a sliver can make caps and fold the surface again (three nearly
+/// collinear rim nodes): the surface repair stage (SurfaceRepair.h) once more. Returns the
+/// faces whose triangles changed.
+std::vector<int> repairAfterSplit(const Model& model, const MeshOptions& options, SurfaceMesh& surface,
+                                  VolumeMeshResult& r) {
+  const SurfaceRepairStats s =
+      repairSurface(model, kSurfaceSliverTolerance * options.sizing.hminFor(model.diagonal()), surface);
   r.surfaceNodesMerged += s.nodesMerged;
   r.surfaceCapsFlipped += s.capsFlipped;
-  if (s.nodesMerged + s.capsFlipped > 0)
-    logDebug("volume: surface slivers: " + std::to_string(s.nodesMerged) + " nodes merged, " +
-             std::to_string(s.capsFlipped) + " caps flipped on " + std::to_string(s.facesChanged.size()) + " faces");
+  r.foldsRepaired += s.foldsRepaired;
   return s.facesChanged;
 }
 
@@ -316,8 +298,6 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
   VolumeMesherInput in = input;
   in.surface = &surface;
   VolumeMeshResult r;
-  mendSlivers(model, in.options, surface, r);
-  mendFolds(surface, r);
   std::map<std::string, double> timeSum;
   std::vector<std::string> timeOrder;
   std::vector<SolidPiece> pieces(static_cast<std::size_t>(ns));
@@ -349,10 +329,7 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
     if (requests.empty() || round >= in.maxSplitRounds || requests.size() > 2 * firstMissing) break;
     std::vector<std::uint8_t> touched = facesUsingEdges(surface, requests, nf);
     const SplitStats split = splitSurfaceEdges(model, surface, requests);
-    // A split next to a sliver can make caps and fold the surface again (three nearly
-    // collinear rim nodes).
-    for (const int f : mendSlivers(model, in.options, surface, r)) touched[f] = 1;
-    for (const int f : mendFolds(surface, r)) touched[f] = 1;
+    for (const int f : repairAfterSplit(model, in.options, surface, r)) touched[f] = 1;
     if (split.edgesSplit == 0) break;
     ++r.splitRounds;
     r.boundarySplits += split.edgesSplit;

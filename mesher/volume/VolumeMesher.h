@@ -1,8 +1,9 @@
 #pragma once
 // VolumeMesher — the whole volume meshing process of a model (thesis 3.5.2, ch. 5), after
-// the surface mesh, whose caps and sub-tolerance edges (SurfaceSlivers.h: they force flat
-// tetrahedra) and folds are mended first (UnfoldSurface.h: a folded surface
-// overlaps itself, so no tetrahedralization contains it): for every solid, independently,
+// the surface mesh and its repair stage (SurfaceRepair.h: caps and sub-tolerance edges
+// force flat tetrahedra, a folded surface overlaps itself so no tetrahedralization contains
+// it; mesher/pipeline runs the stage, a caller of meshVolumes alone runs it first): for
+// every solid, independently,
 //   1 its outward boundary mesh, validated closed and oriented (BoundaryMesh.h);
 //   2 the Delaunay triangulation of its boundary nodes (BoundaryTriangulation.h, 5.3);
 //   3 boundary recovery (BoundaryRecovery.h, 5.4) and removal of the outside
@@ -21,7 +22,9 @@
 // Boundary entities that recovery leaves missing are split in the surface mesh on the CAD
 // geometry (SplitSurfaceEdges.h: the boundary Steiner points of table 5.3, put where every
 // solid sharing the face sees them) and the solids using the changed faces are meshed
-// again, for at most maxSplitRounds rounds; the result's surface holds the new nodes.
+// again, for at most maxSplitRounds rounds, with the repair stage after each round; the
+// given surface is not changed, the result's surface is it with the splits (and their
+// repairs) applied.
 // After carving, the boundary triangles whose tet reaches across a thin part are found
 // (ThinBoundary.h, alg. 3.3's proximity check) and returned; with stopWhenThin such a solid
 // stops there (the caller meshes the surface finer and calls again).
@@ -96,9 +99,11 @@ struct VolumeMeshResult {
   RecoveryStats recovery;                             ///< summed over the solids
   int boundarySplits = 0;  ///< surface edges split by the last resort of recovery (mesh.surface has them)
   int splitRounds = 0;     ///< rounds of splitting and meshing again
-  int foldsRepaired = 0;   ///< folded surface edges mended before meshing (UnfoldSurface.h)
-  int surfaceNodesMerged = 0;  ///< surface nodes merged before meshing (SurfaceSlivers.h)
-  int surfaceCapsFlipped = 0;  ///< surface caps flipped away before meshing (SurfaceSlivers.h)
+  /// The repair stage after the split rounds (SurfaceRepair.h): folded edges mended,
+  /// nodes merged, caps flipped.
+  int foldsRepaired = 0;
+  int surfaceNodesMerged = 0;
+  int surfaceCapsFlipped = 0;
   /// Boundary triangles thinner than their size across the solid (ThinBoundary.h), solid
   /// by solid; with stopWhenThin the solids having some were not meshed further.
   std::vector<ThinSpot> thin;

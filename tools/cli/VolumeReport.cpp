@@ -72,12 +72,6 @@ void fillVolumeReport(const Model& model, const VolumeMeshResult& vr, io::Report
     j["times"] = times;
     for (const auto& [name, value] : o.counters) j["stats"][name] = value;
     solids.push_back(j);
-    for (VolumeProblem p : o.problems) {
-      if (p.entity.kind == EntityKind::Solid && p.entity.part.empty() && p.entity.id >= 1 &&
-          static_cast<std::size_t>(p.entity.id) <= model.solids.size())
-        p.entity.part = model.solids[static_cast<std::size_t>(p.entity.id - 1)].name;
-      report.problems.push_back(std::move(p));
-    }
   }
   report.extra["solids"] = solids;
 }

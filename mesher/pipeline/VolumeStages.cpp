@@ -1,0 +1,175 @@
+#include "mesher/pipeline/VolumeStages.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <optional>
+
+#include "mesher/core/Cancel.h"
+#include "mesher/core/Log.h"
+#include "mesher/pipeline/SurfaceStage.h"
+#include "mesher/volume/CoarseSolids.h"
+#include "mesher/volume/ThinBoundary.h"
+
+namespace aniso {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::string num(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.4g", v);
+  return b;
+}
+
+/// Faces the surface mesher could not mesh (a finer surface must not lose more of them).
+std::size_t failedFaces(const SurfaceMeshResult& sr) {
+  return static_cast<std::size_t>(
+      std::count_if(sr.faces.begin(), sr.faces.end(), [](const FaceOutcome& o) { return !o.problems.empty(); }));
+}
+
+/// The first surface and its repair, kept for the fallback once a finer one replaces it.
+struct FirstSurface {
+  SurfaceMeshResult surface;
+  SurfaceRepairStats repair;
+};
+
+void decide(MeshResult& r, std::string stage, std::string decision, std::string reason) {
+  r.decisions.push_back({std::move(stage), std::move(decision), std::move(reason)});
+}
+
+/// Stage 1. True when result.volume is final (no solid thin); false when the surface kept
+/// needs its final volume. `sizing` collects the sources of the kept rounds; `first`
+/// receives the first surface when a finer one replaces it.
+bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSizing& sizing,
+                     std::optional<FirstSurface>& first, MeshResult& r) {
+  ProximityOutcome& px = r.proximity;
+  const double hmin = in.options.sizing.hminFor(in.model->diagonal());
+  for (int round = 1; round <= kMaxProximityRounds; ++round) {
+    const std::string name = "round " + std::to_string(round);
+    vin.surface = &r.surface.mesh;
+    vin.stopWhenThin = true;
+    const auto tr = Clock::now();
+    r.volume = meshVolumes(vin);
+    if (r.volume.thin.empty()) {
+      decide(r, "proximity", name + ": not needed", "no solid thinner than its boundary triangles");
+      return true;
+    }
+    const double triangles = static_cast<double>(r.surface.mesh.triangles.size());
+    const double budget = kMaxProximityGrowth * triangles;
+    std::vector<SizingSource> sources = thinSources(r.volume.thin, hmin);
+    px.predictedTriangles = predictedTriangles(r.surface.mesh, sources);
+    if (px.predictedTriangles > budget && static_cast<double>(r.volume.thin.size()) >= kThinWholeShare * triangles) {
+      sources = sourcesWithinBudget(r.surface.mesh, sources, budget, &px.budgetFactor);
+      px.predictedTriangles = predictedTriangles(r.surface.mesh, sources);
+      decide(r, "proximity", name + ": sources scaled to the budget", "factor " + num(px.budgetFactor));
+    }
+    const std::string asked = num(px.predictedTriangles) + " triangles predicted for " + num(triangles);
+    if (sources.empty() || px.predictedTriangles > budget || px.predictedTriangles < kMinProximityGrowth * triangles) {
+      decide(r, "proximity", name + ": not run",
+             sources.empty() ? std::string("nothing the minimum size would refine")
+                             : asked + (px.predictedTriangles > budget ? ", beyond the budget" : ", too little growth"));
+      return false;
+    }
+    sizing.sources.insert(sizing.sources.end(), sources.begin(), sources.end());
+    SurfaceMesherInput sin = in.surface;
+    sin.user = &sizing;
+    SurfaceRepairStats repair;
+    SurfaceMeshResult finer = meshRepairedSurface(sin, &repair);
+    px.seconds += since(tr);
+    ++px.rounds;
+    if (failedFaces(finer) > failedFaces(r.surface)) {
+      decide(r, "proximity", name + ": finer surface dropped",
+             std::to_string(failedFaces(finer)) + " faces unmeshed, " + std::to_string(failedFaces(r.surface)) + " before");
+      return false;
+    }
+    px.facesRefined += sources.size();
+    if (!first) first = FirstSurface{std::move(r.surface), r.surfaceRepair};
+    r.surface = std::move(finer);
+    r.surfaceRepair = repair;
+    decide(r, "proximity", name + ": finer surface kept", std::to_string(sources.size()) + " faces refined, " + asked);
+  }
+  return false;
+}
+
+/// Stage 4: the coarse-solid retry (CoarseSolids.h).
+void coarseSolidRetry(const VolumeStagesInput& in, const VolumeMesherInput& vin, const UserSizing& sizing,
+                      MeshResult& r) {
+  if (!r.volume.ok()) return;
+  const std::vector<SizingSource> coarse = coarseSolidSources(*in.model, r.surface.mesh, r.volume.solids);
+  r.coarse.solids = static_cast<int>(coarse.size());
+  if (coarse.empty()) return;
+  const auto tr = Clock::now();
+  UserSizing finerSizing = sizing;
+  finerSizing.sources.insert(finerSizing.sources.end(), coarse.begin(), coarse.end());
+  SurfaceMesherInput sin = in.surface;
+  sin.user = &finerSizing;
+  const std::string name = std::to_string(coarse.size()) + " coarse solids";
+  try {
+    SurfaceRepairStats repair;
+    SurfaceMeshResult finer = meshRepairedSurface(sin, &repair);
+    if (failedFaces(finer) > failedFaces(r.surface)) {
+      decide(r, "coarse-solids", "first mesh kept", name + ": the finer surface left more faces unmeshed");
+    } else {
+      VolumeMesherInput fin = vin;
+      fin.surface = &finer.mesh;
+      fin.stopWhenThin = false;
+      VolumeMeshResult fvr = meshVolumes(fin);
+      const double before = r.volume.quality.meanRatio.mean();
+      const std::string ratio = "mean ratio " + num(before) + " -> " + num(fvr.quality.meanRatio.mean());
+      if (fvr.ok() && fvr.quality.meanRatio.mean() > before) {
+        r.volume = std::move(fvr);
+        r.surface = std::move(finer);
+        r.surfaceRepair = repair;
+        r.coarse.refinedKept = true;
+        decide(r, "coarse-solids", "finer mesh kept", name + ", " + ratio);
+      } else {
+        decide(r, "coarse-solids", "first mesh kept", name + (fvr.ok() ? ", " + ratio : ", the finer volume failed"));
+      }
+    }
+  } catch (const Cancelled&) {
+    throw;
+  } catch (const MeshingError& e) {
+    logWarning(std::string("coarse solids: the finer surface failed (") + e.what() + "); the first mesh is kept");
+    decide(r, "coarse-solids", "first mesh kept", name + ": " + e.what());
+  }
+  r.proximity.seconds += since(tr);
+}
+
+}  // namespace
+
+void runVolumeStages(const VolumeStagesInput& in, MeshResult& r) {
+  VolumeMesherInput vin;
+  vin.model = in.model;
+  vin.options = in.options;
+  vin.user = in.user;  // the volume follows the finer surface (eq. 3.3) without box sources
+  UserSizing sizing = *in.user;  // the user's and the proximity sources, for the surface
+  std::optional<FirstSurface> first;
+  if (!proximityRounds(in, vin, sizing, first, r)) {
+    // stage 2: the final volume of the surface kept
+    vin.surface = &r.surface.mesh;
+    vin.stopWhenThin = false;
+    const auto tr = Clock::now();
+    r.volume = meshVolumes(vin);
+    decide(r, "volume", r.volume.ok() ? "meshed" : "failed",
+           r.proximity.rounds ? "the surface of round " + std::to_string(r.proximity.rounds) : "the first surface");
+    // stage 3: a finer surface whose volume failed gives way to the first surface
+    if (r.proximity.rounds > 0 && !r.volume.ok()) {
+      r.proximity.rounds = 0;
+      r.proximity.facesRefined = 0;
+      if (first) {
+        r.surface = std::move(first->surface);
+        r.surfaceRepair = first->repair;
+        vin.surface = &r.surface.mesh;
+        r.volume = meshVolumes(vin);
+      }  // else the surface is the first already, its volume made above (deterministic)
+      r.proximity.seconds += since(tr);
+      decide(r, "fallback", "volume of the first surface", r.volume.ok() ? "meshed" : "failed too");
+    }
+  }
+  coarseSolidRetry(in, vin, sizing, r);
+  r.proximity.thinTrianglesLeft = r.volume.thin.size();
+}
+
+}  // namespace aniso

@@ -1,0 +1,55 @@
+#pragma once
+// The volume stages of meshModel (Pipeline.h, dim 3): alg. 3.3's outer loop made explicit.
+//   1 proximity rounds (at most kMaxProximityRounds): the volume with stopWhenThin
+//     (VolumeMesher.h); a solid thinner than its boundary triangles (ThinBoundary.h) gets
+//     sizing sources on those faces and the whole surface is meshed again (shared edges
+//     stay consistent). A round is not run when its sources are empty, beyond the budget
+//     (kMaxProximityGrowth; a part thin as a whole, kThinWholeShare, gets them scaled to
+//     fit) or add too little (kMinProximityGrowth); a finer surface that leaves more faces
+//     unmeshed is dropped.
+//   2 the final volume of the surface kept (no stop when thin);
+//   3 fallback: when a finer surface was kept and its volume failed, the volume of the
+//     first surface instead (once);
+//   4 coarse-solid retry (CoarseSolids.h): the surface once more at a finer size around
+//     the solids below the quality bar, kept when the whole mesh's mean ratio is better (a
+//     retry that fails, by status or by a MeshingError, leaves the first result).
+// Every surface made here goes through the repair stage (SurfaceStage.h). At most 5
+// volume meshings and 3 surface meshings. Every decision is appended to
+// result.decisions.
+#include "mesher/model/Model.h"
+#include "mesher/pipeline/MeshResult.h"
+#include "mesher/sizing/UserSizing.h"
+#include "mesher/surface/SurfaceMesher.h"
+
+namespace aniso {
+
+/// Rounds of alg. 3.3's outer loop: the surface meshed again, finer where the solid is
+/// thinner than its triangles (ThinBoundary.h), then the volume again.
+inline constexpr int kMaxProximityRounds = 2;
+/// Budget of a round: the sources may ask for at most this many times the surface mesh's
+/// triangles (predictedTriangles); beyond it their sizes are scaled up until the prediction
+/// fits (sourcesWithinBudget: refined as far as the budget allows). A resource guard, not a
+/// quality rule; measured: periodic_u_cst asks for 8.6x (becomes 7.5x, mean ratio 0.70 ->
+/// 0.86), simple_plane's skins for 30x (without the guard 30k triangles became 990k in
+/// two rounds, 9.6 M tets, 300 s).
+inline constexpr double kMaxProximityGrowth = 10.0;
+/// A part thin as a whole — at least this share of the surface's triangles thin — is
+/// refined as far as the budget allows when its sources ask for more (sourcesWithinBudget);
+/// a part thin in places (an assembly's skins) keeps its surface (docs: README, Volume meshes).
+inline constexpr double kThinWholeShare = 0.5;
+/// A round whose sources would add less than this share of triangles is not run.
+inline constexpr double kMinProximityGrowth = 1.05;
+
+struct VolumeStagesInput {
+  const Model* model = nullptr;
+  /// How the first surface was made; its `user` is replaced by the stages' finer sizing.
+  SurfaceMesherInput surface;
+  const UserSizing* user = nullptr;  ///< the user's sizing (the volume's; not null)
+  MeshOptions options;
+};
+
+/// Runs the stages on result.surface (the first surface mesh) and sets result.surface (the
+/// surface kept), result.volume, result.proximity, result.coarse and result.decisions.
+void runVolumeStages(const VolumeStagesInput& in, MeshResult& result);
+
+}  // namespace aniso

@@ -1,0 +1,57 @@
+#include "mesher/volume/SurfaceGeometry.h"
+
+#include <algorithm>
+#include <map>
+#include <utility>
+
+#include <Eigen/Geometry>
+
+#include "mesher/volume/UnfoldSurface.h"
+
+namespace aniso {
+namespace {
+
+bool flat(const SurfaceMesh& m, const std::array<int, 3>& t) {
+  const Vec3 &a = m.nodes[t[0]], &b = m.nodes[t[1]], &c = m.nodes[t[2]];
+  const double twiceArea = (b - a).cross(c - a).norm();
+  const double longest = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
+  return twiceArea <= kFlatTriangleRatio * longest;
+}
+
+/// Edges of solid s's shells used an odd number of times; 0 when a face of s has no triangle.
+long long openEdgesOfSolid(const Model& model, const std::vector<std::vector<int>>& byFace, const SurfaceMesh& m,
+                           int s) {
+  std::map<std::pair<int, int>, int> uses;
+  for (const int f : model.solidFaces(s)) {
+    if (f < 0 || static_cast<std::size_t>(f) >= byFace.size() || byFace[f].empty()) return 0;
+    for (const int t : byFace[f])
+      for (int k = 0; k < 3; ++k) ++uses[std::minmax(m.triangles[t][k], m.triangles[t][(k + 1) % 3])];
+  }
+  return std::count_if(uses.begin(), uses.end(), [](const auto& u) { return u.second % 2 != 0; });
+}
+
+}  // namespace
+
+std::vector<std::string> SurfaceGeometryCheck::messages() const {
+  std::vector<std::string> out;
+  if (foldedEdges) out.push_back(std::to_string(foldedEdges) + " folded edges");
+  if (flatTriangles) out.push_back(std::to_string(flatTriangles) + " flat triangles");
+  if (openEdges) out.push_back(std::to_string(openEdges) + " open edges on closed shells");
+  return out;
+}
+
+SurfaceGeometryCheck checkSurfaceGeometry(const Model& model, const SurfaceMesh& mesh) {
+  SurfaceGeometryCheck c;
+  c.foldedEdges = countFoldedEdges(mesh);
+  std::vector<std::vector<int>> byFace(model.faces.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    c.flatTriangles += flat(mesh, mesh.triangles[t]);
+    const int f = mesh.triangleFace[t];
+    if (f >= 0 && static_cast<std::size_t>(f) < byFace.size()) byFace[f].push_back(static_cast<int>(t));
+  }
+  for (std::size_t s = 0; s < model.solids.size(); ++s)
+    c.openEdges += openEdgesOfSolid(model, byFace, mesh, static_cast<int>(s));
+  return c;
+}
+
+}  // namespace aniso

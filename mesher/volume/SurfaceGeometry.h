@@ -1,0 +1,33 @@
+#pragma once
+// checkSurfaceGeometry — the geometric postcondition of the surface repair stage
+// (SurfaceRepair.h), a validator tests call (SurfaceMesh::validate checks combinatorics
+// only): no folded edge (UnfoldSurface.h's measure: two triangles of one face whose
+// normals are more than about 84 degrees apart), no flat triangle (twice its area below
+// kFlatTriangleRatio times its longest edge squared), and closed where the shells are
+// closed: the triangles of every solid whose faces all have triangles use each edge an
+// even number of times (a face its shells list twice counts twice).
+#include <string>
+#include <vector>
+
+#include "mesher/model/Model.h"
+#include "mesher/surface/SurfaceMesh.h"
+
+namespace aniso {
+
+/// A triangle is flat when its height over its longest edge is below this (a relative
+/// measure: a triangle with a 179.99 degree angle still has about 1e-4).
+inline constexpr double kFlatTriangleRatio = 1e-8;
+
+struct SurfaceGeometryCheck {
+  int foldedEdges = 0;
+  int flatTriangles = 0;
+  long long openEdges = 0;  ///< edges of closed solids' shells used an odd number of times
+  bool ok() const { return foldedEdges == 0 && flatTriangles == 0 && openEdges == 0; }
+  /// One line per kind of finding; empty when ok().
+  std::vector<std::string> messages() const;
+};
+
+/// Checks the linear triangles of `mesh` (quads and mid nodes are not looked at).
+SurfaceGeometryCheck checkSurfaceGeometry(const Model& model, const SurfaceMesh& mesh);
+
+}  // namespace aniso
