@@ -20,6 +20,9 @@
 #include "tools/cli/BudgetReport.h"
 #include "tools/cli/VolumeReport.h"
 #include "tools/cli/ModelInput.h"
+#include "tools/cli/MeshArgsCheck.h"
+#include "tools/cli/RunSummary.h"
+#include "io/ElementQuality.h"
 
 namespace aniso::cli {
 namespace {
@@ -54,6 +57,7 @@ nlohmann::ordered_json optionsJson(const MeshArgs& a) {
 
 /// Options that are wrong whatever the model: exit 2 before any work.
 void checkArguments(const MeshArgs& a) {
+  checkMeshArguments(a);
   if (!isKnownOutputExtension(a.output))
     throw InputError(a.output + ": unknown output format (expected .msh .inp .vtu .stl .obj .off .unv)");
   const std::string bad = a.options.sizing.check();
@@ -189,6 +193,7 @@ static void fillSurfaceReport(const Model& topo, const SurfaceMeshResult& sr, io
   }
   report.quality["faces"] = faces;
   report.quads = static_cast<long long>(sr.mesh.quads.size());
+  report.quality["elements"] = io::elementQuality(sr.mesh);
   if (!sr.mesh.quads.empty()) {  // --quad: fraction, 3D scaled Jacobian, μ_M over all edges
     const quad::SurfaceQuadQuality q = quad::surfaceQuadQuality(sr.mesh);
     report.quality["quad"] = {{"fraction", q.fraction},
@@ -384,7 +389,7 @@ static int meshRun(const MeshArgs& given, io::Report& report) {
   report.times = in.times;
   report.extra["model"] = in.summary;
   int dim = args.options.dim;
-  if (dim == 0) dim = in.solids > 0 ? 3 : 2;
+  if (dim == 0) dim = defaultDimension(args, in.solids);
   if (dim == 3 && in.solids == 0)
     throw InputError(args.file + (in.analytic ? ": nothing to mesh in 3D: an analytic model is a surface (use --dim 2)"
                                               : ": nothing to mesh in 3D: the model has no solids (use --dim 2)"));
@@ -432,7 +437,9 @@ int runMesh(const MeshArgs& given) {
   if (args.timeLimit > 0) args.options.cancel = std::make_shared<const CancelToken>(args.timeLimit);
   io::Report report;
   try {
-    return meshRun(args, report);
+    const int rc = meshRun(args, report);
+    printRunSummary(report, args.output);
+    return rc;
   } catch (const Cancelled& e) {
     report.problems.push_back({EntityRef::model(), Severity::Failed, "time-limit", e.what(), "run"});
     report.status = io::RunStatus::Failed;
