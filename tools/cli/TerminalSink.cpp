@@ -58,6 +58,7 @@ void TerminalSink::showLine(const std::string& phase, double done, double total,
   if (lines_) {
     if (!force && secondsBetween(lastLine_, now) < kLineIntervalSeconds) return;
     lastLine_ = now;
+    rootShown_ = true;
     append(etaText(done, total));
     std::fprintf(stderr, "progress: %s\n", text.c_str());
     std::fflush(stderr);
@@ -82,6 +83,7 @@ void TerminalSink::progressBegin(const std::string& phase, double total) {
     rootDone_ = 0;
     rootTotal_ = total;
     rootDetail_.clear();
+    rootShown_ = true;
     sub_.clear();
     showLine(root_, 0, total, {}, true);
     return;
@@ -106,6 +108,7 @@ void TerminalSink::progress(const std::string& phase, double done, double total,
   rootDone_ = done;
   rootTotal_ = total;
   rootDetail_ = detail;
+  rootShown_ = false;
   showLine(root_, done, total, detail, false);
 }
 
@@ -119,6 +122,7 @@ void TerminalSink::progressEnd(const std::string& phase) {
   }
   if (--rootDepth_ > 0) return;
   if (lines_) {
+    if (!rootShown_) showLine(root_, rootDone_, rootTotal_, rootDetail_, true);  // the final state
     std::fprintf(stderr, "progress: %s done %.2fs\n", token(root_).c_str(), secondsBetween(rootStart_, Clock::now()));
     std::fflush(stderr);
   }

@@ -7,7 +7,8 @@
 //    "PHASE PERCENT% DETAIL [sub-phase] eta Ns"; a message replaces it (the summary at the end);
 //  - with progressLines (--progress, for a program reading the pipe), whatever stderr is:
 //      progress: PHASE PERCENT% DETAIL      when a top-level phase starts (0%), then at most
-//                                           once a second (PERCENT omitted when the total is unknown)
+//                                           once a second, and its last state before it ends
+//                                           (PERCENT omitted when the total is unknown)
 //      progress: PHASE done SECONDSs        when it ends
 #include <chrono>
 #include <map>
@@ -51,6 +52,7 @@ class TerminalSink : public LogSink {
   Clock::time_point rootStart_{}, lastLine_{}, lastDraw_{};
   double rootDone_ = 0, rootTotal_ = 0;
   std::string rootDetail_;
+  bool rootShown_ = true;  ///< the root's latest state has been printed (--progress)
   std::mutex mutex_;
 };
 
