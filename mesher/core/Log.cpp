@@ -35,7 +35,7 @@ void log(LogLevel level, const std::string& text) {
 }
 
 Progress::Progress(std::string phase, double total) : phase_(std::move(phase)), total_(total) {
-  if (auto s = currentSink()) s->progress(phase_, 0, total_, {});
+  if (auto s = currentSink()) s->progressBegin(phase_, total_);
   lastNs_ = nowNs();
 }
 

@@ -9,7 +9,9 @@
 
 namespace aniso {
 
-enum class LogLevel { Debug = 0, Info = 1, Warning = 2, Error = 3 };
+/// Info: details (-v); Notice: what a run tells its user at the end (its summary), shown
+/// unless quiet; Warning and Error always but Warning not when quiet.
+enum class LogLevel { Debug = 0, Info = 1, Notice = 2, Warning = 3, Error = 4 };
 
 class LogSink {
  public:
@@ -18,6 +20,9 @@ class LogSink {
   /// A long phase reports progress: done of total units (total 0 = unknown), with an
   /// optional detail (e.g. the predicted final element count).
   virtual void progress(const std::string& phase, double done, double total, const std::string& detail) = 0;
+  /// A phase starts (a Progress is made). Phases may nest (a phase started while another is
+  /// open runs inside it) and run concurrently on several threads; each begin has one end.
+  virtual void progressBegin(const std::string& phase, double total) { progress(phase, 0, total, {}); }
   /// The phase is over (clear a progress line).
   virtual void progressEnd(const std::string& phase) = 0;
 };
@@ -27,6 +32,7 @@ std::shared_ptr<LogSink> setLogSink(std::shared_ptr<LogSink> sink);
 
 void log(LogLevel level, const std::string& text);
 inline void logInfo(const std::string& t) { log(LogLevel::Info, t); }
+inline void logNotice(const std::string& t) { log(LogLevel::Notice, t); }
 inline void logWarning(const std::string& t) { log(LogLevel::Warning, t); }
 inline void logDebug(const std::string& t) { log(LogLevel::Debug, t); }
 

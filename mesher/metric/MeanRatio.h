@@ -29,6 +29,12 @@ inline double meanRatio(const Vec2& p1, const Vec2& p2, const Vec2& p3) {
   return sum > 0 ? 4 * std::sqrt(3.0) * area / sum : 0.0;
 }
 
+/// A triangle in space: 4√3 area / Σ edge², 1 for the equilateral one, never negative.
+inline double meanRatio(const Vec3& p1, const Vec3& p2, const Vec3& p3) {
+  const double sum = (p2 - p1).squaredNorm() + (p3 - p2).squaredNorm() + (p1 - p3).squaredNorm();
+  return sum > 0 ? 2 * std::sqrt(3.0) * (p2 - p1).cross(p3 - p1).norm() / sum : 0.0;
+}
+
 inline double meanRatio(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4) {
   const Vec3 a = p2 - p1, b = p3 - p1, c = p4 - p1;
   const double sum = a.squaredNorm() + b.squaredNorm() + c.squaredNorm() + (p3 - p2).squaredNorm() +

@@ -12,6 +12,7 @@ namespace aniso::cli {
 struct InfoArgs {
   std::string file;
   bool json = false;
+  bool faces = false;  ///< --faces: every face and edge of the prepared model (FaceListing.h)
   bool fragment = true;
   cad::OverlapPolicy overlaps = cad::OverlapPolicy::Merge;  ///< --overlaps
 };

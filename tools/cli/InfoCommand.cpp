@@ -3,6 +3,7 @@
 #include "cad/CadModel.h"
 #include "io/AnalyticModel.h"
 #include "tools/cli/Commands.h"
+#include "tools/cli/FaceListing.h"
 #include "tools/cli/ModelJson.h"
 
 namespace aniso::cli {
@@ -62,6 +63,7 @@ int runInfo(const InfoArgs& args) {
     nlohmann::ordered_json p = summaryJson(prepared);
     p.update(prepareJson(prep));
     j["prepared"] = p;
+    if (args.faces) j.update(catalogJson(cad::faceCatalog(model)));  // ids of the prepared model
     std::printf("%s\n", j.dump(1).c_str());
     return 0;
   }
@@ -73,6 +75,7 @@ int runInfo(const InfoArgs& args) {
   if (prep.sharedFaces) std::printf("  %d faces shared by two solids\n", prep.sharedFaces);
   std::printf("%s", overlapsText(prep, "  ").c_str());
   for (const auto& w : prep.warnings) std::printf("  warning: %s\n", w.c_str());
+  if (args.faces) std::printf("%s", catalogText(cad::faceCatalog(model)).c_str());
   return 0;
 }
 

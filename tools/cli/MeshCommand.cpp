@@ -13,13 +13,16 @@
 #include "tools/cli/BudgetReport.h"
 #include "tools/cli/Commands.h"
 #include "tools/cli/ModelInput.h"
+#include "tools/cli/MeshArgsCheck.h"
 #include "tools/cli/RunReport.h"
+#include "tools/cli/RunSummary.h"
 
 namespace aniso::cli {
 namespace {
 
 /// Options that are wrong whatever the model: exit 2 before any work.
 void checkArguments(const MeshArgs& a) {
+  checkMeshArguments(a);
   if (!isKnownOutputExtension(a.output))
     throw InputError(a.output + ": unknown output format (expected .msh .inp .vtu .stl .obj .off .unv)");
   const std::string bad = a.options.sizing.check();
@@ -99,7 +102,7 @@ static int meshRun(const MeshArgs& given, io::Report& report) {
   checkCancel(args.options.cancel.get(), "reading");
   report.times = in.times;
   report.extra["model"] = in.summary;
-  const int dim = resolvedDim(args.options, in.solids > 0);
+  const int dim = args.options.dim == 0 ? defaultDimension(args, in.solids) : resolvedDim(args.options, in.solids > 0);
   if (dim == 3 && in.solids == 0)
     throw InputError(args.file + (in.analytic ? ": nothing to mesh in 3D: an analytic model is a surface (use --dim 2)"
                                               : ": nothing to mesh in 3D: the model has no solids (use --dim 2)"));
@@ -138,7 +141,9 @@ int runMesh(const MeshArgs& given) {
   if (args.timeLimit > 0) args.options.cancel = std::make_shared<const CancelToken>(args.timeLimit);
   io::Report report;
   try {
-    return meshRun(args, report);
+    const int rc = meshRun(args, report);
+    printRunSummary(report, args.output);
+    return rc;
   } catch (const Cancelled& e) {
     report.problems.push_back({EntityRef::model(), Severity::Failed, "time-limit", e.what(), "run"});
     report.status = io::RunStatus::Failed;

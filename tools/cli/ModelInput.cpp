@@ -1,6 +1,7 @@
 #include "tools/cli/ModelInput.h"
 
 #include <chrono>
+#include <memory>
 
 #include "cad/CadModel.h"
 #include "mesher/control/CSAnalytic2d.h"
@@ -24,7 +25,10 @@ ModelInput loadModel(const std::string& file, bool fragment, cad::OverlapPolicy 
     in.model = std::move(am.model);
     return in;
   }
+  auto phase = std::make_unique<Progress>("read", 0);  // a top-level phase of --progress
   cad::CadModel model = cad::CadModel::read(file, cancel);
+  phase.reset();  // read ends before prepare begins (else prepare would nest in it)
+  phase = std::make_unique<Progress>("prepare", 0);
   in.times.emplace_back("read", since(t));
   t = Clock::now();
   cad::PrepareOptions popt;
@@ -34,6 +38,7 @@ ModelInput loadModel(const std::string& file, bool fragment, cad::OverlapPolicy 
   const cad::PrepareReport prep = model.prepare(popt);
   const cad::ShapeSummary summary = model.summary();
   in.times.emplace_back("prepare", since(t));
+  phase.reset();
   for (const std::string& w : prep.warnings) logWarning(file + ": " + w);
   in.solids = summary.solids;
   in.summary = summaryJson(summary);

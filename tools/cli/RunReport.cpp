@@ -1,5 +1,6 @@
 #include "tools/cli/RunReport.h"
 
+#include "io/ElementQuality.h"
 #include "mesher/quad/QuadQuality.h"
 #include "tools/cli/BudgetReport.h"
 #include "tools/cli/VolumeReport.h"
@@ -29,6 +30,7 @@ void fillSurfaceReport(const SurfaceMeshResult& sr, io::Report& report) {
   }
   report.quality["faces"] = faces;
   report.quads = static_cast<long long>(sr.mesh.quads.size());
+  report.quality["elements"] = io::elementQuality(sr.mesh);
   if (!sr.mesh.quads.empty()) {  // --quad: fraction, 3D scaled Jacobian, μ_M over all edges
     const quad::SurfaceQuadQuality q = quad::surfaceQuadQuality(sr.mesh);
     report.quality["quad"] = {{"fraction", q.fraction},

@@ -1,5 +1,6 @@
 #include "tools/cli/VolumeReport.h"
 
+#include "io/ElementQuality.h"
 #include "mesher/volume/VolumeControlSpace.h"
 
 namespace aniso::cli {
@@ -53,6 +54,7 @@ void fillVolumeReport(const Model& model, const VolumeMeshResult& vr, io::Report
   report.extra["recovery"]["surface_nodes_merged"] = vr.surfaceNodesMerged;
   report.extra["recovery"]["surface_caps_flipped"] = vr.surfaceCapsFlipped;
   report.quality["volume"] = qualityJson(vr.quality);
+  report.quality["elements"] = io::elementQuality(vr.mesh);
   report.quality["volume"]["length_factor"] = kVolumeLengthFactor;
   report.extra["volume"] = vr.quality.volume;
   nlohmann::ordered_json solids = nlohmann::ordered_json::array();

@@ -54,6 +54,7 @@ int main(int argc, char** argv) {
   CLI::App* infoCmd = app.add_subcommand("info", "Describe a CAD model: counts, volume, area, solids");
   infoCmd->add_option("FILE", info.file, "STEP, IGES or BREP file")->required();
   infoCmd->add_flag("--json", info.json, "One JSON object on stdout");
+  infoCmd->add_flag("--faces", info.faces, "Also list every face and edge: id, type, area or length, centroid, solids, part");
   infoCmd->add_flag("!--no-fragment", info.fragment, "Do not fragment touching solids in the prepared model");
   addOverlapsOption(*infoCmd, info.overlaps);
   infoCmd->fallthrough();

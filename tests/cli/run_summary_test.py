@@ -1,0 +1,103 @@
+#!/usr/bin/python3
+"""A run that speaks (issue 17): the summary on success, --progress, and the errors a new user meets.
+- mesh bracket (3D) with --report: exit 0; the summary's element and node counts equal the report's
+  counts and the tetrahedra/triangles meshio reads from the written file; its quality min/mean equal
+  the report's quality.elements (the Euclidean mean ratio) and agree with quality.volume.mean_ratio;
+  the histogram's bins add up to the tetrahedra; the output line names the file and its size; -q
+  prints nothing.
+- --progress on bracket: at most 40 lines (1,560 before), every phase one token (no spaces), percent
+  lines parsed by the FreeCAD dialog's pattern; as1-tu-203 (18 parts, ~10 s) under 300 lines (15,769).
+- overlap2.step: the summary warns of the overlapping parts and says where the common region went.
+- -o DIR: exit 2 "is a directory"; --quad on a solid: --dim 2 implied and said (quads written, no
+  tetrahedra); --quad --dim 3: exit 2 naming the fix.
+usage: run_summary_test.py CLI MODELS_DIR SHARED_DIR"""
+import json, os, re, subprocess, sys, tempfile
+
+import meshio
+
+cli, models, shared = sys.argv[1], sys.argv[2], sys.argv[3]
+bracket = os.path.join(models, "bracket.step")
+t = tempfile.mkdtemp()
+fails = []
+FREECAD_PROGRESS = re.compile(r"^progress: (\S+) (\d+)% ?(.*)$")  # tools/freecad/anisomesh_freecad.py
+
+
+def check(cond, what):
+    print(("ok   " if cond else "FAIL ") + what)
+    if not cond: fails.append(what)
+
+
+def run(*args, timeout=120):
+    return subprocess.run([cli, *args], capture_output=True, text=True, timeout=timeout)
+
+
+def summary_number(err, pattern):
+    m = re.search(pattern, err)
+    return float(m.group(1)) if m else None
+
+
+# --- the summary, against the report and the written mesh
+out, rep = os.path.join(t, "b.msh"), os.path.join(t, "b.json")
+r = run("mesh", bracket, "-o", out, "--report", rep)
+check(r.returncode == 0, f"bracket meshes (exit {r.returncode}: {r.stderr[-300:]})")
+report = json.load(open(rep))
+counts, q = report["counts"], report["quality"]["elements"]
+err = r.stderr
+print(err)
+m = meshio.read(out)
+tets = sum(len(c.data) for c in m.cells if c.type == "tetra")
+tris = sum(len(c.data) for c in m.cells if c.type == "triangle")
+check(summary_number(err, r"(\d+) tetrahedra") == counts["tetrahedra"] == tets > 0,
+      f"tetrahedra: summary, report {counts['tetrahedra']} and file {tets} agree")
+check(summary_number(err, r"(\d+) boundary triangles") == counts["triangles"] == tris > 0,
+      f"boundary triangles: summary, report {counts['triangles']} and file {tris} agree")
+check(summary_number(err, r"(\d+) nodes") == counts["nodes"] == len(m.points), "nodes agree")
+check(summary_number(err, r"(\d+) parts?") == len(report["model"]["solid_list"]) == 1, "1 part")
+check(abs(summary_number(err, r"min (\d\.\d+), mean") - q["min"]) < 1e-3, "summary min = report min")
+check(abs(summary_number(err, r"mean (\d\.\d+);") - q["mean"]) < 1e-3, "summary mean = report mean")
+vol = report["quality"]["volume"]["mean_ratio"]
+check(abs(q["min"] - vol["min"]) < 1e-6 and abs(q["mean"] - vol["mean"]) < 1e-6,
+      "quality.elements agrees with quality.volume.mean_ratio")
+check(abs(summary_number(err, r"smallest dihedral angle (\d+\.\d) deg") - q["dihedral_min"]) < 0.06, "dihedral")
+bins = [int(b) for b in re.findall(r"^anisomesh:\s+\d\.\d-\d\.\d\s+(\d+) #+$", err, re.M)]
+check(sum(bins) == tets == sum(q["histogram"]["bins"]), f"histogram lines add up to the tetrahedra ({sum(bins)})")
+check(re.search(r"wrote .*b\.msh \((\d+\.\d) (kB|MB)\) in \d+\.\d\d s", err) is not None, "output path and size")
+check(report["status"] == "ok" and "warning" not in err, "no warning on a clean run")
+r = run("-q", "mesh", bracket, "-o", out)
+check(r.returncode == 0 and r.stderr == "", "-q: nothing on stderr")
+
+# --- progress
+r = run("--progress", "mesh", bracket, "-o", out)
+lines = [l for l in r.stderr.splitlines() if l.startswith("progress:")]
+check(r.returncode == 0 and 0 < len(lines) <= 40, f"bracket --progress: {len(lines)} lines (at most 40)")
+check(all(len(l.split()) >= 2 and (l.split()[2:3] in ([], ["done"]) or FREECAD_PROGRESS.match(l)) for l in lines),
+      "every progress line: one-token phase, then a percent (the FreeCAD pattern), done, or nothing")
+check(not any("Delaunay" in l for l in lines), "nested phases (Delaunay 3D) folded into their parent")
+big = os.path.join(shared, "models", "as1-tu-203.stp")
+if os.path.exists(big):
+    r = run("--progress", "mesh", big, "-o", os.path.join(t, "a.msh"), timeout=300)
+    n = sum(l.startswith("progress:") for l in r.stderr.splitlines())
+    check(r.returncode == 0 and n < 300, f"as1-tu-203 --progress: {n} lines (under 300)")
+    check("18 parts" in r.stderr, "as1-tu-203 summary: 18 parts")
+
+# --- warnings in the summary
+r = run("mesh", os.path.join(models, "overlap2.step"), "-o", os.path.join(t, "o.msh"))
+check(r.returncode == 0 and re.search(r"warning: overlapping parts: part 1 'BOX_A' and part 2 'BOX_B' .*merged.*in part 1",
+                                      r.stderr) is not None, "overlap2: the summary names the merged overlap")
+
+# --- errors a new user meets
+r = run("mesh", bracket, "-o", t)
+check(r.returncode == 2 and "is a directory" in r.stderr and len(r.stderr.splitlines()) == 1,
+      f"-o DIR: exit 2, one line 'is a directory' ({r.stderr.strip()})")
+q2 = os.path.join(t, "q.msh")
+r = run("mesh", bracket, "-o", q2, "--quad")
+mq = meshio.read(q2) if r.returncode == 0 else None
+check(r.returncode == 0 and "--dim 2 implied" in r.stderr and "surface mesh bug" not in r.stderr,
+      f"--quad on a solid: --dim 2 implied and said (exit {r.returncode})")
+check(mq is not None and any(c.type == "quad" for c in mq.cells) and not any(c.type == "tetra" for c in mq.cells),
+      "--quad on a solid: quads written, no tetrahedra")
+r = run("mesh", bracket, "-o", q2, "--quad", "--dim", "3")
+check(r.returncode == 2 and "--quad --dim 2" in r.stderr, f"--quad --dim 3: exit 2 with the fix ({r.stderr.strip()})")
+
+print(f"{len(fails)} failed" if fails else "all passed")
+sys.exit(1 if fails else 0)
