@@ -1,4 +1,5 @@
 #include "mesher/sizing/FaceControlSpace.h"
+#include "mesher/sizing/PointSizing.h"
 
 #include <Eigen/Geometry>
 
@@ -100,6 +101,7 @@ void insertUserSizing(CSQuadtree2d& cs, const UserSizing& user, const Parametric
     const Metric3d g = *user.global;
     cs.setContinuousSource(CSAnalytic2d(bounds, [&](const Vec2& uv) { return restricted(uv, g); }));
   }
+  insertFacePoints(cs, user.points, surface, bounds, gMin, hMax);
   if (user.sources.empty()) return;
   // The face's extent in space, from a coarse sample.
   const Box3 faceBox = sampleFace(surface, bounds).box;

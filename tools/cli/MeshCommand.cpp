@@ -373,7 +373,7 @@ static int meshRun(const MeshArgs& given, io::Report& report) {
   auto seconds = [](Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); };
   checkArguments(args);
   // The sizing file is read (and checked) before the model, so a bad one fails fast.
-  const UserSizing user = args.options.sizingFile.empty() ? UserSizing{} : io::readSizingFile(args.options.sizingFile);
+  UserSizing user = args.options.sizingFile.empty() ? UserSizing{} : io::readSizingFile(args.options.sizingFile);
 
   report.input = args.file;
   report.options = optionsJson(args);
@@ -383,6 +383,7 @@ static int meshRun(const MeshArgs& given, io::Report& report) {
   checkCancel(args.options.cancel.get(), "reading");
   report.times = in.times;
   report.extra["model"] = in.summary;
+  if (args.extraSizing) report.extra["adapt"] = args.extraSizing(in.model, user);
   int dim = args.options.dim;
   if (dim == 0) dim = in.solids > 0 ? 3 : 2;
   if (dim == 3 && in.solids == 0)
