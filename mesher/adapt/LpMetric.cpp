@@ -89,15 +89,40 @@ void eigenvalues(const NodeHessian& n, double D, const LpMetricParameters& p, do
   for (int k = 0; k < p.dim; ++k) lambda[k] = std::max(lambda[k], floorA);
 }
 
-double nodesFor(const std::vector<NodeHessian>& ns, double D, const LpMetricParameters& p) {
-  double c = 0;
+/// √det of the node's metric restricted to a facet: dim 3, the plane normal to `dir`
+/// (det M · dirᵀ M⁻¹ dir); dim 2, the line along `dir` (dirᵀ M dir).
+double restrictedRoot(const NodeHessian& n, const double* l, const Vec3& dir, int dim) {
+  double s = 0;
+  for (int k = 0; k < dim; ++k) {
+    const double c = n.dirs.col(k).dot(dir);
+    s += dim == 3 ? c * c / l[k] : c * c * l[k];
+  }
+  return std::sqrt(dim == 3 ? s * l[0] * l[1] * l[2] : s);
+}
+
+double nodesFor(const std::vector<NodeHessian>& ns, const std::vector<BoundaryFacet>& boundary, double D,
+                const LpMetricParameters& p) {
+  double c = 0, cb = 0;
   for (const NodeHessian& n : ns) {
     double l[3], det = 1;
     eigenvalues(n, D, p, l);
     for (int k = 0; k < p.dim; ++k) det *= l[k];
     c += n.weight * std::sqrt(det);
   }
-  return kNodesPerComplexity[p.dim] * c;
+  if (kBoundaryNodesPerComplexity[p.dim] > 0)
+    for (const BoundaryFacet& f : boundary) {
+      double sum = 0;
+      int count = 0;
+      for (int v : f.nodes) {
+        if (v < 0) continue;
+        double l[3];
+        eigenvalues(ns[v], D, p, l);
+        sum += restrictedRoot(ns[v], l, f.direction, p.dim);
+        ++count;
+      }
+      cb += f.measure * sum / count;
+    }
+  return kInteriorNodesPerComplexity[p.dim] * c + kBoundaryNodesPerComplexity[p.dim] * cb;
 }
 
 double errorFor(const std::vector<NodeHessian>& ns, double D, const LpMetricParameters& p) {
@@ -126,7 +151,8 @@ double solve(const std::function<double(double)>& g, double goal, double lo, dou
 }  // namespace
 
 LpMetric lpMetric(const std::vector<Mat3>& hessians, const std::vector<double>& measures,
-                  const std::vector<Vec3>& normals, const LpMetricParameters& p) {
+                  const std::vector<Vec3>& normals, const std::vector<BoundaryFacet>& boundary,
+                  const LpMetricParameters& p) {
   if (p.dim != 2 && p.dim != 3) throw MeshingError("lpMetric: dim must be 2 or 3");
   if (!(p.norm >= 1)) throw MeshingError("lpMetric: the norm p must be at least 1");
   if (!(p.hmin > 0) || !(p.hmax >= p.hmin)) throw MeshingError("lpMetric: need 0 < hmin <= hmax");
@@ -143,11 +169,11 @@ LpMetric lpMetric(const std::vector<Mat3>& hessians, const std::vector<double>& 
   LpMetric out;
   double D;
   if (p.targetNodes > 0) {
-    D = solve([&](double x) { return nodesFor(ns, x, p); }, p.targetNodes, lo, hi, out.limited);
+    D = solve([&](double x) { return nodesFor(ns, boundary, x, p); }, p.targetNodes, lo, hi, out.limited);
   } else {  // the error decreases with D
     D = solve([&](double x) { return -errorFor(ns, x, p); }, -p.error, lo, hi, out.limited);
   }
-  out.predictedNodes = nodesFor(ns, D, p);
+  out.predictedNodes = nodesFor(ns, boundary, D, p);
   out.predictedError = errorFor(ns, D, p);
   out.metrics.reserve(ns.size());
   for (const NodeHessian& n : ns) {

@@ -9,9 +9,11 @@
 // then, in M's eigen-basis, every eigenvalue clamped to [1/hmax², 1/hmin²] and raised to
 // at least λ_max/γ_a² (the anisotropy limit, eq. 3.3's form). D is found by bisection so
 // that either
-//   the predicted node count kNodesPerComplexity[d] · C(D), C(D) = ∫ √det M (the
-//   complexity, a sum over the nodes of √det M times their lumped measure), matches
-//   targetNodes; or
+//   the predicted node count a_d · C(D) + b_d · C_∂(D) matches targetNodes, with
+//   C(D) = ∫ √det M (the complexity: over the nodes, √det M times their lumped measure)
+//   and C_∂(D) = ∫_∂ √det M|_∂ (the boundary's: over the boundary facets, the mean of
+//   their nodes' √det of M restricted to the facet, times its area / length) — the
+//   surface nodes the mesher puts on the boundary come on top of the interior's; or
 //   the predicted Lp error (∫ e^p)^(1/p), e = c_d · trace(M^(−1/2) |H| M^(−1/2)) (the
 //   continuous interpolation error, c_2 = 1/8, c_3 = 1/10; Part I sec. 4), matches error.
 // The clamps make the prediction the count / error of the clamped metric. When the asked
@@ -23,16 +25,24 @@
 // everywhere (a linear field asks for no adaptation).
 #include <vector>
 
+#include "mesher/adapt/PatchMesh.h"
 #include "mesher/metric/Metric.h"
 
 namespace aniso {
 
 inline constexpr double kHessianFloor = 1e-12;
-/// Nodes per unit of complexity. 2D: a unit equilateral triangle has area √3/4 and a
-/// triangle mesh two triangles per node, so 2/√3. 3D: a regular unit tet has volume
-/// √2/12 and a Delaunay tet mesh about 6.3 tets per node: 1.35 (calibrated in the adapt CLI
-/// test on the cube, where the measured count is within ±30 % of the target).
-inline constexpr double kNodesPerComplexity[4] = {0, 0, 1.1547, 1.35};
+/// a_d, b_d above: nodes per unit of interior and of boundary complexity, measured on
+/// meshes of a uniform metric (the Hessian of |x|²) by `anisomesh adapt`, whose volume
+/// metric is kVolumeLengthFactor finer than its tets (tools/cli/AdaptCommand.cpp). 3D, the
+/// 10 mm cube at 2000 / 16000 nodes asked (4529 / 27951 made): 1.659 and 2.657 (fit of the
+/// two; the 4000 and 8000 runs land within 3 %). For comparison, a regular unit tet has
+/// volume √2/12 and a Delaunay mesh ~6 tets per node (1.4 nodes per unit volume), a unit
+/// equilateral triangle area √3/4 and a triangle mesh 2 per node (1.15 per unit area).
+/// 2D, the unit square (an analytic plane) at 500 / 4000 nodes asked, 547 / 4128 made with
+/// a_2 = 2/√3 alone: b_2 = 0.55 from the excess per boundary length complexity (0.565 / 0.54).
+/// With these the cube makes 2006 / 8106 nodes for 2000 / 8000.
+inline constexpr double kInteriorNodesPerComplexity[4] = {0, 0, 1.1547, 1.659};
+inline constexpr double kBoundaryNodesPerComplexity[4] = {0, 0, 0.55, 2.657};
 
 struct LpMetricParameters {
   int dim = 3;
@@ -50,8 +60,10 @@ struct LpMetric {
   bool limited = false;  ///< the target was out of reach within [hmin, hmax]
 };
 
-/// `hessians`, `measures` (nodeMeasures) and, for dim 2, `normals` have one entry per node.
+/// `hessians`, `measures` (nodeMeasures) and, for dim 2, `normals` have one entry per node;
+/// `boundary` (boundaryFacets) may be empty (no boundary term).
 LpMetric lpMetric(const std::vector<Mat3>& hessians, const std::vector<double>& measures,
-                  const std::vector<Vec3>& normals, const LpMetricParameters& params);
+                  const std::vector<Vec3>& normals, const std::vector<BoundaryFacet>& boundary,
+                  const LpMetricParameters& params);
 
 }  // namespace aniso

@@ -21,9 +21,11 @@ std::vector<std::vector<int>> nodeNeighbours(const PatchMesh& m) {
   return out;
 }
 
-std::vector<char> boundaryNodes(const PatchMesh& m) {
-  // facets by their sorted corners; a facet seen once is on the boundary
-  std::map<std::array<int, 3>, std::pair<int, int>> facets;  // -> (count, cell)
+namespace {
+
+/// Facets by their sorted corners (dim 2: −1 first) -> (how many cells have it, the last one).
+std::map<std::array<int, 3>, std::pair<int, int>> facetCounts(const PatchMesh& m) {
+  std::map<std::array<int, 3>, std::pair<int, int>> facets;
   const int k = m.corners();
   for (std::size_t c = 0; c < m.cellCount(); ++c) {
     const int* v = m.conn.data() + m.offsets[c];
@@ -32,20 +34,48 @@ std::vector<char> boundaryNodes(const PatchMesh& m) {
       int n = 0;
       for (int i = 0; i < k; ++i)
         if (i != skip) f[n++] = v[i];
-      std::sort(f.begin(), f.end());  // an edge (dim 2) keeps its -1 first
+      std::sort(f.begin(), f.end());
       auto& e = facets[f];
       ++e.first;
       e.second = static_cast<int>(c);
     }
   }
+  return facets;
+}
+
+}  // namespace
+
+std::vector<char> boundaryNodes(const PatchMesh& m) {
   std::vector<char> out(m.nodes.size(), 0);
-  for (const auto& [f, e] : facets) {
+  const int k = m.corners();
+  for (const auto& [f, e] : facetCounts(m)) {
     if (e.first != 1) continue;
     for (int v : f)
       if (v >= 0) out[v] = 1;
     // the cell's other (mid-side) nodes: mark all of them, a quadratic boundary cell's
     // interior mid-edge nodes too (they only get a larger patch)
     for (int a = m.offsets[e.second] + k; a < m.offsets[e.second + 1]; ++a) out[m.conn[a]] = 1;
+  }
+  return out;
+}
+
+std::vector<BoundaryFacet> boundaryFacets(const PatchMesh& m) {
+  std::vector<BoundaryFacet> out;
+  for (const auto& [f, e] : facetCounts(m)) {
+    if (e.first != 1) continue;
+    BoundaryFacet b;
+    if (m.dim == 3) {
+      b.nodes = f;
+      const Vec3 n = (m.nodes[f[1]] - m.nodes[f[0]]).cross(m.nodes[f[2]] - m.nodes[f[0]]);
+      b.measure = 0.5 * n.norm();
+      b.direction = b.measure > 0 ? Vec3(n.normalized()) : Vec3::Zero();
+    } else {
+      b.nodes = {f[1], f[2], -1};
+      const Vec3 t = m.nodes[f[2]] - m.nodes[f[1]];
+      b.measure = t.norm();
+      b.direction = b.measure > 0 ? Vec3(t / b.measure) : Vec3::Zero();
+    }
+    if (b.measure > 0) out.push_back(b);
   }
   return out;
 }

@@ -3,6 +3,7 @@
 // nodes and the cells of the top dimension (tetrahedra in 3D, triangles on a surface),
 // linear or quadratic: a cell lists its corners first (3 or 4), then any other nodes.
 // Built by the caller from a mesh file; no file formats here.
+#include <array>
 #include <vector>
 
 #include "mesher/core/Types.h"
@@ -18,6 +19,15 @@ struct PatchMesh {
   std::size_t cellCount() const { return offsets.size() - 1; }
   int corners() const { return dim + 1; }
 };
+
+/// A facet on the boundary of the cells' union: a triangle of a tet mesh (dim 3), an edge
+/// of a triangle mesh (dim 2; nodes[2] = −1).
+struct BoundaryFacet {
+  std::array<int, 3> nodes{-1, -1, -1};
+  double measure = 0;              ///< area (dim 3), length (dim 2)
+  Vec3 direction = Vec3::Zero();   ///< unit normal (dim 3), unit tangent (dim 2)
+};
+std::vector<BoundaryFacet> boundaryFacets(const PatchMesh& m);
 
 /// The nodes sharing a cell with each node (sorted, without the node itself).
 std::vector<std::vector<int>> nodeNeighbours(const PatchMesh& m);

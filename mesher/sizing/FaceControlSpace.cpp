@@ -101,7 +101,6 @@ void insertUserSizing(CSQuadtree2d& cs, const UserSizing& user, const Parametric
     const Metric3d g = *user.global;
     cs.setContinuousSource(CSAnalytic2d(bounds, [&](const Vec2& uv) { return restricted(uv, g); }));
   }
-  insertFacePoints(cs, user.points, surface, bounds, gMin, hMax);
   if (user.sources.empty()) return;
   // The face's extent in space, from a coarse sample.
   const Box3 faceBox = sampleFace(surface, bounds).box;
@@ -151,6 +150,9 @@ std::unique_ptr<CSQuadtree2d> buildFaceControlSpace(const FaceSizingInput& in) {
 
   try {
     auto cs = std::make_unique<CSQuadtree2d>(bounds, in.params);
+    // 1–2 (3.3.1, "setting initial control space"): discrete point sources first, so that
+    // the control vertices are averaged from them (not intersected, as an update would)
+    if (in.user && !in.user->points.empty()) insertFacePoints(*cs, in.user->points, *surface, bounds, gMin);
     // 3: surface curvature (or the uniform size).
     if (in.params.size) {
       const double h = *in.params.size;

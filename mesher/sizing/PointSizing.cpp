@@ -6,7 +6,7 @@
 namespace aniso {
 
 void insertFacePoints(CSAdaptive2d& cs, const std::vector<SizingPoint>& points, const ParametricSurface& surface,
-                      const Box2& bounds, double gMin, double hMax) {
+                      const Box2& bounds, double gMin) {
   if (points.empty()) return;
   const int n = kPointSampleGrid;
   std::vector<Vec2> uvs;
@@ -25,7 +25,7 @@ void insertFacePoints(CSAdaptive2d& cs, const std::vector<SizingPoint>& points, 
   for (const SizingPoint& p : points) {
     const double h = p.metric.axes().lengths.minCoeff();
     const double near = kPointOnFaceFraction * h;
-    if (h >= hMax || !faceBox.contains(p.at, grow + near)) continue;
+    if (!faceBox.contains(p.at, grow + near)) continue;
     std::size_t best = 0;
     double bestD = std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < xyz.size(); ++k) {
@@ -37,14 +37,13 @@ void insertFacePoints(CSAdaptive2d& cs, const std::vector<SizingPoint>& points, 
     if ((surface.point(uv) - p.at).norm() > near) continue;
     const SurfaceD1 d = surface.d1(uv);
     const Metric2d m = restrictToSurface(p.metric, d.pu, d.pv, surface.parameterizationTensor(uv, gMin));
-    if (m.angleLengths().h1 < hMax) cs.insertDiscreteSource(uv, m);
+    cs.insertDiscreteSource(uv, m);
   }
 }
 
-void insertSolidPoints(CSAdaptive3d& cs, const std::vector<SizingPoint>& points, const Box3& box, double lengthFactor) {
+void insertSolidPoints(CSAdaptive3d& cs, const std::vector<SizingPoint>& points, const Box3& box) {
   for (const SizingPoint& p : points)
-    if (box.contains(p.at))
-      cs.insertDiscreteSource(p.at, Metric3d::fromTensor(p.metric.tensor() * (lengthFactor * lengthFactor)));
+    if (box.contains(p.at)) cs.insertDiscreteSource(p.at, p.metric);
 }
 
 }  // namespace aniso

@@ -4,13 +4,15 @@
 //   surface (a node of the solver's mesh on this face, or just under it) is projected
 //   (ParametricSurface::project, started at the nearest of a kPointSampleGrid² sample of
 //   the face's parametric box) and, when its (u, v) lies in the box, inserted as a discrete
-//   source with its metric restricted to the surface (restrictToSurface); sources not
-//   finer than hMax are left out (the face's own sizing already holds them).
-//   a solid: every point in the box of the volume control space, its metric f =
-//   kVolumeLengthFactor times finer: a point gives the tetrahedra's size (the mesh the solver
-//   gets), while the volume convention makes tets f times longer than the sources' size.
-// Updating an initialized control space (3.3.1, "updating control space") refines it
-// around each point and intersects the metric there.
+//   source with its metric restricted to the surface (restrictToSurface). Call it on a
+//   fresh control space, before the continuous sources: the control vertices are then
+//   the inverse-distance average of the points near them (3.3.1, "setting initial control
+//   space"), not their intersection (the update procedure), which at a curved front makes
+//   neighbouring anisotropic points of different directions isotropic and fine.
+//   a solid: every point in the box of the volume control space. As every size, a point's
+//   size is that of the surface triangles and f = kVolumeLengthFactor times shorter than
+//   the tetrahedra's inside (VolumeControlSpace.h): who wants tets of its size (the adapt
+//   command) gives a metric f times finer.
 #include <vector>
 
 #include "mesher/control/CSAdaptive2d.h"
@@ -25,9 +27,8 @@ inline constexpr double kPointOnFaceFraction = 0.25;
 inline constexpr int kPointSampleGrid = 24;
 
 void insertFacePoints(CSAdaptive2d& cs, const std::vector<SizingPoint>& points, const ParametricSurface& surface,
-                      const Box2& bounds, double gMin, double hMax);
+                      const Box2& bounds, double gMin);
 
-/// `lengthFactor`: the volume's tet-to-source length factor (kVolumeLengthFactor).
-void insertSolidPoints(CSAdaptive3d& cs, const std::vector<SizingPoint>& points, const Box3& box, double lengthFactor);
+void insertSolidPoints(CSAdaptive3d& cs, const std::vector<SizingPoint>& points, const Box3& box);
 
 }  // namespace aniso

@@ -205,7 +205,7 @@ std::shared_ptr<ControlSpace3d> buildVolumeControlSpace(const Model& model, cons
       const std::unique_ptr<ExtendedSource3d> ext = extendedSource(src);
       if (ext && overlaps(ext->bounds(), box)) cs->insertExtendedSource(*ext, src.metric);
     }
-  if (user) insertSolidPoints(*cs, user->points, box, kVolumeLengthFactor);  // PointSizing.h
+  if (user) insertSolidPoints(*cs, user->points, box);  // PointSizing.h
 
   // 5
   cs->modifyControlVertices([gammaA](const Vec3&, Metric3d& m) {

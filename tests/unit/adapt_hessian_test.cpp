@@ -121,7 +121,7 @@ TEST(AdaptHessian, LpMetricMeetsTheNodeCountBoundsAndAnisotropy) {
   p.hmin = 1e-3;
   p.hmax = 0.5;
   p.anisotropy = 8;
-  const LpMetric lm = lpMetric(h, nodeMeasures(m), {}, p);
+  const LpMetric lm = lpMetric(h, nodeMeasures(m), {}, {}, p);
   EXPECT_FALSE(lm.limited);
   EXPECT_NEAR(lm.predictedNodes, 5000, 1);
   double stretchedAtFront = 0;
@@ -144,7 +144,7 @@ TEST(AdaptHessian, LpMetricMeetsTheNodeCountBoundsAndAnisotropy) {
   LpMetricParameters q = p;
   q.targetNodes = 0;
   q.error = lm.predictedError;
-  EXPECT_NEAR(lpMetric(h, nodeMeasures(m), {}, q).predictedNodes, 5000, 5);
+  EXPECT_NEAR(lpMetric(h, nodeMeasures(m), {}, {}, q).predictedNodes, 5000, 5);
 }
 
 TEST(AdaptHessian, LinearFieldIsRefused) {
@@ -154,7 +154,7 @@ TEST(AdaptHessian, LinearFieldIsRefused) {
   p.hmin = 0.01;
   p.hmax = 1;
   std::vector<Mat3> zero(m.nodes.size(), Mat3::Zero());
-  EXPECT_THROW(lpMetric(zero, nodeMeasures(m), {}, p), MeshingError);
+  EXPECT_THROW(lpMetric(zero, nodeMeasures(m), {}, {}, p), MeshingError);
 }
 
 }  // namespace
