@@ -36,6 +36,11 @@ constexpr double kCoverTolerance = 0.05;
 /// a field the first mesh does not resolve fewer (the same cube from a size-1 mesh: 1932
 /// for 3000, then 2248 for a metric scaled to 4658: slope 0.34).
 constexpr double kCountTolerance = 0.15;
+/// --target-nodes counts the output's nodes, the mid-side nodes of --order 2 too (what the
+/// solver counts); the metric is first scaled to N / this many vertices: a Delaunay tet mesh
+/// has ~5.5 tets and ~6.5 edges per vertex (7.5 nodes; less at the boundary: 7), a
+/// triangle mesh 3 edges per vertex (4). The count rounds correct the rest.
+constexpr double kQuadraticNodesPerVertex[4] = {1, 1, 4.0, 7.0};
 constexpr int kMaxCountRounds = 3;
 constexpr double kCountSlope[2] = {0.2, 1.5};
 
@@ -79,7 +84,7 @@ nlohmann::json adaptSizing(const AdaptArgs& a, const io::ReadMesh& old, const Pa
   lp.dim = p.dim;
   lp.norm = a.norm;
   lp.error = a.error;
-  lp.targetNodes = a.error > 0 ? 0 : (a.metricTarget > 0 ? a.metricTarget : a.targetNodes);
+  lp.targetNodes = a.error > 0 ? 0 : a.metricTarget;
   lp.hmin = s.hminFor(model.diagonal());
   lp.hmax = s.hmaxFor(model.diagonal());
   lp.anisotropy = s.anisotropy;
@@ -169,7 +174,9 @@ int runAdapt(const AdaptArgs& given) {
     std::string path;
     ~Remove() { if (!path.empty()) std::filesystem::remove(path); }
   } cleanup{ownReport ? m.report : std::string()};
-  double scaled = a.targetNodes, prevScaled = 0, prevMade = 0;
+  double scaled = a.mesh.options.order == 2 ? a.targetNodes / kQuadraticNodesPerVertex[p.dim] : a.targetNodes;
+  double prevScaled = 0, prevMade = 0;
+  a.metricTarget = scaled;
   for (int round = 1;; ++round) {
     const int rc = runMesh(m);
     if (rc != 0 || round == kMaxCountRounds) return rc;

@@ -51,7 +51,7 @@ struct AdaptArgs {
   double error = 0;        ///< --error
   double norm = 2;         ///< --norm p; γ_a is mesh.options.sizing.anisotropy (default 10)
   std::string hessian = "ls";  ///< --hessian: ls (least squares) or l2 (double L2 projection)
-  double metricTarget = 0;     ///< the count the metric is scaled to, when not targetNodes (a rerun)
+  double metricTarget = 0;     ///< the vertex count the metric is scaled to (set by runAdapt)
   double firstNodes = 0;       ///< the first mesh's count, when it was made again
 };
 /// anisomesh adapt (AdaptCommand.cpp): the mesh of MODEL adapted to a field of a solver's

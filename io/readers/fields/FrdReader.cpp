@@ -40,11 +40,23 @@ bool frdType(long long id, FrdType& out) {
 
 class FrdParser {
  public:
-  FrdParser(const std::string& data, const std::string& path) : s_(data, path), path_(path) {}
+  FrdParser(const std::string& data, const std::string& path) : data_(data), path_(path) {}
   ReadMesh parse();
 
  private:
-  [[noreturn]] void fail(const std::string& what) { s_.fail(what); }
+  [[noreturn]] void fail(const std::string& what) const {
+    throw InputError(path_ + ": line " + std::to_string(lineNo_) + ": " + what);
+  }
+  /// Fixed columns: lines are taken whole, leading blanks included.
+  bool atEnd() const { return pos_ >= data_.size(); }
+  std::string_view nextLine() {
+    const std::size_t end = std::min(data_.find('\n', pos_), data_.size());
+    std::string_view l(data_.data() + pos_, end - pos_);
+    pos_ = std::min(end + 1, data_.size());
+    ++lineNo_;
+    if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
+    return l;
+  }
   /// The record key of a line: "-1", "-2", "-3", "-4", "-5" or the block key ("2C", "100C"...).
   static std::string_view key(std::string_view line);
   int formatOf(std::string_view header);
@@ -54,8 +66,10 @@ class FrdParser {
   void elements(std::string_view header);
   void results(std::string_view header);
 
-  Scanner s_;
+  std::string_view data_;
   std::string path_;
+  std::size_t pos_ = 0;
+  long long lineNo_ = 0;
   std::vector<long long> nodeIds_, connIds_;
   ReadMesh m_;
   std::map<std::string, MeshData> results_;
@@ -106,8 +120,8 @@ double FrdParser::realField(std::string_view line, std::size_t& at) {
 void FrdParser::nodes(std::string_view header) {
   const int w = formatOf(header) == 1 ? 10 : 5;
   for (;;) {
-    if (s_.atEnd()) fail("unterminated node block");
-    const std::string_view line = s_.line();
+    if (atEnd()) fail("unterminated node block");
+    const std::string_view line = nextLine();
     const std::string_view k = key(line);
     if (k == "-3") return;
     if (k != "-1") fail("unexpected record in the node block");
@@ -122,8 +136,8 @@ void FrdParser::nodes(std::string_view header) {
 void FrdParser::elements(std::string_view header) {
   const int w = formatOf(header) == 1 ? 10 : 5;
   for (;;) {
-    if (s_.atEnd()) fail("unterminated element block");
-    std::string_view line = s_.line();
+    if (atEnd()) fail("unterminated element block");
+    std::string_view line = nextLine();
     std::string_view k = key(line);
     if (k == "-3") return;
     if (k != "-1") fail("unexpected record in the element block");
@@ -133,8 +147,8 @@ void FrdParser::elements(std::string_view header) {
     if (!frdType(intField(line, at, 5), t)) fail("unsupported FRD element type");
     std::vector<long long> ids;
     while (static_cast<int>(ids.size()) < t.nodes) {
-      if (s_.atEnd()) fail("truncated element");
-      line = s_.line();
+      if (atEnd()) fail("truncated element");
+      line = nextLine();
       if (key(line) != "-2") fail("an element has too few nodes");
       for (at = 3; at + w <= line.size() && static_cast<int>(ids.size()) < t.nodes;) ids.push_back(intField(line, at, w));
     }
@@ -149,8 +163,8 @@ void FrdParser::results(std::string_view header) {
   std::vector<std::string> names;
   std::string_view line;
   for (;;) {  // the -4 line and the -5 component lines
-    if (s_.atEnd()) fail("truncated result block");
-    line = s_.line();
+    if (atEnd()) fail("truncated result block");
+    line = nextLine();
     const std::string_view k = key(line);
     if (k == "-4") {
       std::size_t i = 3;
@@ -197,15 +211,15 @@ void FrdParser::results(std::string_view header) {
     if (node < 0) fail("result " + d.name + " for a node that is not defined");
     for (int c = 0; c < d.components; ++c) {
       if (at >= line.size()) {  // continued on a -2 line
-        if (s_.atEnd()) fail("truncated result " + d.name);
-        line = s_.line();
+        if (atEnd()) fail("truncated result " + d.name);
+        line = nextLine();
         if (key(line) != "-2") fail("result " + d.name + ": too few values for a node");
         at = 3 + w;
       }
       d.values[node * d.components + c] = realField(line, at);
     }
-    if (s_.atEnd()) fail("unterminated result " + d.name);
-    line = s_.line();
+    if (atEnd()) fail("unterminated result " + d.name);
+    line = nextLine();
   }
   if (!results_.count(d.name)) order_.push_back(d.name);
   results_[d.name] = std::move(d);
@@ -214,8 +228,8 @@ void FrdParser::results(std::string_view header) {
 ReadMesh FrdParser::parse() {
   m_.format = "frd";
   bool sawNodes = false;
-  while (!s_.atEnd()) {
-    const std::string_view line = s_.line();
+  while (!atEnd()) {
+    const std::string_view line = nextLine();
     const std::string_view k = key(line);
     if (k == "2C") {
       nodes(line);
