@@ -17,13 +17,6 @@ void growPatch(std::vector<int>& patch, const std::vector<std::vector<int>>& nb)
   patch.swap(grown);
 }
 
-/// Orthonormal tangent vectors of a unit normal.
-void tangentFrame(const Vec3& n, Vec3& t1, Vec3& t2) {
-  const Vec3 a = std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
-  t1 = n.cross(a).normalized();
-  t2 = n.cross(t1);
-}
-
 /// Least-squares quadratic on `patch` around node i; false when rank-deficient.
 bool fitQuadratic(const PatchMesh& m, const std::vector<double>& f, int i, const std::vector<int>& patch,
                   const Vec3& normal, Mat3& h) {

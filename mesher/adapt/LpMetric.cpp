@@ -24,12 +24,6 @@ struct NodeHessian {
   double weight = 0;
 };
 
-void tangentFrame(const Vec3& n, Vec3& t1, Vec3& t2) {
-  const Vec3 a = std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
-  t1 = n.cross(a).normalized();
-  t2 = n.cross(t1);
-}
-
 std::vector<NodeHessian> decompose(const std::vector<Mat3>& hs, const std::vector<double>& w,
                                    const std::vector<Vec3>& normals, const LpMetricParameters& p) {
   const int d = p.dim;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 
 #include <Eigen/Geometry>
@@ -95,6 +96,12 @@ std::vector<double> nodeMeasures(const PatchMesh& m) {
     for (int i = 0; i < k; ++i) out[m.conn[m.offsets[c] + i]] += share;
   }
   return out;
+}
+
+void tangentFrame(const Vec3& n, Vec3& t1, Vec3& t2) {
+  const Vec3 a = std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+  t1 = n.cross(a).normalized();
+  t2 = n.cross(t1);
 }
 
 std::vector<Vec3> nodeNormals(const PatchMesh& m) {

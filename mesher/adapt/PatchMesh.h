@@ -38,6 +38,8 @@ std::vector<char> boundaryNodes(const PatchMesh& m);
 double cellMeasure(const PatchMesh& m, std::size_t c);
 /// The lumped measure of every node: each cell's volume (area) shared equally by its corners.
 std::vector<double> nodeMeasures(const PatchMesh& m);
+/// Orthonormal t1, t2 with (t1, t2, n) right-handed, for a unit normal n.
+void tangentFrame(const Vec3& n, Vec3& t1, Vec3& t2);
 /// Per node, a unit normal for dim 2 (area-weighted mean of its triangles'; zero when they
 /// cancel); empty for dim 3.
 std::vector<Vec3> nodeNormals(const PatchMesh& m);
