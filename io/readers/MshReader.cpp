@@ -1,5 +1,7 @@
 // Gmsh MSH reader: 4.1 and 2.2, ASCII and binary (little-endian, 8-byte data size), the
-// sections $MeshFormat $PhysicalNames $Entities $Nodes $Elements; other sections skipped.
+// sections $MeshFormat $PhysicalNames $Entities $Nodes $Elements $NodeData $ElementData
+// (fields/MshData.h); other sections skipped.
+#include <algorithm>
 #include <array>
 #include <map>
 #include <utility>
@@ -7,6 +9,7 @@
 #include "io/readers/ReadMesh.h"
 #include "io/readers/Scanner.h"
 #include "io/readers/TagIndex.h"
+#include "io/readers/fields/MshData.h"
 
 namespace aniso::io {
 namespace {
@@ -66,6 +69,8 @@ class MshParser {
   std::vector<Vec3> nodes_;
   std::vector<CellType> types_;
   std::vector<long long> connTags_;
+  std::vector<long long> cellTags_;
+  std::vector<MshDataSection> data_;
   std::map<Key, std::vector<int>> groups_;
 };
 
@@ -179,7 +184,7 @@ void MshParser::elements41() {
     const auto phys = entityPhysicals_.find({dim, entity});
     const std::vector<long long>& groups = phys == entityPhysicals_.end() ? none : phys->second;
     for (std::size_t i = 0; i < n; ++i) {
-      sizeT();
+      cellTags_.push_back(sizeT());
       for (int k = 0; k < t.nodes; ++k) tags[k] = sizeT();
       addElement(type, dim, groups, tags.data());
     }
@@ -205,7 +210,7 @@ void MshParser::elements22() {
   };
   if (!binary_) {
     for (std::size_t i = 0; i < total; ++i) {
-      s_.integer();
+      cellTags_.push_back(s_.integer());
       const long long type = s_.integer(), ntags = static_cast<long long>(count(s_.integer()));
       one(type, ntags);
     }
@@ -216,7 +221,7 @@ void MshParser::elements22() {
       const long long ntags = static_cast<long long>(count(int32()));
       if (n == 0) s_.fail("empty element block");
       for (std::size_t i = 0; i < n; ++i) {
-        int32();
+        cellTags_.push_back(int32());
         one(type, ntags);
       }
     }
@@ -242,6 +247,13 @@ ReadMesh MshParser::finish() {
     }
     m.offsets.push_back(static_cast<int>(m.conn.size()));
   }
+  if (!data_.empty()) {
+    m.pointData = mshDataArrays(data_, false, index, m.nodes.size(), s_);
+    TagIndex cells;
+    if (!cells.build(cellTags_) && std::any_of(data_.begin(), data_.end(), [](const auto& d) { return d.element; }))
+      s_.fail("an element tag is used twice");
+    m.cellData = mshDataArrays(data_, true, cells, m.types.size(), s_);
+  }
   for (auto& [key, cells] : groups_) {
     const auto name = names_.find(key);
     m.groups.push_back({name != names_.end() ? name->second : std::to_string(key.first) + ":" + std::to_string(key.second),
@@ -263,6 +275,8 @@ ReadMesh MshParser::parse() {
       v41_ ? nodes41() : nodes22();
     } else if (section == "$Elements") {
       v41_ ? elements41() : elements22();
+    } else if (section == "$NodeData" || section == "$ElementData") {
+      data_.push_back(readMshDataSection(s_, binary_, section == "$ElementData"));
     } else if (section.size() > 1 && section[0] == '$') {
       s_.skipPast("$End" + section.substr(1));
     } else {

@@ -34,8 +34,9 @@ ReadMesh readByExtension(const std::string& path) {
   if (ext == ".msh") return readMsh(path);
   if (ext == ".inp") return readInp(path);
   if (ext == ".vtu") return readVtu(path);
+  if (ext == ".frd") return readFrd(path);
   if (ext == ".stl" || ext == ".obj" || ext == ".off") return readSurfaceWithOpenMesh(path);
-  throw InputError(path + ": unknown mesh format (expected .msh .inp .vtu .stl .obj .off)");
+  throw InputError(path + ": unknown mesh format (expected .msh .inp .vtu .frd .stl .obj .off)");
 }
 
 }  // namespace

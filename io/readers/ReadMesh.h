@@ -17,6 +17,11 @@
 //   .vtu  VTK XML unstructured grid, ASCII, inline base64 ("binary") or appended (raw or
 //         base64), uncompressed or zlib (VtuPayload.h); groups: "<array>=<value>" for each integer cell-data array
 //   .stl .obj .off  through OpenMesh's readers (polygon soup: no faces are dropped)
+//   .frd  CalculiX results (ASCII): nodes, elements and the last step's nodal results
+//         (io/readers/fields/FrdReader.cpp)
+// Data arrays (pointData, cellData): MSH $NodeData / $ElementData (the last time step of
+// each name), VTU PointData / CellData, FRD result blocks. A node or element the file gives
+// no value for holds NaN.
 // Every reader throws InputError naming the file for a missing, unreadable, truncated or
 // malformed file, or a file that holds no element.
 #include <cstdint>
@@ -50,6 +55,14 @@ struct NodeSet {
   std::vector<int> nodes;  ///< 0-based node indices, increasing
 };
 
+/// A named data array: `components` values per node (or per element), node-major.
+struct MeshData {
+  std::string name;
+  int components = 1;
+  std::vector<std::string> componentNames;  ///< FRD: D1 D2 D3, SXX ...; else empty
+  std::vector<double> values;               ///< size = count × components
+};
+
 struct ReadMesh {
   std::string format;  ///< "msh4.1 ascii", "inp", "vtu", "stl", ...
   std::vector<Vec3> nodes;
@@ -58,6 +71,8 @@ struct ReadMesh {
   std::vector<int> conn;
   std::vector<MeshGroup> groups;
   std::vector<NodeSet> nodeSets;  ///< INP *NSET
+  std::vector<MeshData> pointData;  ///< per node
+  std::vector<MeshData> cellData;   ///< per element
 
   std::size_t cellCount() const { return types.size(); }
   int cellSize(std::size_t i) const { return offsets[i + 1] - offsets[i]; }
@@ -76,5 +91,6 @@ ReadMesh readMsh(const std::string& path);
 ReadMesh readInp(const std::string& path);
 ReadMesh readVtu(const std::string& path);
 ReadMesh readSurfaceWithOpenMesh(const std::string& path);
+ReadMesh readFrd(const std::string& path);
 
 }  // namespace aniso::io

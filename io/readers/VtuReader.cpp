@@ -1,5 +1,6 @@
 // VTK XML unstructured grid reader (.vtu): the Piece's Points, Cells (connectivity,
-// offsets, types) and integer CellData arrays (as groups). Data arrays ASCII, inline
+// offsets, types), integer CellData arrays (as groups) and every PointData / CellData array
+// (ReadMesh::pointData, cellData). Data arrays ASCII, inline
 // base64 ("binary") or appended (raw or base64), headers UInt32 or UInt64, little-endian,
 // uncompressed or zlib-compressed (VtuPayload.h). The XML is scanned, not fully parsed: enough for the files VTK, meshio,
 // ParaView and our writer produce.
@@ -47,6 +48,7 @@ class VtuParser {
   std::vector<unsigned char> binaryBytes(const DataArray& a) const;
   std::vector<double> decode(const std::string& type, const unsigned char* p, std::size_t bytes) const;
   const DataArray& cellArray(const char* name) const;
+  void dataArrays(ReadMesh& m) const;
 
   const std::string& data_;
   std::string path_;
@@ -167,6 +169,26 @@ const DataArray& VtuParser::cellArray(const char* name) const {
   fail(std::string("no <Cells> data array named ") + name);
 }
 
+/// Every PointData and CellData array, as ReadMesh::MeshData.
+void VtuParser::dataArrays(ReadMesh& m) const {
+  for (const DataArray& a : arrays_) {
+    if (a.section != "PointData" && a.section != "CellData") continue;
+    MeshData d;
+    d.name = a.attr.count("Name") ? a.attr.at("Name") : "data";
+    long long comps = 1;
+    if (a.attr.count("NumberOfComponents") && (!parseInteger(a.attr.at("NumberOfComponents"), comps) || comps < 1 || comps > 81))
+      fail("data array " + d.name + " has a bad NumberOfComponents");
+    d.components = static_cast<int>(comps);
+    d.values = values(a);
+    const bool point = a.section == "PointData";
+    const std::size_t count = point ? m.nodes.size() : m.cellCount();
+    if (d.values.size() != count * d.components)
+      fail((point ? "point" : "cell") + std::string(" data ") + d.name + " has " + std::to_string(d.values.size()) +
+           " values for " + std::to_string(count) + (point ? " points" : " cells"));
+    (point ? m.pointData : m.cellData).push_back(std::move(d));
+  }
+}
+
 bool vtkType(int id, CellType& out) {
   static const std::map<int, CellType> table = {
       {1, CellType::Point},      {3, CellType::Line},       {5, CellType::Triangle},  {7, CellType::Polygon},
@@ -268,6 +290,7 @@ ReadMesh VtuParser::parse() {
     const std::string name = a.attr.count("Name") ? a.attr.at("Name") : "cell_data";
     for (auto& [value, cells] : byValue) m.groups.push_back({name + "=" + std::to_string(value), std::move(cells)});
   }
+  dataArrays(m);
   return m;
 }
 

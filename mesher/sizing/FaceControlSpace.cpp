@@ -1,4 +1,5 @@
 #include "mesher/sizing/FaceControlSpace.h"
+#include "mesher/sizing/PointSizing.h"
 
 #include <Eigen/Geometry>
 
@@ -149,6 +150,9 @@ std::unique_ptr<CSQuadtree2d> buildFaceControlSpace(const FaceSizingInput& in) {
 
   try {
     auto cs = std::make_unique<CSQuadtree2d>(bounds, in.params);
+    // 1–2 (3.3.1, "setting initial control space"): discrete point sources first, so that
+    // the control vertices are averaged from them (not intersected, as an update would)
+    if (in.user && !in.user->points.empty()) insertFacePoints(*cs, in.user->points, *surface, bounds, gMin);
     // 3: surface curvature (or the uniform size).
     if (in.params.size) {
       const double h = *in.params.size;

@@ -22,13 +22,22 @@ struct SizingSource {
   bool contains(const Vec3& x) const;
 };
 
+/// A discrete point source (thesis 3.3.1, "Introducing discrete data"): the metric wanted at
+/// a point, e.g. the adapted metric at a node of a solver's mesh (the adapt command). A face
+/// takes the points near it (mesher/sizing/PointSizing.h), a solid those in its box.
+struct SizingPoint {
+  Vec3 at = Vec3::Zero();
+  Metric3d metric;
+};
+
 struct UserSizing {
   std::optional<Metric3d> global;
   std::vector<SizingSource> sources;
+  std::vector<SizingPoint> points;
 
-  bool empty() const { return !global && sources.empty(); }
-  /// The intersection of the global metric and of every source containing x; nothing
-  /// when none applies at x.
+  bool empty() const { return !global && sources.empty() && points.empty(); }
+  /// The intersection of the global metric and of every source containing x (points are
+  /// not regions: left out); nothing when none applies at x.
   std::optional<Metric3d> metricAt(const Vec3& x) const;
 };
 

@@ -1,4 +1,5 @@
 #include "mesher/volume/VolumeControlSpace.h"
+#include "mesher/sizing/PointSizing.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -204,6 +205,7 @@ std::shared_ptr<ControlSpace3d> buildVolumeControlSpace(const Model& model, cons
       const std::unique_ptr<ExtendedSource3d> ext = extendedSource(src);
       if (ext && overlaps(ext->bounds(), box)) cs->insertExtendedSource(*ext, src.metric);
     }
+  if (user) insertSolidPoints(*cs, user->points, box);  // PointSizing.h
 
   // 5
   cs->modifyControlVertices([gammaA](const Vec3&, Metric3d& m) {

@@ -5,7 +5,8 @@
 //     diagonal);
 //   2 a new ACS (CSOctree3d);
 //   3 the user's 3D sizing: the global metric and every source whose box meets the solid's
-//     (CSAdaptive3d::insertExtendedSource: ball, capsule, box);
+//     (CSAdaptive3d::insertExtendedSource: ball, capsule, box), and the point sources in
+//     the box (mesher/sizing/PointSizing.h);
 //   4 the metric of the surface patches: for every boundary node of the solid, the blend
 //     (eq. 2.18) of the metrics of its incident boundary triangles; a triangle's metric is
 //     its simplex metric (eq. 2.33) in its plane, eigen-form (e1, e2, h1, h2), extended

@@ -2,10 +2,14 @@
 // The subcommands of the anisomesh program. Each returns the process exit code
 // (0 ok, 2 bad input, 3 meshing failure) or throws InputError / MeshingError, which
 // main() turns into a one-line message and the same codes.
+#include <functional>
 #include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "cad/CadModel.h"
 #include "mesher/core/MeshOptions.h"
+#include "mesher/sizing/UserSizing.h"
 
 namespace aniso::cli {
 
@@ -33,8 +37,27 @@ struct MeshArgs {
   bool anisotropyGiven = false;
   /// --time-limit S: the run stops (status failed, exit 3, no mesh) after S seconds; 0 = none.
   double timeLimit = 0;
+  /// Called once the model is read, before meshing: adds to the user's sizing (the adapt
+  /// command's metric as point sources); its result goes to the report's "adapt" block.
+  /// May throw InputError.
+  std::function<nlohmann::json(const Model&, UserSizing&)> extraSizing;
 };
 int runMesh(const MeshArgs& args);
+
+struct AdaptArgs {
+  MeshArgs mesh;           ///< model, output, report, order, sizing options
+  std::string from;        ///< the solver's mesh with the field (.msh .vtu .frd ...)
+  std::string field;       ///< NAME or NAME:COMPONENT (io/readers/fields/NodalField.h)
+  double targetNodes = 0;  ///< --target-nodes (default: the node count of --from)
+  double error = 0;        ///< --error
+  double norm = 2;         ///< --norm p; γ_a is mesh.options.sizing.anisotropy (default 10)
+  std::string hessian = "ls";  ///< --hessian: ls (least squares) or l2 (double L2 projection)
+  double metricTarget = 0;     ///< the vertex count the metric is scaled to (set by runAdapt)
+  double firstNodes = 0;       ///< the first mesh's count, when it was made again
+};
+/// anisomesh adapt (AdaptCommand.cpp): the mesh of MODEL adapted to a field of a solver's
+/// mesh (issue 19).
+int runAdapt(const AdaptArgs& args);
 
 struct SizingArgs {
   std::string file;

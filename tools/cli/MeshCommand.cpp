@@ -102,6 +102,7 @@ static int meshRun(const MeshArgs& given, io::Report& report) {
   checkCancel(args.options.cancel.get(), "reading");
   report.times = in.times;
   report.extra["model"] = in.summary;
+  if (args.extraSizing) report.extra["adapt"] = args.extraSizing(in.model, request.user);
   const int dim = args.options.dim == 0 ? defaultDimension(args, in.solids) : resolvedDim(args.options, in.solids > 0);
   if (dim == 3 && in.solids == 0)
     throw InputError(args.file + (in.analytic ? ": nothing to mesh in 3D: an analytic model is a surface (use --dim 2)"

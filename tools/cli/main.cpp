@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "mesher/core/Error.h"
+#include "tools/cli/AdaptCommand.h"
 #include "tools/cli/Commands.h"
 #include "tools/cli/TerminalSink.h"
 
@@ -105,6 +106,10 @@ int main(int argc, char** argv) {
   checkCmd->add_flag("--json", check.json, "One JSON object on stdout");
   checkCmd->fallthrough();
 
+  cli::AdaptArgs adapt;
+  CLI::App* adaptCmd = cli::addAdaptCommand(app, adapt);
+  addSizingOptions(*adaptCmd, adapt.mesh.options.sizing);
+
   // CLI11 reports an unknown command as a missing one: name it instead.
   if (argc > 1 && argv[1][0] != '-' &&
       app.get_subcommands([&](CLI::App* sub) { return sub->get_name() == argv[1]; }).empty()) {
@@ -128,6 +133,7 @@ int main(int argc, char** argv) {
     }
     if (sizingCmd->parsed()) return cli::runSizing(sizing);
     if (checkCmd->parsed()) return cli::runCheck(check);
+    if (adaptCmd->parsed()) return cli::runAdapt(adapt);
   } catch (const InputError& e) {
     std::fprintf(stderr, "anisomesh: %s\n", e.what());
     return 2;

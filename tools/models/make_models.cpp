@@ -1,6 +1,6 @@
 // make_models: writes anisomesh's own sample models as STEP AP214 through XCAF.
 //
-//   make_models OUTDIR        build the models and write OUTDIR/{bracket,assembly2,plate,cylinder,cantilever,blocks2,passage,overlap2}.step
+//   make_models OUTDIR        build the models and write OUTDIR/{bracket,assembly2,plate,cylinder,cantilever,blocks2,passage,overlap2,cube}.step
 //   make_models --check FILE  read FILE with STEPCAFControl_Reader and print solids, volume, part names
 //
 // Output is deterministic: the STEP header (name, time stamp, author, organization,
@@ -193,6 +193,9 @@ TopoDS_Shape makeCylinder() { return cylinder(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1), 
 // Cantilever 100 x 10 x 10 from the origin. OCCT's box orders its faces x = 0, x = 100,
 // y = 0, y = 10, z = 0, z = 10: FACE1 is the clamped end, FACE2 the loaded end.
 TopoDS_Shape makeCantilever() { return box(0, 0, 0, 100, 10, 10); }
+
+/// Cube 10 × 10 × 10 from the origin, for the adapt tests (issue 19).
+TopoDS_Shape makeCube() { return box(0, 0, 0, 10, 10, 10); }
 
 
 // ---------------------------------------------------------------- XCAF / STEP
@@ -488,6 +491,7 @@ int main(int argc, char** argv) {
     writeBlocks2(out / "blocks2.step");
     writePart(makePassage(), "PASSAGE", out / "passage.step");  // a surface model: no solid
     writeOverlap2(out / "overlap2.step");
+    writeSinglePart(makeCube(), "CUBE", out / "cube.step");
     return 0;
   } catch (const Standard_Failure& e) {
     std::cerr << "make_models: OCCT exception: " << e.GetMessageString() << "\n";
