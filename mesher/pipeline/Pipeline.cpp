@@ -48,7 +48,7 @@ MeshResult meshModel(const Model& model, const MeshRequest& request) {
   sin.analytic = request.analytic;
   sin.user = &request.user;
   sin.skipFaces = std::move(grade.skipFaces);
-  r.surface = meshRepairedSurface(sin, &r.surfaceRepair);
+  r.surface = meshRepairedSurface(sin, &r.surfaceRepair, surfaceRepairApplies(sin, r.dim));
   r.times = r.surface.times;
   if (r.surface.mesh.triangles.empty() && r.surface.mesh.quads.empty()) {
     append(r.problems, surfaceProblems(model, r.surface));

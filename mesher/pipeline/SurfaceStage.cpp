@@ -4,8 +4,14 @@
 
 namespace aniso {
 
-SurfaceMeshResult meshRepairedSurface(const SurfaceMesherInput& in, SurfaceRepairStats* repair) {
+bool surfaceRepairApplies(const SurfaceMesherInput& in, int dim) {
+  return dim == 3 || (!in.analytic && in.options.sizing.anisotropy <= 1);
+}
+
+SurfaceMeshResult meshRepairedSurface(const SurfaceMesherInput& in, SurfaceRepairStats* repair, bool apply) {
   SurfaceMeshResult sr = meshSurfaces(in);
+  *repair = {};
+  if (!apply) return sr;
   const double tolerance = kSurfaceSliverTolerance * in.options.sizing.hminFor(in.model->diagonal());
   *repair = repairSurface(*in.model, tolerance, sr.mesh);
   return sr;

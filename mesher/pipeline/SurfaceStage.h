@@ -8,7 +8,13 @@
 
 namespace aniso {
 
-/// meshSurfaces(in), repaired; `repair` (not null) receives what the repair did.
-SurfaceMeshResult meshRepairedSurface(const SurfaceMesherInput& in, SurfaceRepairStats* repair);
+/// The repair is Euclidean (caps and folds in space, for the volume mesher): it applies to
+/// every surface of a 3D run and to isotropic 2D runs; an anisotropic 2D surface (γ_a > 1,
+/// or an analytic metric: thesis AN1, whose caps are the metric's intended elements) is
+/// the product and keeps its elements.
+bool surfaceRepairApplies(const SurfaceMesherInput& in, int dim);
+
+/// meshSurfaces(in), repaired when `apply`; `repair` (not null) receives what the repair did.
+SurfaceMeshResult meshRepairedSurface(const SurfaceMesherInput& in, SurfaceRepairStats* repair, bool apply = true);
 
 }  // namespace aniso

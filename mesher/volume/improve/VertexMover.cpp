@@ -15,6 +15,13 @@ namespace {
 constexpr double kPerturbRadii[2] = {0.15, 0.05};
 /// relocate(v, angles = true) keeps the star's worst η_M³ above this fraction of its value.
 constexpr double kAngleMoveScoreKeep = 0.5;
+/// relocate(v, true): after the fixed candidates, a compass search (26 directions) from the
+/// best position, its radius doubled after a gain (at most the shortest edge) and halved
+/// otherwise, for at most this many steps or until it falls below kAngleSearchMinRadius ×
+/// the shortest edge. Measured on a real assembly (GNSS antenna, a sliver on a curved face
+/// at an interface): the fixed candidates left 1.9°, the search found 3.9° 0.01 mm away.
+constexpr int kAngleSearchSteps = 24;
+constexpr double kAngleSearchMinRadius = 1e-3;
 }  // namespace
 
 void VertexMover::loadStar(del3d::VertexId v) {
@@ -219,6 +226,21 @@ bool VertexMover::relocate(del3d::VertexId v, bool angles) {
           const Vec3 d(dx, dy, dz);
           consider(q + (r * shortest / d.norm()) * d);
         }
+  if (angles) {
+    double r = kPerturbRadii[0] * shortest;
+    for (int step = 0; step < kAngleSearchSteps && r > kAngleSearchMinRadius * shortest; ++step) {
+      const Vec3 c = bestP;
+      const double before = best;
+      for (int dx = -1; dx <= 1; ++dx)
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dz = -1; dz <= 1; ++dz) {
+            if (dx == 0 && dy == 0 && dz == 0) continue;
+            const Vec3 d(dx, dy, dz);
+            consider(c + (r / d.norm()) * d);
+          }
+      r = best > before ? std::min(2 * r, shortest) : 0.5 * r;
+    }
+  }
   if (bestP == q) return false;
   move(v, bestP);
   return true;

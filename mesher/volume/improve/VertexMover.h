@@ -18,7 +18,8 @@
 //   regular (the apex over its opposite face, in its metric) and the midpoint towards it,
 //   and deterministic perturbations (26 directions of the cube around the vertex, two radii
 //   relative to the shortest edge of the star); the legal candidate with the largest worst
-//   η_M of the star wins if it beats the current worst.
+//   η_M of the star wins if it beats the current worst. In the angles mode a compass
+//   search then continues from the best position (VertexMover.cpp: kAngleSearchSteps).
 #include <vector>
 
 #include "mesher/volume/SolidTetMesh.h"
