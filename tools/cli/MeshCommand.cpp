@@ -20,6 +20,7 @@
 #include "tools/cli/BudgetReport.h"
 #include "tools/cli/VolumeReport.h"
 #include "tools/cli/ModelInput.h"
+#include "tools/cli/SizingReport.h"
 
 namespace aniso::cli {
 namespace {
@@ -45,6 +46,7 @@ nlohmann::ordered_json optionsJson(const MeshArgs& a) {
   j["hmax_rel"] = s.hmaxRel;
   j["hmin_rel"] = s.hminRel;
   if (s.size) j["size"] = *s.size;
+  j["curvature"] = s.curvature;
   if (s.hmax) j["hmax"] = *s.hmax;
   if (s.hmin) j["hmin"] = *s.hmin;
   if (!a.options.sizingFile.empty()) j["sizing"] = a.options.sizingFile;
@@ -350,6 +352,7 @@ static int runVolume(const MeshArgs& args, const Model& topo, SurfaceMesherInput
                                {"seconds", proximitySeconds}};
   for (const auto& p : vr.times) report.times.push_back(p);
   fillVolumeReport(topo, vr, report);
+  report.extra["sizing"] = sizingReport(args.options.sizing, topo.diagonal(), sr.mesh, &vr.mesh);
   // a solid that failed leaves the mesh degraded; no solid meshed at all fails the run
   if (vr.mesh.tets.empty()) failRun(args, report, t0);
   if (args.options.order == 2) elevateForOutput(topo, vr.mesh, report);
@@ -416,6 +419,7 @@ static int meshRun(const MeshArgs& given, io::Report& report) {
   wopt.binary = args.binary;
   wopt.mshVersion = args.mshVersion;
   if (dim == 3) return runVolume(args, topo, sin, std::move(sr), user, report, wopt, t0);
+  report.extra["sizing"] = sizingReport(args.options.sizing, topo.diagonal(), sr.mesh, nullptr);
   if (args.options.order == 2) elevateForOutput(topo, sr.mesh, report);
   const auto tw = Clock::now();
   io::writeSurfaceMesh(topo, sr.mesh, args.output, wopt);
