@@ -19,7 +19,7 @@ std::string number(double x) {
 
 }  // namespace
 
-SizeOptions::SizeOptions(CLI::App& cmd, SizingParameters& s) : cmd_(cmd), params_(s) {
+SizeOptions::SizeOptions(CLI::App& cmd, SizingParameters& s, bool volumeIsotropic) : cmd_(cmd), params_(s) {
   const std::string epc = number(elementsPerCircleForCurvatureRatio(s.curvatureRatio));
   cmd.add_option("--size", s.size,
                  "Target element size everywhere; curved faces and thin parts still get smaller elements "
@@ -52,9 +52,11 @@ SizeOptions::SizeOptions(CLI::App& cmd, SizingParameters& s) : cmd_(cmd), params
       ->option_text("G")
       ->default_str(number(s.gradation))
       ->group(kShape);
+  const std::string anisotropyDefault =
+      volumeIsotropic ? "default 1 for volume meshes, " + number(s.anisotropy) + " for surface meshes"
+                      : "default " + number(s.anisotropy);
   cmd.add_option("--anisotropy", s.anisotropy,
-                 "Largest stretch of an element (1 = isotropic); default 1 for volume meshes, " + number(s.anisotropy) +
-                     " for surface meshes (thesis γ_a)")
+                 "Largest stretch of an element (1 = isotropic); " + anisotropyDefault + " (thesis γ_a)")
       ->option_text("A")
       ->group(kShape);
   cmd.add_option("--contour-anisotropy", s.contourAnisotropy, "Largest stretch along curved edges (thesis γ_ac)")

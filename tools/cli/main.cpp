@@ -105,7 +105,7 @@ int main(int argc, char** argv) {
       ->default_str("4.1")
       ->group(kOutput);
   meshCmd->add_option("--report", mesh.report, "Write the JSON run report here")->option_text("FILE")->group(kOutput);
-  cli::SizeOptions meshSize(*meshCmd, mesh.options.sizing);
+  cli::SizeOptions meshSize(*meshCmd, mesh.options.sizing, true);
   meshCmd->add_option("--sizing", mesh.options.sizingFile, "Local sizes: sources in a JSON file (README)")
       ->option_text("FILE")
       ->group(cli::kSizeGroup);
@@ -139,7 +139,7 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber)
       ->option_text("N")
       ->group(kOutput);
-  cli::SizeOptions sizingSize(*sizingCmd, sizing.params);
+  cli::SizeOptions sizingSize(*sizingCmd, sizing.params, false);
   sizingCmd->add_option("--sizing", sizing.sizingFile, "Local sizes: sources in a JSON file (README)")
       ->option_text("FILE")
       ->group(cli::kSizeGroup);
