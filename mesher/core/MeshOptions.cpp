@@ -11,7 +11,8 @@ std::string SizingParameters::check() const {
   if (size && !finitePositive(*size)) return "--size must be a positive number";
   if (hmax && !finitePositive(*hmax)) return "--hmax must be a positive number";
   if (hmin && !finitePositive(*hmin)) return "--hmin must be a positive number";
-  if (hmax && hmin && *hmin > *hmax) return "--hmin must not exceed --hmax";
+  if (hmax && hmin && *hmin > *hmax) return "--hmin is above --hmax: lower --hmin or raise --hmax";
+  if (size && hmin && *hmin > *size) return "--hmin is above --size: lower --hmin or raise --size";
   if (!finitePositive(hmaxRel) || hmaxRel > 10) return "--hmax-rel must be in (0, 10]";
   if (!finitePositive(hminRel) || hminRel > hmaxRel) return "--hmin-rel must be in (0, hmax-rel]";
   if (!finitePositive(curvatureRatio) || curvatureRatio > 10) return "--curvature-ratio must be in (0, 10]";

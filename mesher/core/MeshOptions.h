@@ -1,7 +1,9 @@
 #pragma once
 // MeshOptions — every parameter of the meshing process in one struct, passed down by
-// reference; no globals (STYLE.md). Defaults are the thesis' table 3.2.
+// reference; no globals (STYLE.md). The struct's defaults are the thesis' table 3.2 (the
+// unit tests follow them); the program's are SizingParameters::forAnalysis().
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <string>
 
@@ -9,6 +11,27 @@
 
 namespace aniso {
 
+/// Elements per full circle (2π) of the program's default curvature sizing: Gmsh's
+/// `-clcurv 12` convention, a mesh for a first FEM analysis (docs/defaults_vs_gmsh.md: with
+/// the thesis' γ_c 0.15, i.e. 42 per circle, tet counts were 10–40× Gmsh's).
+inline constexpr double kDefaultElementsPerCircle = 12;
+
+/// The program's default h_max over the model diagonal: Gmsh's default size (a unit cube's
+/// edges get 6 segments: diagonal / 10). Measured at 12 per circle against the thesis' 0.5:
+/// box.brep 24 -> 1711 tets (Gmsh 1155), bracket 5911 -> 5777, as1-tu-203 73.9 k -> 70.0 k
+/// (a surface graded from smaller sizes needs fewer tets to reach the quality bar).
+inline constexpr double kDefaultHmaxRel = 0.1;
+
+/// γ_c (edge length / curvature radius) for n elements per full circle: 2π/n. n > 0.
+inline double curvatureRatioForElementsPerCircle(double n) { return 2 * std::numbers::pi / n; }
+/// Elements per full circle for γ_c: 2π/γ_c.
+inline double elementsPerCircleForCurvatureRatio(double ratio) { return 2 * std::numbers::pi / ratio; }
+
+/// The element size (README, "Element size"). Every length is in model units (millimetres
+/// for STEP and IGES, whose readers convert; the file's own unit for BREP). Sources of size:
+/// the target h_max (--size, --hmax or --hmax-rel), the curvature (γ_c, unless `curvature`
+/// is off), the contour curvature, the thin parts (proximity) and the user's sources; each
+/// is bounded to [h_min, h_max], so h_min and h_max are hard bounds of the requested size.
 struct SizingParameters {
   double anisotropy = 5.0;          ///< γ_a, max h_max/h_min of a metric (eq. 2.42)
   double gradation = 4.0;           ///< γ_M, metric gradation ratio (eq. 2.26–2.32)
@@ -22,7 +45,20 @@ struct SizingParameters {
   double adaptLengthMax = 2.0;      ///< l_Mmax, metric length threshold for adaptation
   std::optional<double> hmax;       ///< absolute h_max (overrides hmaxRel)
   std::optional<double> hmin;       ///< absolute h_min (overrides hminRel)
-  std::optional<double> size;       ///< uniform target size: curvature sizing off, h = size
+  /// --size: the target size everywhere (h_max = size); curvature, thin parts and sources
+  /// still refine below it, down to h_min, unless `curvature` is off.
+  std::optional<double> size;
+  bool curvature = true;            ///< curvature sources (surface and contour); off: uniform h_max
+
+  /// The program's defaults: the thesis' table with the curvature of
+  /// kDefaultElementsPerCircle (γ_c = 2π/12 ≈ 0.52) and h_max a tenth of the diagonal
+  /// (kDefaultHmaxRel).
+  static SizingParameters forAnalysis() {
+    SizingParameters p;
+    p.curvatureRatio = curvatureRatioForElementsPerCircle(kDefaultElementsPerCircle);
+    p.hmaxRel = kDefaultHmaxRel;
+    return p;
+  }
 
   double contourAnisotropyEff() const { return contourAnisotropy < anisotropy ? contourAnisotropy : anisotropy; }
   /// h_max for a model of the given diagonal.
@@ -30,7 +66,8 @@ struct SizingParameters {
     if (size) return *size;
     return hmax ? *hmax : hmaxRel * diagonal;
   }
-  /// h_min for a model of the given diagonal (never above h_max).
+  /// h_min for a model of the given diagonal (never above h_max; check() refuses an
+  /// explicit h_min above an explicit h_max or size).
   double hminFor(double diagonal) const {
     const double h = hmin ? *hmin : hminRel * diagonal;
     return h < hmaxFor(diagonal) ? h : hmaxFor(diagonal);

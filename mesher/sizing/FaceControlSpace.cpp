@@ -153,9 +153,9 @@ std::unique_ptr<CSQuadtree2d> buildFaceControlSpace(const FaceSizingInput& in) {
     // 1–2 (3.3.1, "setting initial control space"): discrete point sources first, so that
     // the control vertices are averaged from them (not intersected, as an update would)
     if (in.user && !in.user->points.empty()) insertFacePoints(*cs, in.user->points, *surface, bounds, gMin);
-    // 3: surface curvature (or the uniform size).
-    if (in.params.size) {
-      const double h = *in.params.size;
+    // 3: surface curvature (or, with the curvature off, h_max everywhere).
+    if (!in.params.curvature) {
+      const double h = sizing.hMax;
       cs->setContinuousSource(CSAnalytic2d(bounds, [h](const Vec2&) { return Metric2d::isotropic(h); }));
     } else {
       // robust: bounded by the surface's secants and by the face's tolerance and width
@@ -166,9 +166,10 @@ std::unique_ptr<CSQuadtree2d> buildFaceControlSpace(const FaceSizingInput& in) {
     }
     // 4: the user's control spaces.
     if (in.analytic) cs->superpose(*in.analytic);
-    if (in.user && !in.user->empty()) insertUserSizing(*cs, *in.user, *surface, bounds, gMin, sizing.hMax);
+    if (in.user && !in.user->empty())
+      insertUserSizing(*cs, in.user->bounded(sizing.hMin, sizing.hMax), *surface, bounds, gMin, sizing.hMax);
     // 6: contour curvature.
-    if (!in.params.size) insertContourCurvature(*cs, model, face, *surface, gMin, sizing);
+    if (in.params.curvature) insertContourCurvature(*cs, model, face, *surface, gMin, sizing);
     // 7, 8.
     cs->adaptToParameterization(*surface, gMin);
     cs->smoothGradation(in.params.gradation);

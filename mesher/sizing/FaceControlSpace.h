@@ -2,12 +2,12 @@
 // The initial adaptive control space of one face (thesis alg. 3.2, sec. 3.5.1):
 //   1 bounding rectangle of the face in (u, v)
 //   2 a new ACS (CSQuadtree2d)
-//   3 initialized with the surface curvature (eq. 2.35–2.42), or with the uniform size
-//     when --size is given
+//   3 initialized with the surface curvature (eq. 2.35–2.42), or with h_max everywhere
+//     when the curvature is off (--no-curvature)
 //   4 intersected with the user's control spaces: an analytic 2D sizing (analytic models)
-//     and the user's 3D sources restricted to the surface (UserSizing)
+//     and the user's 3D sources, bounded to [h_min, h_max], restricted to the surface
 //   6 updated with the contour curvature of every edge of the face (eq. 2.45–2.46),
-//     probed along the pcurves and inserted as point sources
+//     probed along the pcurves and inserted as point sources (with the curvature on)
 //   7 adapted to the parameterization (3.3.3)
 //   8 smoothed to the gradation ratio γ_M (3.3.4)
 // The later updates of alg. 3.1 (boundary segment lengths, proximity) belong to the

@@ -26,6 +26,21 @@ std::optional<Metric3d> UserSizing::metricAt(const Vec3& x) const {
   return m;
 }
 
+namespace {
+Metric3d boundedMetric(const Metric3d& m, double hmin, double hmax) {
+  MetricAxes<3> ax = m.axes();
+  ax.lengths = ax.lengths.cwiseMax(hmin).cwiseMin(hmax);
+  return Metric3d::fromAxes(ax.directions, ax.lengths);
+}
+}  // namespace
+
+UserSizing UserSizing::bounded(double hmin, double hmax) const {
+  UserSizing out = *this;
+  if (out.global) out.global = boundedMetric(*out.global, hmin, hmax);
+  for (SizingSource& s : out.sources) s.metric = boundedMetric(s.metric, hmin, hmax);
+  return out;
+}
+
 Metric2d restrictToSurface(const Metric3d& m3, const Vec3& pu, const Vec3& pv, const Mat2& mp) {
   Eigen::Matrix<double, 3, 2> j;
   j.col(0) = pu;

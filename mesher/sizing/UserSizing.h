@@ -39,6 +39,9 @@ struct UserSizing {
   /// The intersection of the global metric and of every source containing x (points are
   /// not regions: left out); nothing when none applies at x.
   std::optional<Metric3d> metricAt(const Vec3& x) const;
+  /// The same sizing with every length of every metric bounded to [hmin, hmax] (directions
+  /// kept): h_min and h_max are hard bounds every source respects. 0 < hmin ≤ hmax.
+  UserSizing bounded(double hmin, double hmax) const;
 };
 
 /// The 2D sizing component M_s (acting on S^R, see mesher/metric/SurfaceMetric.h) that a 3D

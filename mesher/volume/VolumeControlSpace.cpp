@@ -194,9 +194,12 @@ std::shared_ptr<ControlSpace3d> buildVolumeControlSpace(const Model& model, cons
   for (std::size_t v = 0; v < blend.size(); ++v)
     if (!blend[v].empty()) cs->insertDiscreteSource(surface.nodes[v], blend[v].result());
 
-  // h_max everywhere (and the user's global metric): folds in the point sources above.
+  // h_max everywhere (and the user's global metric): folds in the point sources above. The
+  // user's metrics are bounded to [h_min, h_max] (SizingParameters: hard bounds).
+  const UserSizing userBounded = user ? user->bounded(hmin, hmax) : UserSizing{};
+  user = &userBounded;
   Metric3d global = Metric3d::isotropic(hmax);
-  if (user && user->global) global = intersect(global, *user->global);
+  if (user->global) global = intersect(global, *user->global);
   cs->setContinuousSource(CSAnalytic3d(box, [global](const Vec3&) { return global; }));
 
   // 3: the user's sources meeting the solid.

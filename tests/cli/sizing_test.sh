@@ -1,6 +1,7 @@
 #!/bin/bash
 # `anisomesh sizing`: the control space of a curved CAD face shows the curvature-driven
-# anisotropic metric (thesis 2.4.2): on the lateral face of a cylinder r = 10 the length
+# anisotropic metric (thesis 2.4.2; at the thesis' γ_c 0.15 and γ_hmax 0.5, given explicitly
+# since the program's defaults are Gmsh-like): on the lateral face of a cylinder r = 10 the length
 # around the axis is γ_c r and the length along it is stretched up to γ_a times that.
 # usage: sizing_test.sh CLI MODELS_DIR
 cli=$1; models=$2
@@ -12,7 +13,7 @@ py() { /usr/bin/python3 -c "$1"; }
 
 # which face of the cylinder is the lateral one: the one with the largest area is not known
 # from ids alone, so find it as the face whose control space is anisotropic
-"$cli" sizing "$models/cylinder.step" -o "$t/all.vtu" 2> "$t/e" || bad "sizing all faces: $(cat "$t/e")"
+"$cli" sizing "$models/cylinder.step" --curvature-ratio 0.15 --hmax-rel 0.5 -o "$t/all.vtu" 2> "$t/e" || bad "sizing all faces: $(cat "$t/e")"
 if py "
 import meshio, numpy as np
 m = meshio.read('$t/all.vtu')
@@ -23,7 +24,7 @@ P = m.points; r = np.hypot(P[:, 0], P[:, 1])
 assert np.all((np.abs(r - 10) < 1e-6) | (np.abs(P[:, 2]) < 1e-6) | (np.abs(P[:, 2] - 40) < 1e-6)), 'points off the surface'
 "; then ok all-faces-3d; else bad "all-faces-3d"; fi
 
-for f in 1 2 3; do "$cli" sizing "$models/cylinder.step" --face $f -o "$t/f$f.vtu" 2> "$t/e" || bad "face $f: $(cat "$t/e")"; done
+for f in 1 2 3; do "$cli" sizing "$models/cylinder.step" --curvature-ratio 0.15 --hmax-rel 0.5 --face $f -o "$t/f$f.vtu" 2> "$t/e" || bad "face $f: $(cat "$t/e")"; done
 if py "
 import meshio, numpy as np
 lat = None

@@ -90,13 +90,24 @@ def inside_polygon(pts, poly):
     return inside
 
 
+THESIS_TABLE = {"--curvature-ratio": "0.15", "--hmax-rel": "0.5"}
+
+
+def thesis_table(opts):
+    """The case's options, with the thesis' table 3.2 for what they leave out (the program's
+    defaults are Gmsh-like: 12 elements per circle, h_max diagonal / 10)."""
+    given = set(opts) | ({"--hmax-rel"} if "--hmax" in opts or "--size" in opts else set())
+    extra = [x for k, v in THESIS_TABLE.items() if k not in given for x in (k, v)]
+    return list(opts) + extra
+
+
 def check(case, tmp):
     why = []
     model = json.load(open(os.path.join(mdir, case["file"] + ".json")))
     out, rep = os.path.join(tmp, case["name"] + ".msh"), os.path.join(tmp, case["name"] + ".json")
     t0 = time.perf_counter()
     p = subprocess.run([cli, "mesh", os.path.join(mdir, case["file"] + ".json"), "-o", out, "--dim", "2",
-                        "--report", rep] + case["opts"], capture_output=True, text=True, timeout=900)
+                        "--report", rep] + thesis_table(case["opts"]), capture_output=True, text=True, timeout=900)
     secs = time.perf_counter() - t0
     if p.returncode != 0 or not os.path.exists(out) or not os.path.exists(rep):
         return [f"exit {p.returncode} {p.stderr.strip()[-200:]}"], f"{case['name']}: failed"

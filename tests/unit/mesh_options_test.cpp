@@ -50,3 +50,26 @@ TEST(MeshOptions, SizesRelativeToModel) {
   EXPECT_EQ(s.check(), "");
   EXPECT_DOUBLE_EQ(s.contourAnisotropyEff(), 1.0);
 }
+
+TEST(MeshOptions, ProgramDefaultsAreGmshLike) {
+  const SizingParameters s = SizingParameters::forAnalysis();
+  EXPECT_EQ(s.check(), "");
+  EXPECT_NEAR(s.curvatureRatio, 2 * std::acos(-1.0) / 12, 1e-15);
+  EXPECT_NEAR(elementsPerCircleForCurvatureRatio(s.curvatureRatio), 12.0, 1e-12);
+  EXPECT_TRUE(s.curvature);
+  EXPECT_DOUBLE_EQ(s.hmaxRel, 0.1);  // Gmsh's default size
+  // everything else is the thesis' table
+  EXPECT_DOUBLE_EQ(s.anisotropy, SizingParameters{}.anisotropy);
+  EXPECT_DOUBLE_EQ(s.hminRel, SizingParameters{}.hminRel);
+}
+
+TEST(MeshOptions, SizeIsTheLargestAndBoundsHmin) {
+  SizingParameters s;
+  s.size = 2.0;
+  EXPECT_DOUBLE_EQ(s.hmaxFor(1000.0), 2.0);  // not the relative 500
+  s.hmin = 3.0;
+  EXPECT_NE(s.check(), "");  // --hmin above --size
+  s.hmin = 0.5;
+  EXPECT_EQ(s.check(), "");
+  EXPECT_DOUBLE_EQ(s.hminFor(1000.0), 0.5);
+}

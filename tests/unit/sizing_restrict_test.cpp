@@ -1,6 +1,7 @@
 // Tests of restrictToSurface (mesher/sizing/UserSizing.h): the 2D sizing a 3D source
 // induces on a surface, including a nearly singular parametrisation.
 #include <gtest/gtest.h>
+#include <cmath>
 
 #include "mesher/sizing/UserSizing.h"
 
@@ -35,4 +36,19 @@ TEST(RestrictToSurface, NearlyParallelDerivativesDoNotThrow) {
   ASSERT_NO_THROW(m = restrictToSurface(Metric3d::isotropic(0.5), pu, pv, Mat2::Identity()));
   const Mat2 t = m.matrix() * m.matrix();
   EXPECT_GT(t.determinant(), 0.0);
+}
+
+TEST(UserSizingBounded, LengthsClampedDirectionsKept) {
+  UserSizing u;
+  u.global = Metric3d::isotropic(100.0);
+  SizingSource s;
+  s.metric = Metric3d::fromDirections(Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), 0.01, 2.0, 50.0);
+  u.sources.push_back(s);
+  const UserSizing b = u.bounded(0.1, 10.0);
+  EXPECT_NEAR(b.global->axes().lengths.maxCoeff(), 10.0, 1e-9);
+  const MetricAxes<3> ax = b.sources[0].metric.axes();
+  EXPECT_NEAR(ax.lengths(0), 0.1, 1e-12);
+  EXPECT_NEAR(ax.lengths(1), 2.0, 1e-9);
+  EXPECT_NEAR(ax.lengths(2), 10.0, 1e-9);
+  EXPECT_NEAR(std::abs(ax.directions.col(0).x()), 1.0, 1e-9);  // the smallest size along x still
 }

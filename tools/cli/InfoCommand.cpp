@@ -1,4 +1,5 @@
 #include <cstdio>
+#include <string>
 
 #include "cad/CadModel.h"
 #include "io/AnalyticModel.h"
@@ -44,6 +45,10 @@ int infoAnalytic(const InfoArgs& args) {
   return 0;
 }
 
+/// The unit of every length of the model (and of the mesh options): OCCT's STEP and IGES
+/// readers convert to millimetres (xstep.cascade.unit, default MM); BREP stores no unit.
+const char* lengthUnit(cad::CadFormat f) { return f == cad::CadFormat::Brep ? "file" : "mm"; }
+
 }  // namespace
 
 int runInfo(const InfoArgs& args) {
@@ -60,6 +65,7 @@ int runInfo(const InfoArgs& args) {
     nlohmann::ordered_json j = summaryJson(asRead);
     j["file"] = args.file;
     j["format"] = cad::formatName(model.format());
+    j["units"] = lengthUnit(model.format());
     nlohmann::ordered_json p = summaryJson(prepared);
     p.update(prepareJson(prep));
     j["prepared"] = p;
@@ -67,8 +73,9 @@ int runInfo(const InfoArgs& args) {
     std::printf("%s\n", j.dump(1).c_str());
     return 0;
   }
-  std::printf("%s (%s)\nas read:\n%s", args.file.c_str(), cad::formatName(model.format()),
-              summaryText(asRead, "  ").c_str());
+  const bool mm = std::string(lengthUnit(model.format())) == "mm";
+  std::printf("%s (%s, lengths in %s)\nas read:\n%s", args.file.c_str(), cad::formatName(model.format()),
+              mm ? "mm: converted from the file's unit" : "the file's unit: BREP stores none", summaryText(asRead, "  ").c_str());
   std::printf("after preparation (fix, sew%s):\n%s", args.fragment ? ", fragment" : "",
               summaryText(prepared, "  ").c_str());
   if (prep.facesSewn) std::printf("  %d loose faces sewn\n", prep.facesSewn);

@@ -16,6 +16,7 @@
 #include "tools/cli/MeshArgsCheck.h"
 #include "tools/cli/RunReport.h"
 #include "tools/cli/RunSummary.h"
+#include "tools/cli/SizingReport.h"
 
 namespace aniso::cli {
 namespace {
@@ -121,6 +122,8 @@ static int meshRun(const MeshArgs& given, io::Report& report) {
 
   const MeshResult result = meshModel(in.model, request);
   fillRunReport(in.model, result, report);
+  report.extra["sizing"] = sizingReport(args.options.sizing, in.model.diagonal(), result.surface.mesh,
+                                        result.volumeRan ? &result.volume.mesh : nullptr);
   if (result.stop == PipelineStop::Model) failRun(args, report, t0, "invalid model topology: ");
   if (!result.meshed()) failRun(args, report, t0);
   io::WriteOptions wopt;

@@ -69,6 +69,7 @@ nlohmann::ordered_json optionsJson(const MeshArgs& a) {
   j["hmax_rel"] = s.hmaxRel;
   j["hmin_rel"] = s.hminRel;
   if (s.size) j["size"] = *s.size;
+  j["curvature"] = s.curvature;
   if (s.hmax) j["hmax"] = *s.hmax;
   if (s.hmin) j["hmin"] = *s.hmin;
   if (!a.options.sizingFile.empty()) j["sizing"] = a.options.sizingFile;

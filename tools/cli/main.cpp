@@ -10,11 +10,18 @@
 #include "mesher/core/Error.h"
 #include "tools/cli/AdaptCommand.h"
 #include "tools/cli/Commands.h"
+#include "tools/cli/HelpFormat.h"
+#include "tools/cli/SizeOptions.h"
 #include "tools/cli/TerminalSink.h"
 
 using namespace aniso;
 
 namespace {
+
+constexpr const char* kOutput = "Output";
+constexpr const char* kModel = "Model preparation";
+constexpr const char* kPerformance = "Time, memory and threads";
+constexpr const char* kMessages = "Messages";
 
 void addOverlapsOption(CLI::App& cmd, cad::OverlapPolicy& p) {
   cmd.add_option("--overlaps", p,
@@ -22,93 +29,139 @@ void addOverlapsOption(CLI::App& cmd, cad::OverlapPolicy& p) {
                  "unfragmented, overlapping meshes) or error (exit 2)")
       ->transform(CLI::CheckedTransformer(std::map<std::string, cad::OverlapPolicy>{
           {"merge", cad::OverlapPolicy::Merge}, {"keep", cad::OverlapPolicy::Keep}, {"error", cad::OverlapPolicy::Error}}))
-      ->default_str("merge");
+      ->option_text("merge|keep|error")
+      ->default_str("merge")
+      ->group(kModel);
 }
 
-void addSizingOptions(CLI::App& cmd, SizingParameters& s) {
-  cmd.add_option("--size", s.size, "Uniform target element size H (model units)");
-  cmd.add_option("--hmax", s.hmax, "Largest element size (model units)");
-  cmd.add_option("--hmin", s.hmin, "Smallest element size (model units)");
-  cmd.add_option("--hmax-rel", s.hmaxRel, "Largest size relative to the model diagonal (γ_hmax)")->capture_default_str();
-  cmd.add_option("--hmin-rel", s.hminRel, "Smallest size relative to the model diagonal (γ_hmin)")->capture_default_str();
-  cmd.add_option("--curvature-ratio", s.curvatureRatio, "Edge length / curvature radius (γ_c)")->capture_default_str();
-  cmd.add_option("--gradation", s.gradation, "Metric gradation ratio (γ_M)")->capture_default_str();
-  cmd.add_option("--anisotropy", s.anisotropy, "Largest element stretch ratio (γ_a); 1 = isotropic")->capture_default_str();
-  cmd.add_option("--contour-anisotropy", s.contourAnisotropy, "Stretch ratio along curved contours (γ_ac)")->capture_default_str();
-}
+/// -v, -q and --progress on the program and on every command (so that each command's help
+/// lists them and they may come before or after the command).
+struct MessageFlags {
+  int verbose = 0;
+  bool quiet = false;
+  bool progress = false;
+  void add(CLI::App& cmd) {
+    cmd.add_flag("-v,--verbose", verbose, "More messages on stderr")->group(kMessages);
+    cmd.add_flag("-q,--quiet", quiet, "Only errors on stderr")->group(kMessages);
+    cmd.add_flag("--progress", progress,
+                 "Progress as lines on stderr even when it is not a terminal (for programs running anisomesh)")
+        ->group(kMessages);
+  }
+};
+
+constexpr const char* kUnits =
+    "Lengths are in model units: millimetres for STEP and IGES (the reader converts the file's unit), the "
+    "file's own unit for BREP and .json models.";
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"anisomesh: anisotropic triangle, quad and tetrahedral meshes of CAD models"};
+  CLI::App app{"anisomesh: triangle, quad and tetrahedral meshes of CAD models (STEP, IGES, BREP)"};
+  app.formatter(std::make_shared<cli::PeopleFormatter>());
   app.set_version_flag("--version", std::string("anisomesh ") + ANISOMESH_VERSION);
   app.require_subcommand(1, 1);
-  int verbose = 0;
-  bool quiet = false;
-  app.add_flag("-v,--verbose", verbose, "More messages on stderr");
-  app.add_flag("-q,--quiet", quiet, "Only errors on stderr");
-  bool progressLines = false;
-  app.add_flag("--progress", progressLines,
-               "Progress as lines on stderr even when it is not a terminal (for programs running anisomesh)");
+  app.footer("Example: anisomesh mesh part.step -o part.inp\n" + std::string(kUnits) +
+             "\nExit codes: 0 ok, 2 bad input or options, 3 meshing failed. Help on a command: anisomesh COMMAND --help");
+  MessageFlags messages;
+  messages.add(app);
 
   cli::InfoArgs info;
   CLI::App* infoCmd = app.add_subcommand("info", "Describe a CAD model: counts, volume, area, solids");
   infoCmd->add_option("FILE", info.file, "STEP, IGES or BREP file")->required();
-  infoCmd->add_flag("--json", info.json, "One JSON object on stdout");
-  infoCmd->add_flag("--faces", info.faces, "Also list every face and edge: id, type, area or length, centroid, solids, part");
-  infoCmd->add_flag("!--no-fragment", info.fragment, "Do not fragment touching solids in the prepared model");
+  infoCmd->add_flag("--json", info.json, "One JSON object on stdout")->group(kOutput);
+  infoCmd->add_flag("--faces", info.faces, "Also list every face and edge: id, type, area or length, centroid, solids, part")
+      ->group(kOutput);
+  infoCmd->add_flag("!--no-fragment", info.fragment, "Do not fragment touching solids in the prepared model")->group(kModel);
   addOverlapsOption(*infoCmd, info.overlaps);
+  messages.add(*infoCmd);
   infoCmd->fallthrough();
 
   cli::MeshArgs mesh;
+  mesh.options.sizing = SizingParameters::forAnalysis();
   CLI::App* meshCmd = app.add_subcommand("mesh", "Mesh a CAD model or a .json analytic model");
+  meshCmd->footer(kUnits);
   meshCmd->add_option("FILE", mesh.file, "STEP, IGES, BREP or .json analytic model")->required();
-  meshCmd->add_option("-o,--output", mesh.output, "Output mesh: .msh .inp .vtu .stl .obj .off .unv")->required();
+  meshCmd->add_option("-o,--output", mesh.output, "Output mesh, format by extension: .msh .inp .vtu .stl .obj .off .unv")
+      ->option_text("FILE")
+      ->required()
+      ->group(kOutput);
   meshCmd->add_option("--dim", mesh.options.dim, "2: surface mesh, 3: volume mesh (default 3 if the model has solids)")
-      ->check(CLI::IsMember({2, 3}));
-  meshCmd->add_option("--order", mesh.options.order, "Element order")->check(CLI::IsMember({1, 2}))->capture_default_str();
-  meshCmd->add_flag("--quad", mesh.options.quad, "Quad-dominant surface mesh");
-  meshCmd->add_option("--quad-method", mesh.options.quadMethod, "--quad conversion: merge, morph or mixed (thesis 4.7)")
+      ->check(CLI::IsMember({2, 3}))
+      ->option_text("2|3")
+      ->group(kOutput);
+  meshCmd->add_option("--order", mesh.options.order, "Element order: 1 linear, 2 quadratic (mid-edge nodes on the CAD)")
+      ->check(CLI::IsMember({1, 2}))
+      ->option_text("1|2")
+      ->default_str("1")
+      ->group(kOutput);
+  meshCmd->add_flag("--quad", mesh.options.quad, "Quad-dominant surface mesh")->group(kOutput);
+  meshCmd->add_option("--quad-method", mesh.options.quadMethod, "How --quad makes quads from triangles (thesis 4.7)")
       ->transform(CLI::CheckedTransformer(std::map<std::string, QuadMethod>{
           {"merge", QuadMethod::Merge}, {"morph", QuadMethod::Morph}, {"mixed", QuadMethod::Mixed}}))
-      ->capture_default_str();
-  addSizingOptions(*meshCmd, mesh.options.sizing);
-  meshCmd->add_option("--sizing", mesh.options.sizingFile, "User sizing sources (JSON)");
-  meshCmd->add_option("--threads", mesh.options.threads, "Threads (0 = all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
+      ->option_text("merge|morph|mixed")
+      ->default_str("merge")
+      ->group(kOutput);
+  meshCmd->add_flag("--binary", mesh.binary, "Binary output where the format has it")->group(kOutput);
+  meshCmd->add_option("--msh-version", mesh.mshVersion, "MSH format version")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, int>{{"4.1", 41}, {"2.2", 22}}))
+      ->option_text("4.1|2.2")
+      ->default_str("4.1")
+      ->group(kOutput);
+  meshCmd->add_option("--report", mesh.report, "Write the JSON run report here")->option_text("FILE")->group(kOutput);
+  cli::SizeOptions meshSize(*meshCmd, mesh.options.sizing, true);
+  meshCmd->add_option("--sizing", mesh.options.sizingFile, "Local sizes: sources in a JSON file (README)")
+      ->option_text("FILE")
+      ->group(cli::kSizeGroup);
+  meshCmd->add_flag("!--no-fragment", mesh.fragment, "Do not make touching solids conformal")->group(kModel);
+  addOverlapsOption(*meshCmd, mesh.overlaps);
+  meshCmd->add_option("--threads", mesh.options.threads, "Threads (0 = all cores)")
+      ->check(CLI::Range(0, 4096))
+      ->option_text("N")
+      ->default_str("0")
+      ->group(kPerformance);
   meshCmd->add_option("--max-elements", mesh.options.maxElements,
                       "Element budget (triangles, plus tets in 3D) checked before meshing; over it the finest sizes are "
                       "coarsened, or the run stops (exit 2). Default: the available memory / bytes per element")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::PositiveNumber)
+      ->option_text("N")
+      ->group(kPerformance);
   meshCmd->add_option("--time-limit", mesh.timeLimit, "Stop after S seconds: status failed, exit 3, no mesh (0 = none)")
-      ->check(CLI::NonNegativeNumber);
-  meshCmd->add_flag("--binary", mesh.binary, "Binary output where the format has it");
-  meshCmd->add_option("--msh-version", mesh.mshVersion, "MSH format version: 4.1 or 2.2")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, int>{{"4.1", 41}, {"2.2", 22}}))
-      ->default_str("4.1");
-  meshCmd->add_flag("!--no-fragment", mesh.fragment, "Do not make touching solids conformal");
-  addOverlapsOption(*meshCmd, mesh.overlaps);
-  meshCmd->add_option("--report", mesh.report, "Write the JSON run report here");
+      ->check(CLI::NonNegativeNumber)
+      ->option_text("S")
+      ->group(kPerformance);
+  messages.add(*meshCmd);
   meshCmd->fallthrough();
 
   cli::SizingArgs sizing;
-  CLI::App* sizingCmd = app.add_subcommand("sizing", "Write the initial control space (the metric field) as VTU");
+  sizing.params = SizingParameters::forAnalysis();
+  CLI::App* sizingCmd = app.add_subcommand("sizing", "Write the initial size field (the metric) as VTU, to see the sizes");
+  sizingCmd->footer(kUnits);
   sizingCmd->add_option("FILE", sizing.file, "STEP, IGES, BREP or .json analytic model")->required();
-  sizingCmd->add_option("-o,--output", sizing.output, "Output .vtu file")->required();
-  sizingCmd->add_option("--face", sizing.face, "Only this face (1-based), in its parametric plane")->check(CLI::PositiveNumber);
-  addSizingOptions(*sizingCmd, sizing.params);
-  sizingCmd->add_option("--sizing", sizing.sizingFile, "User sizing sources (JSON)");
-  sizingCmd->add_flag("!--no-fragment", sizing.fragment, "Do not make touching solids conformal");
+  sizingCmd->add_option("-o,--output", sizing.output, "Output .vtu file")->option_text("FILE")->required()->group(kOutput);
+  sizingCmd->add_option("--face", sizing.face, "Only this face (1-based), in its parametric plane")
+      ->check(CLI::PositiveNumber)
+      ->option_text("N")
+      ->group(kOutput);
+  cli::SizeOptions sizingSize(*sizingCmd, sizing.params, false);
+  sizingCmd->add_option("--sizing", sizing.sizingFile, "Local sizes: sources in a JSON file (README)")
+      ->option_text("FILE")
+      ->group(cli::kSizeGroup);
+  sizingCmd->add_flag("!--no-fragment", sizing.fragment, "Do not make touching solids conformal")->group(kModel);
+  messages.add(*sizingCmd);
   sizingCmd->fallthrough();
 
   cli::CheckArgs check;
   CLI::App* checkCmd = app.add_subcommand("check", "Check a mesh file: counts, closed/manifold/oriented, inverted elements, quality");
   checkCmd->add_option("MESH", check.file, "MSH, INP, VTU, STL, OBJ or OFF file")->required();
-  checkCmd->add_flag("--json", check.json, "One JSON object on stdout");
+  checkCmd->add_flag("--json", check.json, "One JSON object on stdout")->group(kOutput);
+  messages.add(*checkCmd);
   checkCmd->fallthrough();
 
   cli::AdaptArgs adapt;
   CLI::App* adaptCmd = cli::addAdaptCommand(app, adapt);
-  addSizingOptions(*adaptCmd, adapt.mesh.options.sizing);
+  // adapt keeps the thesis' sizing table: the field's metric decides the sizes
+  cli::SizeOptions adaptSize(*adaptCmd, adapt.mesh.options.sizing, false);
+  messages.add(*adaptCmd);
 
   // CLI11 reports an unknown command as a missing one: name it instead.
   if (argc > 1 && argv[1][0] != '-' &&
@@ -120,12 +173,18 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
-    std::fprintf(stderr, "anisomesh: %s (see anisomesh --help)\n", e.what());
+    const std::string unknown = cli::unknownOptionMessage(app, argc, argv);
+    const std::string command = argc > 1 && argv[1][0] != '-' ? std::string(argv[1]) + " " : std::string();
+    std::fprintf(stderr, "anisomesh: %s (see anisomesh %s--help)\n", unknown.empty() ? e.what() : unknown.c_str(),
+                 command.c_str());
     return 2;
   }
-  setLogSink(std::make_shared<cli::TerminalSink>(quiet ? -1 : verbose, progressLines));
+  setLogSink(std::make_shared<cli::TerminalSink>(messages.quiet ? -1 : messages.verbose, messages.progress));
 
   try {
+    if (meshCmd->parsed()) meshSize.resolve();
+    if (sizingCmd->parsed()) sizingSize.resolve();
+    if (adaptCmd->parsed()) adaptSize.resolve();
     if (infoCmd->parsed()) return cli::runInfo(info);
     if (meshCmd->parsed()) {
       mesh.anisotropyGiven = meshCmd->count("--anisotropy") > 0;

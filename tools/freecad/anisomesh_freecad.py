@@ -86,7 +86,7 @@ def options_from_settings(s):
     elif s.get("dim"):
         args += ["--dim", str(int(s["dim"]))]
     for key, flag in (("anisotropy", "--anisotropy"), ("curvature_ratio", "--curvature-ratio"),
-                      ("gradation", "--gradation")):
+                      ("elements_per_circle", "--elements-per-circle"), ("gradation", "--gradation")):
         if s.get(key):
             args += [flag, repr(float(s[key]))]
     return args
@@ -270,14 +270,15 @@ def run_gui():
     order = QtGui.QComboBox()
     order.addItems(["1 (linear)", "2 (quadratic)"])
     quad = QtGui.QCheckBox("quad-dominant surface mesh")
-    aniso = spin(5.0, 1.0, 100.0, 0.5, 2)
-    curv = spin(0.15, 0.01, 1.0, 0.01, 3)
+    # the CLI's defaults (README, "Element size"): isotropic tets, 12 elements per circle
+    aniso = spin(1.0, 1.0, 100.0, 0.5, 2)
+    curv = spin(12, 4, 200, 1, 0)
     grad = spin(4.0, 1.1, 100.0, 0.5, 2)
     form.addRow("Largest size (hmax)", hmax)
     form.addRow("Element order", order)
     form.addRow("", quad)
-    form.addRow("Anisotropy", aniso)
-    form.addRow("Curvature ratio", curv)
+    form.addRow("Largest stretch (1 = isotropic)", aniso)
+    form.addRow("Elements per circle", curv)
     form.addRow("Gradation", grad)
     bar = QtGui.QProgressBar()
     bar.setRange(0, 100)
@@ -325,7 +326,7 @@ def run_gui():
 
     def start():
         settings = {"hmax": hmax.value() or None, "order": order.currentIndex() + 1, "quad": quad.isChecked(),
-                    "anisotropy": aniso.value(), "curvature_ratio": curv.value(), "gradation": grad.value()}
+                    "anisotropy": aniso.value(), "elements_per_circle": curv.value(), "gradation": grad.value()}
         try:
             folder = tempfile.mkdtemp(prefix="anisomesh-")
             state["folder"] = folder
