@@ -81,6 +81,9 @@ struct PrepareReport {
   int sharedFaces = 0;                              ///< faces used by two solids after fragmenting
   double fuzzyValue = 0;                            ///< the general fuse's fuzzy value (model units)
   std::vector<Overlap> overlaps;                    ///< pairs of overlapping solids, by (a, b)
+  /// Solids (1-based, as prepared) left out of the fragmenting because the fuse failed on
+  /// them: meshed on their own, not conformal with the parts they touch.
+  std::vector<int> unfusedSolids;
   std::vector<std::string> warnings;
 };
 

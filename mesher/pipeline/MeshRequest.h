@@ -10,11 +10,19 @@
 namespace aniso {
 
 struct MeshRequest {
-  MeshOptions options;  ///< options.dim 0: 3 when the model has solids, else 2
+  /// The program's defaults (the sizing of SizingParameters::forAnalysis(), as the CLI);
+  /// options.dim 0: 3 when the model has solids, else 2.
+  MeshOptions options = programDefaults();
   UserSizing user;      ///< the user's 3D sources (--sizing); empty: none
   /// The 2D sizing of a single-face analytic model over its (u, v) domain; null: none.
   /// Not owned; must outlive the call.
   const ControlSpace2d* analytic = nullptr;
+
+  static MeshOptions programDefaults() {
+    MeshOptions o;
+    o.sizing = SizingParameters::forAnalysis();
+    return o;
+  }
 };
 
 /// The dimension a request meshes in: options.dim, or 3 when it is 0 and the model has solids.

@@ -35,18 +35,20 @@ struct BothRuns {
 
 /// Meshes `model` through the library and through the CLI (`dim`, defaults otherwise) and
 /// compares the two .msh files.
-BothRuns meshBoth(const std::string& path, int dim) {
+BothRuns meshBoth(const std::string& path, int dim, bool thesisTable = false) {
   const fs::path dir = fs::temp_directory_path() / ("pipeline_cli_" + fs::path(path).stem().string() + "_" + std::to_string(dim));
   fs::create_directories(dir);
   const fs::path cliOut = dir / "cli.msh", libOut = dir / "lib.msh";
   const std::string cmd = std::string(ANISOMESH_CLI) + " mesh '" + path + "' -o '" + cliOut.string() + "' --dim " +
-                          std::to_string(dim) + " --max-elements 1e8 > /dev/null 2>&1";
+                          std::to_string(dim) + " --max-elements 1e8" +
+                          (thesisTable ? " --hmax-rel 0.5 --curvature-ratio 0.15" : "") + " > /dev/null 2>&1";
   EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
 
   cad::CadModel cad = cad::CadModel::read(path);
   cad.prepare({});
   const Model model = cad.topology();
   MeshRequest request;
+  if (thesisTable) request.options.sizing = SizingParameters{};  // the thesis' table 5.2 sizing
   request.options.dim = dim;
   request.options.maxElements = kBudget;
   if (dim == 3) request.options.sizing.anisotropy = 1;  // the CLI's volume default (MeshArgs::anisotropyGiven)
@@ -79,7 +81,7 @@ TEST(PipelineCli, SurfaceOfBracketIsTheCliMesh) {
 }
 
 TEST(PipelineCli, ProximityRoundIsTheCliMesh) {
-  const BothRuns r = meshBoth(kModels + "periodic_u_cst.step", 3);
+  const BothRuns r = meshBoth(kModels + "periodic_u_cst.step", 3, true);
   EXPECT_TRUE(r.sameAsCli);
   EXPECT_EQ(r.result.proximity.rounds, 1);  // the round is the point of this case
   bool kept = false;
@@ -88,7 +90,7 @@ TEST(PipelineCli, ProximityRoundIsTheCliMesh) {
 }
 
 TEST(PipelineCli, CoarseSolidRetryIsTheCliMesh) {
-  const BothRuns r = meshBoth(kOwn + "blocks2.step", 3);
+  const BothRuns r = meshBoth(kOwn + "blocks2.step", 3, true);
   EXPECT_TRUE(r.sameAsCli);
   EXPECT_EQ(r.result.coarse.solids, 2);
   EXPECT_TRUE(r.result.coarse.refinedKept);

@@ -103,6 +103,7 @@ static int meshRun(const MeshArgs& given, io::Report& report) {
   checkCancel(args.options.cancel.get(), "reading");
   report.times = in.times;
   report.extra["model"] = in.summary;
+  report.problems.insert(report.problems.end(), in.problems.begin(), in.problems.end());
   if (args.extraSizing) report.extra["adapt"] = args.extraSizing(in.model, request.user);
   const int dim = args.options.dim == 0 ? defaultDimension(args, in.solids) : resolvedDim(args.options, in.solids > 0);
   if (dim == 3 && in.solids == 0)

@@ -46,6 +46,14 @@ ModelInput loadModel(const std::string& file, bool fragment, cad::OverlapPolicy 
   t = Clock::now();
   in.model = model.topology();
   in.times.emplace_back("topology", since(t));
+  for (const int id : prep.unfusedSolids) {
+    const std::string part =
+        id >= 1 && id <= static_cast<int>(in.model.solids.size()) ? in.model.solids[id - 1].name : std::string();
+    in.problems.push_back({EntityRef{EntityKind::Solid, id, part}, Severity::Degraded, "not-fragmented",
+                           "the fuse with the other parts failed on it: meshed on its own, not conformal with the "
+                           "parts it touches",
+                           "prepare"});
+  }
   return in;
 }
 

@@ -10,6 +10,7 @@
 #include "io/AnalyticModel.h"
 #include "mesher/control/ControlSpace2d.h"
 #include "mesher/core/Cancel.h"
+#include "mesher/core/Problem.h"
 #include "mesher/model/Model.h"
 
 namespace aniso::cli {
@@ -21,6 +22,8 @@ struct ModelInput {
   std::optional<io::AnalyticSizing> analyticSizing;  ///< analytic models only
   nlohmann::ordered_json summary;                    ///< for the report's "model"
   std::vector<std::pair<std::string, double>> times; ///< read, prepare, topology
+  /// Shortcomings of the preparation, graded (a solid left unfragmented: degraded).
+  std::vector<Problem> problems;
 };
 
 /// Reads and prepares `file` (fragmenting the solids if `fragment`, overlapping ones by

@@ -36,6 +36,7 @@ nlohmann::ordered_json prepareJson(const cad::PrepareReport& r) {
     ov.push_back(e);
   }
   j["overlaps"] = ov;
+  j["unfused_solids"] = r.unfusedSolids;
   j["warnings"] = r.warnings;
   return j;
 }
