@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # usage: tools/run.sh [MODEL] [anisomesh mesh options]
 # Installs what is missing (apt-get), builds Release, meshes MODEL (default: the bracket in
-# models/) and prints the report.
+# models/) and prints the run's summary (the JSON report is written beside the mesh).
 set -uo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 "$here/tools/setup.sh" || exit 1
@@ -11,8 +11,7 @@ model=${1:-$here/models/bracket.step}
 out=${ANISOMESH_OUT:-$here/build/out}
 mkdir -p "$out"
 name=$(basename "$model"); name=${name%.*}
-"$here/build/anisomesh" info "$model"
 "$here/build/anisomesh" mesh "$model" -o "$out/$name.msh" --report "$out/$name.report.json" "$@"
 rc=$?
-[ -f "$out/$name.report.json" ] && cat "$out/$name.report.json"
+[ -f "$out/$name.report.json" ] && echo "report: $out/$name.report.json" >&2
 exit $rc
