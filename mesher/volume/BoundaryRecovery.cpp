@@ -206,10 +206,12 @@ class Recovery {
 
   void pipeRound(RecoveryStats& s) {
     for (const int e : missingEdges_) {
+      checkCancel(opt_.cancel, "boundary recovery");
       const auto& ed = bt_.boundary.edges[e];
       volume::reduceEdgePipe(mesh_, ed[0], ed[1], guard_, opt_.maxChangesPerEntity, s.flips);
     }
     for (const int f : missingFaces_) {
+      checkCancel(opt_.cancel, "boundary recovery");
       const auto& t = bt_.boundary.triangles[f];
       if (!edgesPresent(t)) continue;
       if (volume::reduceFacePipe(mesh_, t[0], t[1], t[2], guard_, opt_.maxChangesPerEntity, s.flips)) {
@@ -221,8 +223,14 @@ class Recovery {
 
   void cavityRound(RecoveryStats& s) {
     if (!cavity_) cavity_ = std::make_unique<volume::CavityRecovery>(bt_);
-    for (const int f : missingFaces_) s.steinerPoints += cavity_->recoverTriangle(f);
-    for (const int e : missingEdges_) s.steinerPoints += cavity_->recoverEdge(e);
+    for (const int f : missingFaces_) {
+      checkCancel(opt_.cancel, "boundary recovery");
+      s.steinerPoints += cavity_->recoverTriangle(f);
+    }
+    for (const int e : missingEdges_) {
+      checkCancel(opt_.cancel, "boundary recovery");
+      s.steinerPoints += cavity_->recoverEdge(e);
+    }
   }
 
   BoundaryTriangulation& bt_;

@@ -16,11 +16,21 @@ namespace {
 
 /// Bound on the face flips tried in the lookahead per step (the region can be large).
 constexpr std::size_t kMaxLookaheadFaces = 256;
+/// Bound on the changes tried (applied, measured, undone) for one entity: a step's lookahead
+/// tries up to kMaxLookaheadFaces face flips, each followed by every single change of the
+/// new pipe, and in a nearly degenerate region every trial runs exact arithmetic. Without
+/// it one edge of a real assembly (Push_SMD_6.2x6.2mm) held the recovery for minutes; the
+/// entity is then left to the Steiner points of the next phase.
+constexpr std::uint64_t kMaxTrialsPerEntity = 50000;
 
 class Reducer {
  public:
   Reducer(TetMesh& mesh, std::function<void(Pipe&)> measure, const EdgeGuard& guard, FlipCounters& counters)
-      : mesh_(mesh), measure_(std::move(measure)), guard_(guard), counters_(counters) {}
+      : mesh_(mesh), measure_(std::move(measure)), guard_(guard), counters_(counters),
+        budgetEnd_(counters.tried + kMaxTrialsPerEntity) {}
+
+  /// The entity's trials are spent (kMaxTrialsPerEntity).
+  bool exhausted() const { return counters_.tried >= budgetEnd_; }
 
   /// One kept change (or two with lookahead) lowering the weight; false when none helps.
   bool step() {
@@ -36,6 +46,7 @@ class Reducer {
     // Lookahead: a face flip in the region, then any single change.
     std::size_t tried = 0;
     for (const TetId t : pipe.tets) {
+      if (exhausted()) return false;
       for (int f = 0; f < 4 && tried < kMaxLookaheadFaces; ++f) {
         if (!mesh_.isAlive(t)) break;
         del3d::Flip23Plan fp;
@@ -99,6 +110,7 @@ class Reducer {
   std::function<void(Pipe&)> measure_;
   const EdgeGuard& guard_;
   FlipCounters& counters_;
+  std::uint64_t budgetEnd_;
 };
 
 }  // namespace
@@ -108,7 +120,7 @@ bool reduceEdgePipe(TetMesh& mesh, VertexId a, VertexId b, const EdgeGuard& guar
   std::vector<TetId> star;
   if (findEdge(mesh, a, b, star).valid()) return true;
   Reducer r(mesh, [&](Pipe& p) { segmentPipe(mesh, a, b, p); }, guard, counters);
-  for (int k = 0; k < maxChanges; ++k) {
+  for (int k = 0; k < maxChanges && !r.exhausted(); ++k) {
     if (!r.step()) break;
     if (findEdge(mesh, a, b, star).valid()) return true;
   }
@@ -120,7 +132,7 @@ bool reduceFacePipe(TetMesh& mesh, VertexId a, VertexId b, VertexId c, const Edg
   std::vector<TetId> star;
   if (findFace(mesh, a, b, c, star).valid()) return true;
   Reducer r(mesh, [&](Pipe& p) { trianglePipe(mesh, a, b, c, p); }, guard, counters);
-  for (int k = 0; k < maxChanges; ++k) {
+  for (int k = 0; k < maxChanges && !r.exhausted(); ++k) {
     if (!r.step()) break;
     if (findFace(mesh, a, b, c, star).valid()) return true;
   }

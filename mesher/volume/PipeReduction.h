@@ -5,7 +5,8 @@
 // protected boundary edges), applied tentatively, and kept only if it lowers the pipe's
 // weight (Pipe::weight); otherwise it is undone. When no single flip helps, a face flip
 // followed by an edge removal is tried (two-step lookahead). The weight strictly decreases
-// with every kept change, so the process ends; `maxChanges` bounds it further.
+// with every kept change, so the process ends; `maxChanges` bounds it further, and so does
+// a budget of trials per entity (PipeReduction.cpp: kMaxTrialsPerEntity).
 #include <cstdint>
 #include <functional>
 
