@@ -306,6 +306,23 @@ EdgeDiscretization twinNodes(const Model& model, int e, int a, bool reversed, co
   return d;
 }
 
+/// Edge e on its twin's nodes (CoincidentEdges.h) or, for an edge without a twin or one
+/// whose curve cannot take its twin's nodes in order (a parameterization running back and
+/// forth), on its own nodes at `t`.
+EdgeDiscretization placeTwinOrOwn(const Model& model, int e, const contour::EdgeTwins& twins,
+                                  const std::vector<EdgeDiscretization>& done, std::vector<double> t,
+                                  const std::vector<int>& vertexNodes, SurfaceMesh& mesh) {
+  const int a = twins.of[e];
+  if (a >= 0) {
+    try {
+      return twinNodes(model, e, a, twins.reversed[e], done[a], mesh);
+    } catch (const MeshingError&) {
+      // its own nodes below
+    }
+  }
+  return placeNodes(model, e, std::move(t), vertexNodes, mesh);
+}
+
 }  // namespace
 
 std::vector<EdgeDiscretization> discretizeEdges(const Model& model,
@@ -362,8 +379,7 @@ std::vector<EdgeDiscretization> discretizeEdges(const Model& model,
   for (int e = 0; e < ne; ++e) {
     if (!used[e]) continue;
     try {
-      out[e] = twins.of[e] >= 0 ? twinNodes(model, e, twins.of[e], twins.reversed[e], out[twins.of[e]], mesh)
-                                : placeNodes(model, e, std::move(params[e]), vertexNodes, mesh);
+      out[e] = placeTwinOrOwn(model, e, twins, out, std::move(params[e]), vertexNodes, mesh);
     } catch (const MeshingError& err) {
       throw EntityError(EntityKind::Edge, e, err.what());
     }
