@@ -33,6 +33,17 @@ void fixShape(CadModel::Impl& impl, double diag, PrepareReport& report) {
         if (!impl.nameIndex.IsBound(ik)) impl.nameIndex.Bind(ik, name);
       }
     }
+    // A solid the fixer rebuilt without recording it at the solid level (only its faces
+    // are in the context) keeps its place: with as many solids as before, the i-th fixed
+    // solid still unnamed takes the i-th original's name.
+    TopTools_IndexedMapOfShape fixedSolids;
+    TopExp::MapShapes(fixed, TopAbs_SOLID, fixedSolids);
+    if (fixedSolids.Extent() == solids.Extent())
+      for (int i = 1; i <= solids.Extent(); ++i) {
+        const TopoDS_Shape key = solids(i).Located(TopLoc_Location());
+        const TopoDS_Shape fk = fixedSolids(i).Located(TopLoc_Location());
+        if (impl.nameIndex.IsBound(key) && !impl.nameIndex.IsBound(fk)) impl.nameIndex.Bind(fk, impl.nameIndex.Find(key));
+      }
     impl.shape = fixed;
   } catch (const Standard_Failure& e) {
     report.warnings.push_back(std::string("shape fixing failed (") + e.GetMessageString() +
