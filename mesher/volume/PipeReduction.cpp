@@ -19,8 +19,9 @@ constexpr std::size_t kMaxLookaheadFaces = 256;
 /// Bound on the changes tried (applied, measured, undone) for one entity: a step's lookahead
 /// tries up to kMaxLookaheadFaces face flips, each followed by every single change of the
 /// new pipe, and in a nearly degenerate region every trial runs exact arithmetic. Without
-/// it one edge of a real assembly (Push_SMD_6.2x6.2mm) held the recovery for minutes; the
-/// entity is then left to the Steiner points of the next phase.
+/// it a real assembly (Push_SMD_6.2x6.2mm) spent minutes in pipe reduction (every gdb
+/// sample over a minute in Reducer::step); an entity over budget is left to the Steiner
+/// points of the next phase.
 constexpr std::uint64_t kMaxTrialsPerEntity = 50000;
 
 class Reducer {

@@ -19,7 +19,8 @@ constexpr double kAngleMoveScoreKeep = 0.5;
 /// best position, its radius doubled after a gain (at most the shortest edge) and halved
 /// otherwise, for at most this many steps or until it falls below kAngleSearchMinRadius ×
 /// the shortest edge. Measured on a real assembly (GNSS antenna, a sliver on a curved face
-/// at an interface): the fixed candidates left 1.9°, the search found 3.9° 0.01 mm away.
+/// at an interface): the fixed candidates left 1.9° (a random search of that star found
+/// 3.9° 0.01 mm away); with this search the whole mesh's smallest angle became 4.98°.
 constexpr int kAngleSearchSteps = 24;
 constexpr double kAngleSearchMinRadius = 1e-3;
 }  // namespace
@@ -218,26 +219,22 @@ bool VertexMover::relocate(del3d::VertexId v, bool angles) {
   const Vec3 apex = worstApex(v);
   consider(apex);
   consider(0.5 * (q + apex));
-  for (const double r : kPerturbRadii)
+  // the 26 directions of the cube around c, at distance `radius`
+  auto around = [&](const Vec3 c, double radius) {  // c by value: consider() moves bestP
     for (int dx = -1; dx <= 1; ++dx)
       for (int dy = -1; dy <= 1; ++dy)
         for (int dz = -1; dz <= 1; ++dz) {
           if (dx == 0 && dy == 0 && dz == 0) continue;
           const Vec3 d(dx, dy, dz);
-          consider(q + (r * shortest / d.norm()) * d);
+          consider(c + (radius / d.norm()) * d);
         }
+  };
+  for (const double r : kPerturbRadii) around(q, r * shortest);
   if (angles) {
     double r = kPerturbRadii[0] * shortest;
     for (int step = 0; step < kAngleSearchSteps && r > kAngleSearchMinRadius * shortest; ++step) {
-      const Vec3 c = bestP;
       const double before = best;
-      for (int dx = -1; dx <= 1; ++dx)
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dz = -1; dz <= 1; ++dz) {
-            if (dx == 0 && dy == 0 && dz == 0) continue;
-            const Vec3 d(dx, dy, dz);
-            consider(c + (r / d.norm()) * d);
-          }
+      around(bestP, r);
       r = best > before ? std::min(2 * r, shortest) : 0.5 * r;
     }
   }
