@@ -26,6 +26,8 @@
 
 #include <BRepBndLib.hxx>
 #include <BRepClass3d.hxx>
+#include <BRepGProp.hxx>
+#include <GProp_GProps.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
@@ -302,6 +304,13 @@ void buildSolid(const ShapeMaps& maps, int si, Model& model,
     }
   }
   ms.outerShell = indexIn(maps.shells, outer, "shell");
+  try {
+    GProp_GProps g;
+    BRepGProp::VolumeProperties(solid, g);
+    ms.cadVolume = g.Mass() > 0 ? g.Mass() : 0;
+  } catch (const Standard_Failure&) {
+    ms.cadVolume = 0;  // not known
+  }
   for (const TopoDS_Shape& s : shells)
     if (!s.IsSame(outer)) ms.voidShells.push_back(indexIn(maps.shells, s, "shell"));
 }

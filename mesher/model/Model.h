@@ -82,6 +82,7 @@ struct ModelSolid {
   std::string name;            ///< STEP part name, or "SOLID<n>"
   int outerShell = -1;
   std::vector<int> voidShells; ///< inner shells bounding cavities
+  double cadVolume = 0;        ///< the CAD kernel's volume of the solid; 0 when not known
 };
 
 /// One finding of Model::check(), on the entity (kind, 0-based index) it concerns.

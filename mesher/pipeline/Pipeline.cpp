@@ -3,6 +3,7 @@
 #include <chrono>
 #include <string>
 
+#include "mesher/pipeline/MeshGrade.h"
 #include "mesher/pipeline/RunProblems.h"
 #include "mesher/pipeline/SurfaceStage.h"
 #include "mesher/pipeline/VolumeStages.h"
@@ -82,6 +83,7 @@ MeshResult meshModel(const Model& model, const MeshRequest& request) {
       r.stop = PipelineStop::Volume;
       return r;
     }
+    append(r.problems, gradeVolumeMesh(model, r.volume, request.options.sizing.anisotropy <= 1));
   }
   // stage 4: order 2
   if (request.options.order == 2) {
