@@ -180,7 +180,7 @@ void assembleParts(CadModel::Impl& impl, const Arguments& args, const Fuse& f,
       keepsRegion = keepsRegion || r > 0;
       pieces.Append(f.images[i](k));
     }
-    const TopTools_ListOfShape solids = keepsRegion ? mergePieces(pieces) : pieces;
+    const TopTools_ListOfShape solids = keepsRegion ? mergePieces(pieces, solidVolume(args.solids(i))) : pieces;
     if (keepsRegion && solids.Extent() > 1)
       report.warnings.push_back(impl.solidName(args.solids(i), i) + " (solid " + std::to_string(i) +
                                 ") is " + std::to_string(solids.Extent()) + " solids after fragmenting");

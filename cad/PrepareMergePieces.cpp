@@ -35,7 +35,7 @@ double solidVolume(const TopoDS_Shape& solid) {
   }
 }
 
-TopTools_ListOfShape mergePieces(const TopTools_ListOfShape& pieces) {
+TopTools_ListOfShape mergePieces(const TopTools_ListOfShape& pieces, double partVolume) {
   if (pieces.Extent() < 2) return pieces;
   // A face bounding two of the pieces is inside the part: dropped. The others keep their
   // orientation in their piece, and their TShape (shared with the neighbouring parts).
@@ -56,7 +56,8 @@ TopTools_ListOfShape mergePieces(const TopTools_ListOfShape& pieces) {
     builder.Perform();
     const double before = volumeOfList(pieces), after = volumeOfList(builder.Areas());
     if (builder.HasErrors() || builder.HasWarnings() || builder.Areas().IsEmpty()) return pieces;
-    if (std::abs(after - before) > kMergeVolumeRel * std::abs(before)) return pieces;
+    const double slack = kMergeVolumeRel * std::abs(before);
+    if (std::abs(after - before) > slack && std::abs(after - partVolume) > slack) return pieces;
     return builder.Areas();
   } catch (const Standard_Failure&) {
     return pieces;
