@@ -65,6 +65,36 @@ void writeFaceNodeSets(std::ostream& o, const OutputMesh& m) {
   }
 }
 
+/// *NSET EDGE<n> for every model edge with nodes: the nodes on its curve and at its two
+/// vertices (a shell's edge clamped by name: *BOUNDARY, EDGE3, 1, 6). An edge that took
+/// its coincident twin's nodes (surface/contour/CoincidentEdges.h) has only its vertices.
+void writeEdgeNodeSets(std::ostream& o, const OutputMesh& m) {
+  const std::size_t nEdges = m.model.edges.size();
+  std::vector<std::vector<long long>> edgeNodes(nEdges), vertexNodes(m.model.vertices.size());
+  const std::vector<NodeOn>& on = m.surface.nodeOn;
+  for (std::size_t i = 0; i < on.size() && i < m.nodes().size(); ++i) {
+    const auto id = static_cast<long long>(i) + 1;
+    if (on[i].kind == NodeOn::Kind::Edge && on[i].entity >= 0 && static_cast<std::size_t>(on[i].entity) < nEdges)
+      edgeNodes[static_cast<std::size_t>(on[i].entity)].push_back(id);
+    else if (on[i].kind == NodeOn::Kind::Vertex && on[i].entity >= 0 &&
+             static_cast<std::size_t>(on[i].entity) < vertexNodes.size())
+      vertexNodes[static_cast<std::size_t>(on[i].entity)].push_back(id);
+  }
+  for (std::size_t e = 0; e < nEdges; ++e) {
+    const ModelEdge& me = m.model.edges[e];
+    if (me.degenerate) continue;
+    std::vector<long long>& ids = edgeNodes[e];
+    for (const int v : {me.v0, me.v1})
+      if (v >= 0 && static_cast<std::size_t>(v) < vertexNodes.size())
+        ids.insert(ids.end(), vertexNodes[static_cast<std::size_t>(v)].begin(), vertexNodes[static_cast<std::size_t>(v)].end());
+    if (ids.size() < 2) continue;
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    o << "*NSET, NSET=EDGE" << e + 1 << '\n';
+    writeIdList(o, ids);
+  }
+}
+
 struct TripleHash {
   std::size_t operator()(const std::array<int, 3>& t) const {
     std::size_t h = static_cast<std::size_t>(t[0]);
@@ -124,6 +154,7 @@ void writeInp(const OutputMesh& m, const std::string& path) {
     for (size_t s = 0; s < tets.size(); ++s) writeElementBlock(o, m, Shape::Tet, tets[s], type, names[s], next, tetIds);
     if (next > 1) o << "*ELSET, ELSET=EALL, GENERATE\n1, " << next - 1 << ", 1\n";
     writeFaceNodeSets(o, m);
+    writeEdgeNodeSets(o, m);
     writeFaceSurfaces(o, m, tetIds);
   } else {
     // Surface mesh: shell elements, an element set per face.
@@ -146,6 +177,7 @@ void writeInp(const OutputMesh& m, const std::string& path) {
     }
     if (next > 1) o << "*ELSET, ELSET=EALL, GENERATE\n1, " << next - 1 << ", 1\n";
     writeFaceNodeSets(o, m);
+    writeEdgeNodeSets(o, m);
   }
   file.commit();
 }

@@ -10,7 +10,8 @@ deterministic, so every file holds the same mesh) and checks:
     the same node and element counts in all, physical groups FACE1..FACE<n> and, in 3D, one
     named volume per solid;
   - meshio reads the INP, VTU (ASCII and base64), MSH, STL, OBJ and OFF with those counts;
-  - the INP has an element set per face (2D) or per solid (3D) and a node set per face;
+  - the INP has an element set per face (2D) or per solid (3D), a node set per face and
+    one per CAD edge whose nodes lie on that edge (inside its bounding box);
   - with --order 2, Gmsh (MSH 4.1, 2.2, UNV) and meshio (VTU) find the same numbers of
     quadratic elements;
   - in 2D, quad-dominant meshes (--quad, linear and --order 2): the same quads and triangles
@@ -102,6 +103,20 @@ for model, faces, solids in (("plate.step", 7, ["PLATE"]), ("assembly2.step", 12
             esets = sorted(k for k in m.cell_sets if k != "EALL")
             want_sets = sorted(solids) if dim == 3 else sorted(f"FACE{i}" for i in range(1, faces + 1))
             check(f"meshio {os.path.basename(f)} element sets", esets == want_sets, f"{esets}")
+            # a node set per CAD edge, its nodes on that edge (inside its bounding box)
+            info = subprocess.run([cli, "info", os.path.join(models, model), "--faces", "--json"],
+                                  capture_output=True, text=True, timeout=600)
+            edges = json.loads(info.stdout)["edge_list"] if info.returncode == 0 else []
+            esets_n = sorted(k for k in m.point_sets if k.startswith("EDGE"))
+            check(f"meshio {os.path.basename(f)} edge node sets", edges and esets_n == sorted(f"EDGE{e['id']}" for e in edges),
+                  f"{len(esets_n)} sets for {len(edges)} edges")
+            off = []
+            for e in edges:
+                ids = m.point_sets.get(f"EDGE{e['id']}", [])
+                lo, hi = e["bbox"]["min"], e["bbox"]["max"]
+                if len(ids) < 2 or any(not all(lo[k] - 1e-6 <= m.points[i][k] <= hi[k] + 1e-6 for k in range(3)) for i in ids):
+                    off.append(e["id"])
+            check(f"meshio {os.path.basename(f)} edge node sets on their edges", not off, f"edges {off[:5]}")
 
     # Quadratic: the same mesh elevated (--order 2) keeps its element counts.
     quad_files = []
