@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <set>
 #include <string>
 
 #include "mesher/highorder/CurvedVolume.h"
+#include "mesher/volume/TetQuality.h"
 
 namespace aniso {
 namespace {
@@ -16,6 +18,54 @@ std::string format(const char* fmt, double a, double b = 0, double c = 0) {
 }
 
 EntityRef solidRef(const Model& model, std::size_t s) { return EntityRef::solid(static_cast<int>(s), model.solids[s].name); }
+
+/// The CAD faces a node lies on: its face, the faces of its edge, or of the edges at its vertex.
+void facesOfNode(const Model& model, const NodeOn& on, std::set<int>& out) {
+  const auto in = [](int i, std::size_t n) { return i >= 0 && static_cast<std::size_t>(i) < n; };
+  if (on.kind == NodeOn::Kind::Face && in(on.entity, model.faces.size())) out.insert(on.entity);
+  if (on.kind == NodeOn::Kind::Edge && in(on.entity, model.edges.size()))
+    out.insert(model.edges[static_cast<std::size_t>(on.entity)].faces.begin(),
+               model.edges[static_cast<std::size_t>(on.entity)].faces.end());
+  if (on.kind == NodeOn::Kind::Vertex)
+    for (const ModelEdge& e : model.edges)
+      if (e.v0 == on.entity || e.v1 == on.entity) out.insert(e.faces.begin(), e.faces.end());
+}
+
+/// Where solid s's flattest tetrahedron is and the CAD faces its nodes lie on: ", the
+/// flattest at (x, y, z) by faces 12, 43" (the faces whose surface mesh forces it, when the
+/// sliver cannot be removed without changing the surface).
+std::string flattestSliver(const Model& model, const VolumeMesh& mesh, std::size_t s) {
+  const std::vector<Vec3>& x = mesh.nodes();
+  double worst = 180;
+  std::size_t at = mesh.tets.size();
+  for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
+    if (static_cast<std::size_t>(mesh.tetSolid[t]) != s) continue;
+    const auto& k = mesh.tets[t];
+    const double d = refereeMinDihedral(x[k[0]], x[k[1]], x[k[2]], x[k[3]]);
+    if (d < worst) {
+      worst = d;
+      at = t;
+    }
+  }
+  if (at == mesh.tets.size()) return "";
+  const auto& k = mesh.tets[at];
+  const Vec3 c = 0.25 * (x[k[0]] + x[k[1]] + x[k[2]] + x[k[3]]);
+  std::set<int> faces;
+  for (const int n : k)
+    if (static_cast<std::size_t>(n) < mesh.surface.nodeOn.size()) facesOfNode(model, mesh.surface.nodeOn[n], faces);
+  std::string where = format(", the flattest at (%.6g, %.6g, %.6g)", c.x(), c.y(), c.z());
+  if (faces.empty()) return where + ", inside the solid";
+  where += faces.size() > 1 ? " by faces " : " by face ";
+  int shown = 0;
+  for (const int f : faces) {
+    if (shown++ == 4) {
+      where += ", ...";
+      break;
+    }
+    where += (shown > 1 ? ", " : "") + std::to_string(f + 1);
+  }
+  return where;
+}
 
 }  // namespace
 
@@ -30,7 +80,8 @@ std::vector<Problem> gradeVolumeMesh(const Model& model, const VolumeMeshResult&
     if (o.quality.refereeMinDihedral < kSliverBarDeg)
       out.push_back({solidRef(model, s), Severity::Degraded, "slivers",
                      format("its smallest dihedral angle is %.2f deg (bar: %.0f deg); %.0f tetrahedra are below 5 deg",
-                            o.quality.refereeMinDihedral, kSliverBarDeg, static_cast<double>(o.quality.belowDihedral)),
+                            o.quality.refereeMinDihedral, kSliverBarDeg, static_cast<double>(o.quality.belowDihedral)) +
+                         flattestSliver(model, volume.mesh, s),
                      "quality"});
     const double cad = model.solids[s].cadVolume;
     if (cad > 0 && std::abs(o.volume - cad) > kVolumeMismatchRel * cad) {

@@ -3,7 +3,8 @@
 // ../shared/tools/meshq.py) holds it to, each shortcoming a Degraded problem naming the
 // solid and its part (phase "quality"), so that a run is never "ok" with a mesh those bars
 // reject:
-//   "slivers"         a tetrahedron with a dihedral angle below kSliverBarDeg;
+//   "slivers"         a tetrahedron with a dihedral angle below kSliverBarDeg (the detail
+//                     says where the flattest is and the CAD faces its nodes lie on);
 //   "low-quality"     the mean ratio averaged over all tetrahedra below kMeanRatioBar
 //                     (isotropic meshes only: an anisotropic mesh is stretched on purpose);
 //   "volume-mismatch" the solid's mesh, its boundary bent onto the CAD (CurvedVolume.h),
