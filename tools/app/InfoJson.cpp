@@ -34,20 +34,26 @@ nlohmann::ordered_json analyticJson(const std::string& file) {
 
 const char* lengthUnit(cad::CadFormat f) { return f == cad::CadFormat::Brep ? "file" : "mm"; }
 
-nlohmann::ordered_json infoJson(const InfoRequest& r) {
-  if (io::isAnalyticModelPath(r.file)) return analyticJson(r.file);
-  cad::CadModel model = cad::CadModel::read(r.file);
-  const cad::ShapeSummary asRead = model.summary();
+InfoModel readInfoModel(const InfoRequest& r) {
+  InfoModel m{cad::CadModel::read(r.file), {}, {}};
+  m.asRead = m.model.summary();
   cad::PrepareOptions popt;
   popt.fragment = r.fragment;
   popt.overlaps = r.overlaps;
-  const cad::PrepareReport prep = model.prepare(popt);
-  nlohmann::ordered_json j = summaryJson(asRead);
+  m.prepare = m.model.prepare(popt);
+  return m;
+}
+
+nlohmann::ordered_json infoJson(const InfoRequest& r) {
+  if (io::isAnalyticModelPath(r.file)) return analyticJson(r.file);
+  const InfoModel m = readInfoModel(r);
+  const cad::CadModel& model = m.model;
+  nlohmann::ordered_json j = summaryJson(m.asRead);
   j["file"] = r.file;
   j["format"] = cad::formatName(model.format());
   j["units"] = lengthUnit(model.format());
   nlohmann::ordered_json p = summaryJson(model.summary());
-  p.update(prepareJson(prep));
+  p.update(prepareJson(m.prepare));
   j["prepared"] = p;
   if (r.faces) j.update(catalogJson(cad::faceCatalog(model)));  // ids of the prepared model
   return j;

@@ -19,6 +19,14 @@ struct InfoRequest {
   cad::OverlapPolicy overlaps = cad::OverlapPolicy::Merge;
 };
 
+/// A CAD file read (its summary as read) and prepared as `info` does it.
+struct InfoModel {
+  cad::CadModel model;
+  cad::ShapeSummary asRead;
+  cad::PrepareReport prepare;
+};
+InfoModel readInfoModel(const InfoRequest& request);
+
 nlohmann::ordered_json infoJson(const InfoRequest& request);
 
 /// The unit of every length of the model (and of the mesh options): OCCT's STEP and IGES

@@ -35,12 +35,10 @@ int runInfo(const InfoArgs& args) {
     return 0;
   }
   if (io::isAnalyticModelPath(args.file)) return infoAnalytic(args);
-  cad::CadModel model = cad::CadModel::read(args.file);
-  const cad::ShapeSummary asRead = model.summary();
-  cad::PrepareOptions popt;
-  popt.fragment = args.fragment;
-  popt.overlaps = args.overlaps;
-  const cad::PrepareReport prep = model.prepare(popt);
+  const app::InfoModel m = app::readInfoModel({args.file, args.faces, args.fragment, args.overlaps});
+  const cad::CadModel& model = m.model;
+  const cad::ShapeSummary& asRead = m.asRead;
+  const cad::PrepareReport& prep = m.prepare;
   const cad::ShapeSummary prepared = model.summary();
 
   const bool mm = std::string(app::lengthUnit(model.format())) == "mm";
