@@ -10,6 +10,7 @@ pkgs=(
   libeigen3-dev libopenmesh-dev libgtest-dev libbenchmark-dev libcli11-dev
   nlohmann-json3-dev libmuparser-dev libtbb-dev zlib1g-dev
   gmsh python3-gmsh python3-meshio python3-numpy calculix-ccx python3-vtk9
+  pybind11-dev python3-dev
 )
 if [ "${1:-}" = "--with-freecad" ]; then pkgs+=(freecad-python3); fi
 missing=()

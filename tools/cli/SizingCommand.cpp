@@ -14,7 +14,7 @@
 #include "mesher/core/FileExtension.h"
 #include "mesher/sizing/FaceControlSpace.h"
 #include "tools/cli/Commands.h"
-#include "tools/cli/ModelInput.h"
+#include "tools/app/ModelInput.h"
 
 namespace aniso::cli {
 namespace {
@@ -63,13 +63,13 @@ int runSizing(const SizingArgs& args) {
   const std::string bad = args.params.check();
   if (!bad.empty()) throw InputError(args.file + ": " + bad);
   const UserSizing user = args.sizingFile.empty() ? UserSizing{} : io::readSizingFile(args.sizingFile);
-  const ModelInput in = loadModel(args.file, args.fragment);
+  const app::ModelInput in = app::loadModel(args.file, args.fragment);
   const int nf = static_cast<int>(in.model.faces.size());
   if (nf == 0) throw InputError(args.file + ": the model has no faces");
   if (args.face != 0 && (args.face < 1 || args.face > nf))
     throw InputError(args.file + ": --face " + std::to_string(args.face) + " out of range (the model has " +
                      std::to_string(nf) + " faces)");
-  const std::unique_ptr<ControlSpace2d> analytic = analyticControlSpace(in);
+  const std::unique_ptr<ControlSpace2d> analytic = app::analyticControlSpace(in);
 
   FaceSizingInput fin;
   fin.model = &in.model;

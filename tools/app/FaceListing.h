@@ -7,7 +7,7 @@
 
 #include "cad/FaceCatalog.h"
 
-namespace aniso::cli {
+namespace aniso::app {
 
 /// {"face_list": [{"id", "type", "area", "centroid": [x,y,z], "bbox": {"min","max"},
 ///   "solids": [...], "part"}], "edge_list": [{"id", "type", "length", "centroid", "bbox",
@@ -17,4 +17,4 @@ nlohmann::ordered_json catalogJson(const cad::FaceCatalog& c);
 /// One line per face, then per edge: id, type, area or length, centroid, solids, part.
 std::string catalogText(const cad::FaceCatalog& c);
 
-}  // namespace aniso::cli
+}  // namespace aniso::app

@@ -1,4 +1,4 @@
-#include "tools/cli/BudgetReport.h"
+#include "tools/app/BudgetReport.h"
 
 #include <unistd.h>
 
@@ -8,7 +8,7 @@
 #include "mesher/core/Log.h"
 #include "mesher/sizing/SurfaceBudget.h"
 
-namespace aniso::cli {
+namespace aniso::app {
 
 double availableMemoryBytes() {
   std::ifstream in("/proc/meminfo");
@@ -36,4 +36,4 @@ void reportBudget(const ElementBudget& b, io::Report& report) {
   if (!b.coarsened.empty()) logWarning(budgetWarning(b));
 }
 
-}  // namespace aniso::cli
+}  // namespace aniso::app

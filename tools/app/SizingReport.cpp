@@ -1,6 +1,6 @@
-#include "tools/cli/SizingReport.h"
+#include "tools/app/SizingReport.h"
 
-namespace aniso::cli {
+namespace aniso::app {
 namespace {
 
 nlohmann::ordered_json lengths(const EdgeLengthRange& r) {
@@ -24,4 +24,4 @@ nlohmann::ordered_json sizingReport(const SizingParameters& p, double modelDiago
   return j;
 }
 
-}  // namespace aniso::cli
+}  // namespace aniso::app

@@ -1,8 +1,8 @@
-#include "tools/cli/ModelJson.h"
+#include "tools/app/ModelJson.h"
 
 #include <sstream>
 
-namespace aniso::cli {
+namespace aniso::app {
 
 nlohmann::ordered_json summaryJson(const cad::ShapeSummary& s) {
   nlohmann::ordered_json j;
@@ -66,4 +66,4 @@ std::string overlapsText(const cad::PrepareReport& r, const std::string& in) {
   return o.str();
 }
 
-}  // namespace aniso::cli
+}  // namespace aniso::app

@@ -6,7 +6,7 @@
 
 #include "cad/CadModel.h"
 
-namespace aniso::cli {
+namespace aniso::app {
 
 /// {"solids","shells","faces","edges","vertices","volume","area","bbox":{...},"solid_list":[...]}
 nlohmann::ordered_json summaryJson(const cad::ShapeSummary& s);
@@ -18,4 +18,4 @@ std::string summaryText(const cad::ShapeSummary& s, const std::string& indent);
 /// One line per overlapping pair: ids, names, volume, the part that keeps the region.
 std::string overlapsText(const cad::PrepareReport& r, const std::string& indent);
 
-}  // namespace aniso::cli
+}  // namespace aniso::app

@@ -7,10 +7,10 @@
 #include "mesher/core/MeshOptions.h"
 #include "mesher/volume/EdgeLengths.h"
 
-namespace aniso::cli {
+namespace aniso::app {
 
 /// `volume` null for a surface mesh.
 nlohmann::ordered_json sizingReport(const SizingParameters& p, double modelDiagonal, const SurfaceMesh& surface,
                                     const VolumeMesh* volume);
 
-}  // namespace aniso::cli
+}  // namespace aniso::app

@@ -7,13 +7,13 @@
 #include "io/Report.h"
 #include "mesher/model/Model.h"
 #include "mesher/pipeline/MeshResult.h"
-#include "tools/cli/Commands.h"
+#include "tools/app/MeshArgs.h"
 
-namespace aniso::cli {
+namespace aniso::app {
 
 /// The report's "options": the arguments as given (dim and anisotropy before resolution).
 nlohmann::ordered_json optionsJson(const MeshArgs& args);
 
 void fillRunReport(const Model& model, const MeshResult& result, io::Report& report);
 
-}  // namespace aniso::cli
+}  // namespace aniso::app

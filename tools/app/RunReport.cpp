@@ -1,11 +1,11 @@
-#include "tools/cli/RunReport.h"
+#include "tools/app/RunReport.h"
 
 #include "io/ElementQuality.h"
 #include "mesher/quad/QuadQuality.h"
-#include "tools/cli/BudgetReport.h"
-#include "tools/cli/VolumeReport.h"
+#include "tools/app/BudgetReport.h"
+#include "tools/app/VolumeReport.h"
 
-namespace aniso::cli {
+namespace aniso::app {
 namespace {
 
 nlohmann::ordered_json stats(const QualityStats& s) {
@@ -112,4 +112,4 @@ void fillRunReport(const Model& model, const MeshResult& r, io::Report& report) 
   report.extra["stages"] = stages;
 }
 
-}  // namespace aniso::cli
+}  // namespace aniso::app

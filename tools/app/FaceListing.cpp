@@ -1,9 +1,9 @@
-#include "tools/cli/FaceListing.h"
+#include "tools/app/FaceListing.h"
 
 #include <cmath>
 #include <cstdio>
 
-namespace aniso::cli {
+namespace aniso::app {
 namespace {
 
 using json = nlohmann::ordered_json;
@@ -62,4 +62,4 @@ std::string catalogText(const cad::FaceCatalog& c) {
   return s;
 }
 
-}  // namespace aniso::cli
+}  // namespace aniso::app

@@ -7,8 +7,8 @@
 #include "mesher/model/Model.h"
 #include "mesher/volume/VolumeMesher.h"
 
-namespace aniso::cli {
+namespace aniso::app {
 
 void fillVolumeReport(const Model& model, const VolumeMeshResult& vr, io::Report& report);
 
-}  // namespace aniso::cli
+}  // namespace aniso::app

@@ -1,11 +1,11 @@
-#include "tools/cli/MeshArgsCheck.h"
+#include "tools/app/MeshArgsCheck.h"
 
 #include <filesystem>
 
 #include "mesher/core/Error.h"
 #include "mesher/core/Log.h"
 
-namespace aniso::cli {
+namespace aniso::app {
 
 void checkMeshArguments(const MeshArgs& a) {
   std::error_code ec;
@@ -24,4 +24,4 @@ int defaultDimension(const MeshArgs& a, int solids) {
   return 2;
 }
 
-}  // namespace aniso::cli
+}  // namespace aniso::app

@@ -1,9 +1,9 @@
-#include "tools/cli/VolumeReport.h"
+#include "tools/app/VolumeReport.h"
 
 #include "io/ElementQuality.h"
 #include "mesher/volume/VolumeControlSpace.h"
 
-namespace aniso::cli {
+namespace aniso::app {
 
 namespace {
 
@@ -78,4 +78,4 @@ void fillVolumeReport(const Model& model, const VolumeMeshResult& vr, io::Report
   report.extra["solids"] = solids;
 }
 
-}  // namespace aniso::cli
+}  // namespace aniso::app

@@ -1,4 +1,4 @@
-#include "tools/cli/ModelInput.h"
+#include "tools/app/ModelInput.h"
 
 #include <chrono>
 #include <memory>
@@ -6,9 +6,9 @@
 #include "cad/CadModel.h"
 #include "mesher/control/CSAnalytic2d.h"
 #include "mesher/core/Log.h"
-#include "tools/cli/ModelJson.h"
+#include "tools/app/ModelJson.h"
 
-namespace aniso::cli {
+namespace aniso::app {
 
 ModelInput loadModel(const std::string& file, bool fragment, cad::OverlapPolicy overlaps, const CancelToken* cancel) {
   using Clock = std::chrono::steady_clock;
@@ -64,4 +64,4 @@ std::unique_ptr<ControlSpace2d> analyticControlSpace(const ModelInput& in) {
   return std::make_unique<CSAnalytic2d>(f.uvBounds, s.angle, s.h1, s.h2);
 }
 
-}  // namespace aniso::cli
+}  // namespace aniso::app

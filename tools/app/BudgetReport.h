@@ -5,7 +5,7 @@
 #include "io/Report.h"
 #include "mesher/sizing/ElementBudget.h"
 
-namespace aniso::cli {
+namespace aniso::app {
 
 /// MemAvailable of /proc/meminfo; else the free physical pages (sysconf); 0 when unknown.
 double availableMemoryBytes();
@@ -17,4 +17,4 @@ double elementBudget(double given, int dim);
 /// coarsened_faces: [1-based ids]}; a warning line when faces were coarsened.
 void reportBudget(const ElementBudget& budget, io::Report& report);
 
-}  // namespace aniso::cli
+}  // namespace aniso::app

@@ -13,7 +13,7 @@
 #include "mesher/core/Problem.h"
 #include "mesher/model/Model.h"
 
-namespace aniso::cli {
+namespace aniso::app {
 
 struct ModelInput {
   Model model;
@@ -35,4 +35,4 @@ ModelInput loadModel(const std::string& file, bool fragment,
 /// The analytic sizing of an analytic model as a control space over its (u, v) domain.
 std::unique_ptr<ControlSpace2d> analyticControlSpace(const ModelInput& in);
 
-}  // namespace aniso::cli
+}  // namespace aniso::app

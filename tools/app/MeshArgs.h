@@ -1,0 +1,38 @@
+#pragma once
+// MeshArgs — a mesh run as a program asks for it (the CLI's `mesh` command, the Python
+// module): the model file, the options as given, where the mesh and the report go.
+// MeshRun.h turns it into meshModel's request with the program's defaults.
+#include <functional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "cad/CadModel.h"
+#include "mesher/core/MeshOptions.h"
+#include "mesher/model/Model.h"
+#include "mesher/sizing/UserSizing.h"
+
+namespace aniso::app {
+
+struct MeshArgs {
+  std::string file;
+  std::string output;
+  std::string report;
+  bool binary = false;
+  int mshVersion = 41;  ///< MSH output: 41 or 22 (--msh-version 4.1 | 2.2)
+  bool fragment = true;
+  cad::OverlapPolicy overlaps = cad::OverlapPolicy::Merge;  ///< --overlaps
+  MeshOptions options;
+  /// --anisotropy was given. Without it a volume mesh (dim 3) is isotropic (γ_a = 1): the
+  /// tetrahedra on a stretched boundary triangle are stretched too, and FE solvers want
+  /// tetrahedra well shaped in space; surface meshes keep the thesis' default γ_a = 5.
+  bool anisotropyGiven = false;
+  /// --time-limit S: the run stops (status failed, exit 3, no mesh) after S seconds; 0 = none.
+  double timeLimit = 0;
+  /// Called once the model is read, before meshing: adds to the user's sizing (the adapt
+  /// command's metric as point sources); its result goes to the report's "adapt" block.
+  /// May throw InputError.
+  std::function<nlohmann::json(const Model&, UserSizing&)> extraSizing;
+};
+
+}  // namespace aniso::app
