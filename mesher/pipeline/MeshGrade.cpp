@@ -6,6 +6,7 @@
 #include <string>
 
 #include "mesher/highorder/CurvedVolume.h"
+#include "mesher/pipeline/RunProblems.h"
 #include "mesher/volume/TetQuality.h"
 
 namespace aniso {
@@ -68,6 +69,23 @@ std::string flattestSliver(const Model& model, const VolumeMesh& mesh, std::size
 }
 
 }  // namespace
+
+std::vector<Problem> gradeSurfaceGeometry(const Model& model, const SurfaceGeometryCheck& check) {
+  std::vector<Problem> out;
+  const std::vector<std::string> parts = facePartNames(model);
+  const auto part = [&](int f) { return f >= 0 && static_cast<std::size_t>(f) < parts.size() ? parts[f] : std::string(); };
+  for (const auto& [f, n] : check.foldedFaces)
+    out.push_back({EntityRef::face(f, part(f)), Severity::Degraded, "surface-fold",
+                   format("its surface mesh folds over at %.0f edges (neighbouring triangles more than 84 deg apart)", n),
+                   "surface"});
+  for (const auto& [f, n] : check.flatFaces)
+    out.push_back({EntityRef::face(f, part(f)), Severity::Degraded, "flat-triangles",
+                   format("%.0f of its triangles are flat (no area a solver can use)", n), "surface"});
+  for (const auto& [s, n] : check.openSolids)
+    out.push_back({solidRef(model, static_cast<std::size_t>(s)), Severity::Degraded, "surface-open",
+                   format("its boundary mesh is open at %.0f edges", static_cast<double>(n)), "surface"});
+  return out;
+}
 
 std::vector<Problem> gradeVolumeMesh(const Model& model, const VolumeMeshResult& volume, bool isotropic) {
   std::vector<Problem> out;

@@ -15,6 +15,7 @@
 
 #include "mesher/core/Problem.h"
 #include "mesher/model/Model.h"
+#include "mesher/volume/SurfaceGeometry.h"
 #include "mesher/volume/VolumeMesher.h"
 
 namespace aniso {
@@ -25,6 +26,11 @@ inline constexpr double kSliverBarDeg = 2.0;
 inline constexpr double kMeanRatioBar = 0.80;
 /// Largest relative difference between a solid's (curved) mesh volume and its CAD volume.
 inline constexpr double kVolumeMismatchRel = 0.01;
+
+/// The surface's geometric shortcomings (SurfaceGeometry.h) as Degraded problems (phase
+/// "surface"): "surface-fold" per face whose mesh folds over, "flat-triangles" per face with
+/// flat triangles, "surface-open" per solid whose closed shells' mesh has open edges.
+std::vector<Problem> gradeSurfaceGeometry(const Model& model, const SurfaceGeometryCheck& check);
 
 /// The problems of volume.mesh (the solids meshed, their quality in volume.solids).
 std::vector<Problem> gradeVolumeMesh(const Model& model, const VolumeMeshResult& volume, bool isotropic);

@@ -70,6 +70,7 @@ MeshResult meshModel(const Model& model, const MeshRequest& request) {
   }
   append(r.problems, surfaceProblems(model, r.surface));
   r.surfaceCheck = checkSurfaceGeometry(model, r.surface.mesh);
+  append(r.problems, gradeSurfaceGeometry(model, r.surfaceCheck));
   const SurfaceRepairStats& rep = r.surfaceRepair;
   std::string findings;
   for (const std::string& m : r.surfaceCheck.messages()) findings += (findings.empty() ? "" : ", ") + m;

@@ -42,15 +42,24 @@ std::vector<std::string> SurfaceGeometryCheck::messages() const {
 
 SurfaceGeometryCheck checkSurfaceGeometry(const Model& model, const SurfaceMesh& mesh) {
   SurfaceGeometryCheck c;
-  c.foldedEdges = countFoldedEdges(mesh);
+  c.foldedFaces = foldedEdgesByFace(mesh);
+  for (const auto& [f, n] : c.foldedFaces) c.foldedEdges += n;
   std::vector<std::vector<int>> byFace(model.faces.size());
+  std::map<int, int> flatByFace;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    c.flatTriangles += flat(mesh, mesh.triangles[t]);
     const int f = mesh.triangleFace[t];
+    if (flat(mesh, mesh.triangles[t])) {
+      ++c.flatTriangles;
+      ++flatByFace[f];
+    }
     if (f >= 0 && static_cast<std::size_t>(f) < byFace.size()) byFace[f].push_back(static_cast<int>(t));
   }
+  c.flatFaces.assign(flatByFace.begin(), flatByFace.end());
   for (std::size_t s = 0; s < model.solids.size(); ++s)
-    c.openEdges += openEdgesOfSolid(model, byFace, mesh, static_cast<int>(s));
+    if (const long long n = openEdgesOfSolid(model, byFace, mesh, static_cast<int>(s)); n > 0) {
+      c.openEdges += n;
+      c.openSolids.push_back({static_cast<int>(s), n});
+    }
   return c;
 }
 

@@ -7,6 +7,7 @@
 // closed: the triangles of every solid whose faces all have triangles use each edge an
 // even number of times (a face its shells list twice counts twice).
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "mesher/model/Model.h"
@@ -22,6 +23,9 @@ struct SurfaceGeometryCheck {
   int foldedEdges = 0;
   int flatTriangles = 0;
   long long openEdges = 0;  ///< edges of closed solids' shells used an odd number of times
+  std::vector<std::pair<int, int>> foldedFaces;  ///< (0-based face, folded edges), by face
+  std::vector<std::pair<int, int>> flatFaces;    ///< (0-based face, flat triangles), by face
+  std::vector<std::pair<int, long long>> openSolids;  ///< (0-based solid, open edges), by solid
   bool ok() const { return foldedEdges == 0 && flatTriangles == 0 && openEdges == 0; }
   /// One line per kind of finding; empty when ok().
   std::vector<std::string> messages() const;

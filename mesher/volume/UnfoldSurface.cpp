@@ -211,11 +211,18 @@ int repairRegions(const SurfaceMesh& mesh, std::vector<Tri>& tris, std::vector<i
 
 }  // namespace
 
-int countFoldedEdges(const SurfaceMesh& mesh) {
+std::vector<std::pair<int, int>> foldedEdgesByFace(const SurfaceMesh& mesh) {
   std::map<int, std::vector<Tri>> byFace;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) byFace[mesh.triangleFace[t]].push_back(mesh.triangles[t]);
+  std::vector<std::pair<int, int>> out;
+  for (auto& [f, tris] : byFace)
+    if (const int n = FaceTriangles(mesh, std::move(tris)).countFolded(); n > 0) out.push_back({f, n});
+  return out;
+}
+
+int countFoldedEdges(const SurfaceMesh& mesh) {
   int n = 0;
-  for (auto& [f, tris] : byFace) n += FaceTriangles(mesh, std::move(tris)).countFolded();
+  for (const auto& [f, k] : foldedEdgesByFace(mesh)) n += k;
   return n;
 }
 

@@ -37,5 +37,7 @@ UnfoldStats unfoldSurface(SurfaceMesh& mesh);
 
 /// Number of folded edges (see above) of the mesh's triangles.
 int countFoldedEdges(const SurfaceMesh& mesh);
+/// The same per face: (0-based face, folded edges) for every face that has some, by face.
+std::vector<std::pair<int, int>> foldedEdgesByFace(const SurfaceMesh& mesh);
 
 }  // namespace aniso
