@@ -67,7 +67,7 @@ void addGapSources(const CSAdaptive2d& cs, const BoundarySegments& bs, const Bou
 }  // namespace
 
 double faceMinSize(double width, const BoundaryUpdateOptions& o) {
-  if (!(width < o.thinFaceWidth * o.hMin)) return o.hMin;
+  if (!o.thinFaces || !(width < o.thinFaceWidth * o.hMin)) return o.hMin;
   const double floor = std::min(o.hMin, std::max(o.thinFaceRatio * o.hMin, kToleranceFactor * o.cadTolerance));
   return std::clamp(width, floor, o.hMin);
 }

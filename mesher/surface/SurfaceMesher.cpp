@@ -152,6 +152,8 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
   // without a floor, tiny CAD edges and sliver faces would drive the edge discretization
   // down to round-off (measured: boundary nodes 1e-7 apart, unrecoverable edges on part.step).
   const double hMin = in.options.sizing.hminFor(model.diagonal());
+  // a volume mesh: no thin face gets its own h_min (BoundaryUpdate.h)
+  const bool volume = in.options.dim == 3 || (in.options.dim == 0 && !model.solids.empty());
   constexpr int kRounds = 3;
   std::vector<EdgeDiscretization> edges;
   std::vector<FaceBoundary> boundaries(nf);
@@ -177,6 +179,7 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
           BoundaryUpdateOptions bopt;
           bopt.hMin = hMin;
           bopt.cadTolerance = model.faces[f].tolerance;
+          bopt.thinFaces = !volume;
           const BoundaryUpdateStats u = updateFromBoundary(*spaces[f], boundaries[f], in.options.sizing, bopt);
           if (u.total() == 0) return;
           logDebug("face " + std::to_string(f + 1) + " boundary sizing: " + std::to_string(u.shortSegments) +

@@ -65,7 +65,7 @@ class SliverPass {
       if (removed_[t]) continue;
       for (int k = 0; k < 3 && !removed_[t]; ++k) {
         const int a = m_.triangles[t][k], c = m_.triangles[t][(k + 1) % 3];
-        if ((m_.nodes[a] - m_.nodes[c]).norm() <= tol_ && merge(a, c)) changed = true;
+        if ((m_.nodes[a] - m_.nodes[c]).norm() <= localTolerance(edgeSize(a, c)) && merge(a, c)) changed = true;
       }
       if (removed_[t]) continue;
       const int k = capVertex(m_.triangles[t]);
@@ -81,6 +81,23 @@ class SliverPass {
   }
 
   int capVertex(const Tri& t) const { return capCorner(m_, t); }
+
+  double longestEdge(const Tri& t) const {
+    double l = 0;
+    for (int k = 0; k < 3; ++k) l = std::max(l, (m_.nodes[t[k]] - m_.nodes[t[(k + 1) % 3]]).norm());
+    return l;
+  }
+
+  /// The local size at the edge (a, b): the smallest longest edge of its triangles.
+  double edgeSize(int a, int b) const {
+    double size = 1e300;
+    if (const std::vector<int>* u = uses(a, b))
+      for (const int t : *u) size = std::min(size, longestEdge(m_.triangles[t]));
+    return size;
+  }
+
+  /// How far the surface may move at a triangle whose longest edge is `size` (header).
+  double localTolerance(double size) const { return std::max(tol_, kLocalSliverRatio * size); }
 
   double minAngle(const Tri& t) const {
     double best = 1e300;
@@ -196,7 +213,7 @@ bool SliverPass::flip(int t, int k) {
   // nearer the CAD surface than the old one
   const Vec3 nu = normal(U);
   if (!(nu.norm() > 0)) return false;
-  if (std::abs(nu.dot(m_.nodes[c] - m_.nodes[a])) > tol_ * nu.norm()) {
+  if (std::abs(nu.dot(m_.nodes[c] - m_.nodes[a])) > localTolerance((m_.nodes[a] - m_.nodes[b]).norm()) * nu.norm()) {
     const int f = m_.triangleFace[u];
     if (!geo_ || m_.triangleFace[t] != f || !(deviation(c, d, f) < deviation(a, b, f))) return false;
   }
@@ -252,8 +269,11 @@ SurfaceSliverStats mendSurfaceSlivers(SurfaceMesh& mesh, double tolerance, const
   // Nothing a pass would act on (no edge within the tolerance, no cap: the common case):
   // done, without the pass's adjacency and the CAD geometry.
   const auto actsOn = [&](const Tri& t) {
+    double longest = 0;
+    for (int k = 0; k < 3; ++k) longest = std::max(longest, (mesh.nodes[t[k]] - mesh.nodes[t[(k + 1) % 3]]).norm());
     for (int k = 0; k < 3; ++k)
-      if ((mesh.nodes[t[k]] - mesh.nodes[t[(k + 1) % 3]]).norm() <= tolerance) return true;
+      if ((mesh.nodes[t[k]] - mesh.nodes[t[(k + 1) % 3]]).norm() <= std::max(tolerance, kLocalSliverRatio * longest))
+        return true;
     return capCorner(mesh, t) >= 0;
   };
   if (std::none_of(mesh.triangles.begin(), mesh.triangles.end(), actsOn)) return stats;

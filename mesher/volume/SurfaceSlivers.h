@@ -12,9 +12,14 @@
 // meshed with caps (a node of one edge between two nodes of the other) and with node pairs
 // a few micrometres apart.
 //
-// Two operations, each checked before the change, within `tolerance` (a geometric
-// tolerance: the surface moves by at most that much):
-//  1 merge: an edge (a, c) shorter than `tolerance` is collapsed — c's triangles take a,
+// Two operations, each checked before the change, within the local tolerance: the larger
+// of `tolerance` (a geometric tolerance) and kLocalSliverRatio times the local size (for a
+// merge the smaller longest edge of the two triangles on the edge, for a cap flip the
+// cap's edge (a, b)) — the surface moves by at most
+// that much. The local part removes what the CAD forces below the local size, which no
+// tet on it survives: a face a few micrometres wide between two edges (a step left by
+// merged overlapping parts) meshed with 0.1 mm triangles is all caps.
+//  1 merge: an edge (a, c) shorter than the local tolerance is collapsed — c's triangles take a,
 //    the two triangles on (a, c) vanish. The node kept is the more constrained one (CAD
 //    vertex, then edge, then face node; then the lower index); a CAD vertex node is never
 //    removed. Legal when every edge at c is used by exactly two triangles (no assembly
@@ -25,7 +30,7 @@
 //    (a, b) is used by exactly one other triangle (a, b, d), is replaced with (a, b, d) by
 //    (a, c, d) and (c, b, d), both on d's face — the edge flip of the quad; across a CAD
 //    edge this moves the cap's node c onto the edge's discretisation. Legal when c lies
-//    within `tolerance` of the plane of (a, b, d) (the surface does not move by more) or,
+//    within the local tolerance of the plane of (a, b, d) (the surface does not move by more) or,
 //    with a model and both triangles on one face, when the new edge (c, d) lies nearer the
 //    CAD surface than (a, b) (their midpoints against MidEdgeGeometry's mid nodes: a cap
 //    spanning a pole chord across the face — wing_fuselage's nose, a face triangle lying in
@@ -47,6 +52,10 @@ namespace aniso {
 
 /// Angle (degrees) above which a triangle is a cap.
 inline constexpr double kCapAngleDeg = 150.0;
+/// The local part of the tolerance: this fraction of the local size (see above). An edge
+/// this much shorter than its triangle, or a cap this flat, is not the surface mesher's
+/// choice but the CAD's (a short CAD edge, a narrow face).
+inline constexpr double kLocalSliverRatio = 0.05;
 /// A cap flip may turn the normal of the triangle it splits by at most this (degrees).
 inline constexpr double kCapFlipTurnDeg = 30.0;
 inline constexpr int kMaxSliverPasses = 32;

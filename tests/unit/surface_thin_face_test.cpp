@@ -116,6 +116,10 @@ TEST(SurfaceThinFace, FaceMinSizePolicy) {
   EXPECT_EQ(faceMinSize(1e-6, o), 5e-4);     // and by 10 × the CAD tolerance
   o.cadTolerance = 1;
   EXPECT_EQ(faceMinSize(1e-6, o), 1e-3);     // never above h_min
+  o.cadTolerance = 0;
+  o.thinFaces = false;                        // a volume mesh: h_min for every face
+  EXPECT_EQ(faceMinSize(3.8e-4, o), 1e-3);
+  EXPECT_EQ(faceMinSize(1e-6, o), 1e-3);
 }
 
 TEST(SurfaceThinFace, UpdateRefinesAThinStripToItsWidth) {

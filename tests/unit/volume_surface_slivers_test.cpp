@@ -6,6 +6,8 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <map>
 #include <utility>
 #include <vector>
@@ -150,17 +152,37 @@ TEST(SurfaceSlivers, LeavesAMeshWithoutSliversAsItIs) {
   EXPECT_EQ(m.triangles, before);
 }
 
-TEST(SurfaceSlivers, ACapOffThePlaneBeyondTheToleranceStays) {
-  // the strip raised: its upper rim 1e-3 above the others' plane, beyond a 1e-4 tolerance
-  // (the flip would move the surface by 1e-3) and the nodes farther apart than it
+/// The strip's upper rim (CAD edge 1) raised to z.
+SurfaceMesh raisedStrip(double z) {
   SurfaceMesh m = stripShell();
   for (int v = 0; v < static_cast<int>(m.nodes.size()); ++v)
-    if (m.nodeOn[v].kind == NodeOn::Kind::Edge && m.nodeOn[v].entity == 1) m.nodes[v].z() = 1e-3;
-  const int caps = countSurfaceCaps(m);
-  ASSERT_GT(caps, 0);
-  const double volume = enclosedVolume(m);
+    if (m.nodeOn[v].kind == NodeOn::Kind::Edge && m.nodeOn[v].entity == 1) m.nodes[v].z() = z;
+  return m;
+}
+
+TEST(SurfaceSlivers, ACapOffThePlaneBeyondTheToleranceStays) {
+  // the strip raised: its upper rim above the others' plane beyond a 1e-4 tolerance and
+  // beyond the local one (kLocalSliverRatio of the caps' long edges, 0.2 at most), the nodes
+  // farther apart than either: no strip cap goes across a rim (the raised strip's ends make
+  // caps of the pyramid's long triangles, which may flip among themselves)
+  SurfaceMesh m = raisedStrip(2 * kLocalSliverRatio * 0.2);
+  ASSERT_GT(countSurfaceCaps(m), 0);
+  const auto onFace = [&](int f) { return std::count(m.triangleFace.begin(), m.triangleFace.end(), f); };
+  const auto top = std::array{onFace(0), onFace(1), onFace(2)};
   mendSurfaceSlivers(m, 1e-4);
   expectClosedAndValid(m);
-  EXPECT_NEAR(enclosedVolume(m), volume, 1e-12);
-  EXPECT_EQ(countSurfaceCaps(m), caps);
+  EXPECT_EQ(top, (std::array{onFace(0), onFace(1), onFace(2)}));
+  EXPECT_GT(countSurfaceCaps(m), 0);  // flips inside the strip's plane may take some
+}
+
+TEST(SurfaceSlivers, ACapOffThePlaneWithinTheLocalToleranceIsFlipped) {
+  // the rim raised by less than kLocalSliverRatio of the caps' long edges (0.1 at least) but
+  // far beyond the 1e-4 tolerance: the caps are the CAD's, below the local size
+  SurfaceMesh m = raisedStrip(0.5 * kLocalSliverRatio * 0.1);
+  const int caps = countSurfaceCaps(m);
+  ASSERT_GT(caps, 0);
+  const SurfaceSliverStats s = mendSurfaceSlivers(m, 1e-4);
+  expectClosedAndValid(m);
+  EXPECT_GT(s.capsFlipped, 0);
+  EXPECT_LT(countSurfaceCaps(m), caps);
 }
