@@ -1,0 +1,23 @@
+#pragma once
+// boundaryCrossing — evidence that a solid's boundary mesh intersects itself, found while
+// recovering it (BoundaryRecovery.h): a missing boundary edge whose pipe (Pipe.h, exact)
+// crosses a boundary entity that IS present — the interior of a constrained boundary face,
+// or a present boundary edge at a point interior to both. Two boundary entities then meet
+// in their interiors: no tetrahedralization has both as faces/edges, and neither flips,
+// interior points nor splitting the surface edges (the halves still cross) recover it.
+// Seen where preparation left two faces of one solid overlapping in a plane
+// (Push_SMD_6.2x6.2mm: 11611 missing edges, pipe reduction ran for minutes).
+#include <vector>
+
+#include "mesher/volume/Pipe.h"
+#include "mesher/volume/PipeReduction.h"
+
+namespace aniso::volume {
+
+/// The vertices of the first present boundary entity (2 for an edge, 3 for a constrained
+/// face) crossed by the missing edge (a, b); empty when there is none. `isBoundaryEdge`
+/// names boundary edges; `pipe` is scratch.
+std::vector<del3d::VertexId> boundaryCrossing(const del3d::TetMesh& mesh, del3d::VertexId a, del3d::VertexId b,
+                                              const EdgeGuard& isBoundaryEdge, Pipe& pipe);
+
+}  // namespace aniso::volume
