@@ -3,10 +3,11 @@
 // recovering it (BoundaryRecovery.h): a missing boundary edge whose pipe (Pipe.h, exact)
 // crosses a boundary entity that IS present — the interior of a constrained boundary face,
 // or a present boundary edge at a point interior to both. Two boundary entities then meet
-// in their interiors: no tetrahedralization has both as faces/edges, and neither flips,
-// interior points nor splitting the surface edges (the halves still cross) recover it.
-// Seen where preparation left two faces of one solid overlapping in a plane
-// (Push_SMD_6.2x6.2mm: 11611 missing edges, pipe reduction ran for minutes).
+// in their interiors: no tetrahedralization has both as faces/edges, and neither flips nor
+// interior points recover it. Splitting the surface edges (new nodes on the CAD) can: where
+// two curved faces are closer than the chords' sagitta; not where two faces of the solid
+// overlap (Push_SMD_6.2x6.2mm after preparation: faces 41 and 49 in the plane z = 3.5,
+// 11611 missing edges, pipe reduction ran for minutes).
 #include <vector>
 
 #include "mesher/volume/Pipe.h"

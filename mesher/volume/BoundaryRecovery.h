@@ -57,8 +57,8 @@ struct RecoveryResult {
   RecoveryStats stats;
   std::vector<RecoveryFailure> left;  ///< empty when every edge and face is present
   /// The boundary mesh intersects itself (BoundaryCrossing.h): `left` holds the missing
-  /// edges that cross a present boundary entity, found before any recovery is tried;
-  /// splitting boundary edges cannot help.
+  /// edges that cross a present boundary entity, each followed by the entity it crosses,
+  /// found before any recovery is tried.
   bool selfIntersecting = false;
 };
 

@@ -169,9 +169,7 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
   if (!rr.left.empty()) {
     p.outcome.times.emplace_back("volume recovery", since(t0));
     reportLeft(p, solid, *in.surface, rr.left);
-    // A self-intersecting boundary is not mended by splitting its edges.
-    if (!rr.selfIntersecting)
-      for (const RecoveryFailure& f : rr.left) p.missing.push_back(f.nodes);
+    for (const RecoveryFailure& f : rr.left) p.missing.push_back(f.nodes);
     return p;
   }
   p.outcome.times.emplace_back("volume recovery", since(t0));
