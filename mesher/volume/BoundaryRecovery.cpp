@@ -303,6 +303,7 @@ class Recovery {
 
   void cavityRound(RecoveryStats& s) {
     if (!cavity_) cavity_ = std::make_unique<volume::CavityRecovery>(bt_);
+    cavity_->newRound();
     for (const int f : missingFaces_) {
       checkCancel(opt_.cancel, "boundary recovery");
       s.steinerPoints += cavity_->recoverTriangle(f);
