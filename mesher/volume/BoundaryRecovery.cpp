@@ -131,8 +131,7 @@ class Recovery {
       for (const VertexId v : x) crossed.push_back(bt_.tets.node[v.index]);
       r.left.push_back({face, what, crossed});
     }
-    r.selfIntersecting = !r.left.empty();
-    return r.selfIntersecting;
+    return !r.left.empty();
   }
 
   /// The local configuration of every entity left missing (RecoveryDiagnosis.h), at debug level.

@@ -55,11 +55,10 @@ struct RecoveryFailure {
 
 struct RecoveryResult {
   RecoveryStats stats;
-  std::vector<RecoveryFailure> left;  ///< empty when every edge and face is present
-  /// The boundary mesh intersects itself (BoundaryCrossing.h): `left` holds the missing
-  /// edges that cross a present boundary entity, each followed by the entity it crosses,
-  /// found before any recovery is tried.
-  bool selfIntersecting = false;
+  /// Empty when every edge and face is present. When the boundary mesh intersects itself
+  /// (BoundaryCrossing.h): the missing edges that cross a present boundary entity, each
+  /// followed by the entity it crosses, found before any recovery is tried.
+  std::vector<RecoveryFailure> left;
 };
 
 /// Recovers the boundary in `bt.tets` (kernel from triangulateBoundary). On return every
