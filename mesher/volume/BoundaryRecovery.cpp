@@ -9,8 +9,10 @@
 #include <Eigen/Geometry>
 
 #include "mesher/core/Log.h"
+#include "mesher/volume/BoundaryCrossing.h"
 #include "mesher/volume/CavityRecovery.h"
 #include "mesher/volume/MeshQueries.h"
+#include "mesher/volume/Pipe.h"
 #include "mesher/volume/RecoveryDiagnosis.h"
 
 namespace aniso {
@@ -59,9 +61,12 @@ class Recovery {
     collectMissing();
     s.missingEdges = static_cast<long long>(missingEdges_.size());
     s.missingFaces = static_cast<long long>(missingFaces_.size());
+    if (selfCrossings(r)) return r;
     for (int phase = 0; phase < RecoveryStats::kPhases; ++phase) {
       if (phase == 1 && !opt_.interiorPoints) break;
       const std::size_t e0 = missingEdges_.size(), f0 = missingFaces_.size();
+      std::size_t best = e0 + f0;
+      int stalled = 0;
       for (int round = 0; round < opt_.maxRounds && !(missingEdges_.empty() && missingFaces_.empty()); ++round) {
         checkCancel(opt_.cancel, "boundary recovery");
         const std::size_t before = missingEdges_.size() + missingFaces_.size();
@@ -69,8 +74,13 @@ class Recovery {
         if (phase == 1) cavityRound(s);
         pipeRound(s);
         collectMissing();
-        // Progress: fewer missing entities, or new vicinity points to work with.
-        if (missingEdges_.size() + missingFaces_.size() >= before && s.steinerPoints == points) break;
+        // Progress: fewer missing entities, or new vicinity points to work with (for at
+        // most maxStalledRounds rounds without a new best).
+        const std::size_t now = missingEdges_.size() + missingFaces_.size();
+        if (now >= before && s.steinerPoints == points) break;
+        stalled = now < best ? 0 : stalled + 1;
+        best = std::min(best, now);
+        if (stalled >= opt_.maxStalledRounds) break;
       }
       s.edgesRecovered[phase] = static_cast<long long>(e0) - static_cast<long long>(missingEdges_.size());
       s.facesRecovered[phase] = static_cast<long long>(f0) - static_cast<long long>(missingFaces_.size());
@@ -97,6 +107,33 @@ class Recovery {
   }
 
  private:
+  /// Fills r.left with the missing edges crossing a present boundary entity and the
+  /// entities they cross (BoundaryCrossing.h); true when there is one.
+  bool selfCrossings(RecoveryResult& r) {
+    const auto nodes = [this](const std::vector<VertexId>& v) {
+      std::string s;
+      for (const VertexId x : v) s += (s.empty() ? "" : ", ") + std::to_string(bt_.tets.node[x.index]);
+      return s;
+    };
+    for (const int e : missingEdges_) {
+      const auto& ed = bt_.boundary.edges[e];
+      const std::vector<VertexId> x = volume::boundaryCrossing(mesh_, ed[0], ed[1], guard_, pipe_);
+      if (x.empty()) continue;
+      const int face = bt_.boundary.triangleFace[bt_.boundary.edgeTriangle[e]];
+      const std::string what = "the boundary mesh intersects itself: boundary edge (surface nodes " +
+                               nodes({ed[0], ed[1]}) + ") crosses the boundary " +
+                               (x.size() == 2 ? "edge" : "triangle") + " (" + nodes(x) + ")";
+      // Both entities are named, so that splitting (a triangle by its longest edge) refines
+      // both sides of the crossing: water_module's solid 3 converged in 8 rounds (196 ... 4
+      // split); with every edge of a crossed triangle split it diverged (379 ... 650).
+      r.left.push_back({face, what, {bt_.tets.node[ed[0].index], bt_.tets.node[ed[1].index]}});
+      std::vector<int> crossed;
+      for (const VertexId v : x) crossed.push_back(bt_.tets.node[v.index]);
+      r.left.push_back({face, what, crossed});
+    }
+    return !r.left.empty();
+  }
+
   /// The local configuration of every entity left missing (RecoveryDiagnosis.h), at debug level.
   void logLeft() const {
     const volume::IsBoundaryVertex fixed = [this](VertexId v) { return bt_.tets.isFixed(v); };
@@ -208,21 +245,64 @@ class Recovery {
     for (const int e : missingEdges_) {
       checkCancel(opt_.cancel, "boundary recovery");
       const auto& ed = bt_.boundary.edges[e];
-      volume::reduceEdgePipe(mesh_, ed[0], ed[1], guard_, opt_.maxChangesPerEntity, s.flips);
+      const auto measure = [&] { volume::segmentPipe(mesh_, ed[0], ed[1], pipe_); };
+      if (sameAsFailure(failedEdges_, e, measure)) continue;
+      if (!volume::reduceEdgePipe(mesh_, ed[0], ed[1], guard_, opt_.maxChangesPerEntity, s.flips))
+        rememberFailure(failedEdges_, e, measure);
     }
     for (const int f : missingFaces_) {
       checkCancel(opt_.cancel, "boundary recovery");
       const auto& t = bt_.boundary.triangles[f];
       if (!edgesPresent(t)) continue;
+      const auto measure = [&] { volume::trianglePipe(mesh_, t[0], t[1], t[2], pipe_); };
+      if (sameAsFailure(failedFaces_, f, measure)) continue;
       if (volume::reduceFacePipe(mesh_, t[0], t[1], t[2], guard_, opt_.maxChangesPerEntity, s.flips)) {
         const volume::FaceHandle h = volume::findFace(mesh_, t[0], t[1], t[2], star_);
         if (h.valid()) mesh_.setConstrained(h.tet, h.face, true);
+      } else {
+        rememberFailure(failedFaces_, f, measure);
       }
     }
   }
 
+  /// The entities crossing a missing entity (pipe_), by their vertices, sorted: equal
+  /// lists mean the same local configuration for the flips.
+  std::vector<std::uint64_t> pipeKeys() const {
+    std::vector<std::uint64_t> k;
+    k.reserve(2 * pipe_.faces.size() + pipe_.edges.size() + 1);
+    for (const volume::FaceRef& f : pipe_.faces) {
+      std::array<std::uint64_t, 3> v{};
+      for (int m = 0; m < 3; ++m) v[m] = mesh_.vertex(f.tet, del3d::kFaceVertex[f.face][m]).index;
+      std::sort(v.begin(), v.end());
+      k.push_back(v[0] << 32 | v[1]);
+      k.push_back(v[2] << 32 | 0xFFFFFFFFu);  // marks a face (no vertex index is 2^32 - 1)
+    }
+    for (const volume::EdgeRef& e : pipe_.edges) k.push_back(edgeKey(mesh_.vertex(e.tet, e.i), mesh_.vertex(e.tet, e.j)));
+    k.push_back(pipe_.degenerate ? 1 : 0);
+    std::sort(k.begin(), k.end());
+    return k;
+  }
+
+  /// Pipe reduction failed on entity `id` before and its pipe (measured by `measure`) is
+  /// the same as then: flips gave up on this configuration, trying again would too.
+  template <class Measure>
+  bool sameAsFailure(const std::unordered_map<int, std::vector<std::uint64_t>>& failed, int id,
+                     const Measure& measure) {
+    const auto it = failed.find(id);
+    if (it == failed.end()) return false;
+    measure();
+    return it->second == pipeKeys();
+  }
+
+  template <class Measure>
+  void rememberFailure(std::unordered_map<int, std::vector<std::uint64_t>>& failed, int id, const Measure& measure) {
+    measure();
+    failed[id] = pipeKeys();
+  }
+
   void cavityRound(RecoveryStats& s) {
     if (!cavity_) cavity_ = std::make_unique<volume::CavityRecovery>(bt_);
+    cavity_->newRound();
     for (const int f : missingFaces_) {
       checkCancel(opt_.cancel, "boundary recovery");
       s.steinerPoints += cavity_->recoverTriangle(f);
@@ -240,6 +320,8 @@ class Recovery {
   volume::EdgeGuard guard_;
   std::vector<int> missingEdges_, missingFaces_;
   std::vector<TetId> star_;
+  volume::Pipe pipe_;                                            ///< scratch
+  std::unordered_map<int, std::vector<std::uint64_t>> failedEdges_, failedFaces_;  ///< pipe at the last failure
   std::unique_ptr<volume::CavityRecovery> cavity_;  ///< kept across rounds (vicinity attempts)
   std::unordered_map<std::uint64_t, int> edgeIndex_;  ///< boundary edge by its vertex pair
   bool checked_ = false;                              ///< collectMissing ran once over everything

@@ -9,6 +9,10 @@
 // No Steiner point is ever put on the boundary (the surface mesh is shared by the solids
 // of an assembly and must stay as it is). Present boundary faces are marked constrained
 // as soon as they are present, and present boundary edges are never flipped away.
+// A solid whose missing edges cross present boundary entities (its boundary mesh
+// intersects itself, BoundaryCrossing.h) is not recovered at all: it is returned at once.
+// Pipe reduction is not tried again on an entity whose pipe (the entities crossing it) is
+// the same as when it last failed: flips alone gave up on that configuration.
 // Entities left missing are returned, naming the CAD face (1-based) they lie on.
 #include <array>
 #include <cstdint>
@@ -24,6 +28,10 @@ namespace aniso {
 struct RecoveryOptions {
   int maxChangesPerEntity = 64;  ///< kept flips per entity and round (pipe reduction)
   int maxRounds = 10;            ///< rounds per phase (a round ends the phase when it makes no progress)
+  /// Phase 2 ends after this many rounds in a row that leave no fewer entities missing than
+  /// the best round so far, even when they add points (a point that helps makes an entity
+  /// present within a round or two; those that do not only make the next rounds longer).
+  int maxStalledRounds = 2;
   bool interiorPoints = true;    ///< phase 2 (interior Steiner points)
   /// Checked every round (Cancel.h); null: never stops.
   const CancelToken* cancel = nullptr;
@@ -47,7 +55,10 @@ struct RecoveryFailure {
 
 struct RecoveryResult {
   RecoveryStats stats;
-  std::vector<RecoveryFailure> left;  ///< empty when every edge and face is present
+  /// Empty when every edge and face is present. When the boundary mesh intersects itself
+  /// (BoundaryCrossing.h): the missing edges that cross a present boundary entity, each
+  /// followed by the entity it crosses, found before any recovery is tried.
+  std::vector<RecoveryFailure> left;
 };
 
 /// Recovers the boundary in `bt.tets` (kernel from triangulateBoundary). On return every

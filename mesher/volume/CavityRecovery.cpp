@@ -114,13 +114,19 @@ int CavityRecovery::recoverPatch(std::vector<int> seeds) {
     }
   }
   if (patch.empty()) return 0;
+  if (std::all_of(patch.begin(), patch.end(), [&](int t) { return failedThisRound_.count(t) > 0; }))
+    return insertVicinityPoint(patch);
+  const auto failed = [&] {
+    failedThisRound_.insert(patch.begin(), patch.end());
+    return insertVicinityPoint(patch);
+  };
   for (int growth = 0;; ++growth) {
     const int r = retriangulate(patch);
     if (r >= 0) {
       ++successes_;
       return r;
     }
-    if (r != kCavitySidesMixed || growth == kMaxGrowth) return insertVicinityPoint(patch);
+    if (r != kCavitySidesMixed || growth == kMaxGrowth) return failed();
     // The two sides meet where the rim pinches (at a vertex): take in every boundary
     // triangle around the patch's vertices, so that those vertices are inside I.
     std::set<std::uint32_t> vs;
@@ -129,7 +135,7 @@ int CavityRecovery::recoverPatch(std::vector<int> seeds) {
     for (const std::uint32_t v : vs)
       for (const int u : vertexTriangles_[v])
         if (inPatch.insert(u).second) patch.push_back(u);
-    if (patch.size() > 2 * kMaxPatch) return insertVicinityPoint(patch);
+    if (patch.size() > 2 * kMaxPatch) return failed();
   }
 }
 

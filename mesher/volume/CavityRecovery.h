@@ -23,9 +23,13 @@
 //    their volume equals C's, and no boundary node would be left out; the triangles of I
 //    are then faces of the mesh and are marked constrained.
 // Anything that does not hold leaves the mesh untouched; then one point is inserted near
-// the patch on the material side (insertVicinityPoint) for the next round to use.
+// the patch on the material side (insertVicinityPoint) for the next round to use. Within
+// one round (newRound) a patch whose triangles all failed already is not retriangulated
+// again: it only gets its vicinity point (each attempt puts it elsewhere), and the next
+// round tries the stars with all of them.
 #include <cstdint>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "mesher/volume/BoundaryTriangulation.h"
@@ -39,6 +43,9 @@ inline constexpr std::size_t kMaxPatch = 48;
 class CavityRecovery {
  public:
   explicit CavityRecovery(BoundaryTriangulation& bt);
+
+  /// Starts a round: every patch may be retriangulated once more.
+  void newRound() { failedThisRound_.clear(); }
 
   /// Tries to recover boundary triangle f (and the missing triangles around it). Returns
   /// the number of new points (0, 1 or 2; 1 also when only a vicinity point went in).
@@ -68,6 +75,7 @@ class CavityRecovery {
   std::vector<std::vector<int>> vertexTriangles_;  ///< boundary triangles per kernel vertex
   std::vector<del3d::TetId> star_;
   std::unordered_map<int, int> vicinityAttempts_;  ///< per patch (its first triangle)
+  std::unordered_set<int> failedThisRound_;        ///< triangles of the patches that failed this round
   std::uint64_t attempts_ = 0, successes_ = 0;
 };
 

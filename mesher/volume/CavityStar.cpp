@@ -30,12 +30,25 @@ double vol6(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) { return
 
 /// Worst shape of the star of `p` over `faces`: negative when a tet is not positively
 /// oriented (exact test). Faces containing `skip` (the apex when it is a vertex) are left out.
-double starShape(const TetMesh& m, const std::vector<CavityFace>& faces, const double* p, VertexId skip) {
+/// `first` (in/out) is the face tested first, set to the one that rejected `p`: candidates
+/// near each other are usually rejected by the same face, and the result does not depend on
+/// the order.
+double starShape(const TetMesh& m, const std::vector<CavityFace>& faces, const double* p, VertexId skip,
+                 std::size_t& first) {
+  const auto visible = [&](const CavityFace& f) {
+    return f[0] == skip || f[1] == skip || f[2] == skip ||
+           predicates::orient3d(m.coords(f[0]), m.coords(f[1]), m.coords(f[2]), p) > 0;
+  };
+  if (first < faces.size() && !visible(faces[first])) return -1;
   double worst = 1e300;
   const Vec3 pv(p[0], p[1], p[2]);
-  for (const CavityFace& f : faces) {
+  for (std::size_t k = 0; k < faces.size(); ++k) {
+    const CavityFace& f = faces[k];
     if (f[0] == skip || f[1] == skip || f[2] == skip) continue;
-    if (predicates::orient3d(m.coords(f[0]), m.coords(f[1]), m.coords(f[2]), p) <= 0) return -1;
+    if (!visible(f)) {
+      first = k;
+      return -1;
+    }
     const Vec3 a = m.point(f[0]), b = m.point(f[1]), c = m.point(f[2]);
     const double l = std::max({(a - b).norm(), (b - c).norm(), (c - a).norm(), (pv - a).norm(), (pv - b).norm(),
                                (pv - c).norm()});
@@ -64,36 +77,46 @@ bool patchFrame(const TetMesh& m, const std::vector<CavityFace>& tris, const std
   return true;
 }
 
-bool relaxIntoKernel(const TetMesh& m, const std::vector<CavityFace>& faces, Vec3 start, double margin, Vec3& out) {
-  std::vector<Vec3> normal(faces.size());
-  std::vector<double> offset(faces.size());
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    const Vec3 a = m.point(faces[f][0]), b = m.point(faces[f][1]), c = m.point(faces[f][2]);
+bool KernelFaces::build(const TetMesh& m, const std::vector<CavityFace>& faces) {
+  nx.clear(), ny.clear(), nz.clear(), offset.clear();
+  for (const CavityFace& f : faces) {
+    const Vec3 a = m.point(f[0]), b = m.point(f[1]), c = m.point(f[2]);
     Vec3 n = (b - a).cross(c - a);  // points into the polyhedron (faces are oriented so)
     const double len = n.norm();
     if (!(len > 0)) return false;
-    normal[f] = n / len;
-    offset[f] = normal[f].dot(a);
+    n /= len;
+    nx.push_back(n.x()), ny.push_back(n.y()), nz.push_back(n.z());
+    offset.push_back(n.dot(a));
   }
+  return true;
+}
+
+bool KernelFaces::relax(Vec3 start, double margin, Vec3& out) const {
   Vec3 p = start;
+  const std::size_t nf = offset.size();
   for (int it = 0; it < kRelaxIterations; ++it) {
     double worst = margin;
-    std::size_t wf = faces.size();
-    for (std::size_t f = 0; f < faces.size(); ++f) {
-      const double d = normal[f].dot(p) - offset[f];
+    std::size_t wf = nf;
+    for (std::size_t f = 0; f < nf; ++f) {
+      const double d = Vec3(nx[f], ny[f], nz[f]).dot(p) - offset[f];
       if (d < worst) {
         worst = d;
         wf = f;
       }
     }
-    if (wf == faces.size()) {
+    if (wf == nf) {
       out = p;
       return true;
     }
-    p += (margin - worst) * normal[wf];
+    p += (margin - worst) * Vec3(nx[wf], ny[wf], nz[wf]);
   }
   out = p;
   return false;
+}
+
+bool relaxIntoKernel(const TetMesh& m, const std::vector<CavityFace>& faces, Vec3 start, double margin, Vec3& out) {
+  KernelFaces k;
+  return k.build(m, faces) && k.relax(start, margin, out);
 }
 
 std::vector<Vec3> apexCandidates(const TetMesh& m, const std::vector<CavityFace>& side, const std::vector<TetId>& cavity,
@@ -113,13 +136,19 @@ std::vector<Vec3> apexCandidates(const TetMesh& m, const std::vector<CavityFace>
     for (int k = 0; k < 4; ++k) g += 0.25 * m.point(m.vertex(t, k));
     c.push_back(g);
   }
-  for (const double margin : kKernelMargins) {  // a point of the kernel: the widest margin found
-    Vec3 k;
-    if (relaxIntoKernel(m, side, frame.centroid + direction * 0.25 * frame.h * frame.normal, margin * frame.h, k)) {
+  // A point of the kernel: the widest margin found. The narrowest is tried first: when even
+  // it is not reached the kernel is empty (or too thin), and the wider ones are not tried
+  // (each vain relaxation runs kRelaxIterations steps over every face).
+  KernelFaces kernel;
+  const Vec3 start = frame.centroid + direction * 0.25 * frame.h * frame.normal;
+  Vec3 k;
+  const double narrowest = kKernelMargins[std::size(kKernelMargins) - 1];
+  if (!kernel.build(m, side) || !kernel.relax(start, narrowest * frame.h, k)) return c;
+  for (const double margin : kKernelMargins)
+    if (kernel.relax(start, margin * frame.h, k)) {
       c.push_back(k);
       break;
     }
-  }
   return c;
 }
 
@@ -131,8 +160,9 @@ Apex chooseApex(const TetMesh& m, const std::vector<CavityFace>& faces, const st
       if (!forbidden.count(v.index)) verts.insert(v.index);
   Apex bestVertex;
   double bestVertexShape = 0;
+  std::size_t first = faces.size();
   for (const std::uint32_t v : verts) {
-    const double s = starShape(m, faces, m.coords(VertexId(v)), VertexId(v));
+    const double s = starShape(m, faces, m.coords(VertexId(v)), VertexId(v), first);
     if (s > bestVertexShape) {
       bestVertexShape = s;
       bestVertex = {true, false, VertexId(v), m.point(VertexId(v))};
@@ -143,7 +173,7 @@ Apex chooseApex(const TetMesh& m, const std::vector<CavityFace>& faces, const st
   double bestNewShape = 0;
   for (const Vec3& c : candidates) {
     if (!c.allFinite()) continue;
-    const double s = starShape(m, faces, c.data(), VertexId());
+    const double s = starShape(m, faces, c.data(), VertexId(), first);
     if (s > bestNewShape) {
       bestNewShape = s;
       bestNew = {true, true, VertexId(), c};

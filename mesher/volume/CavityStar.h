@@ -35,6 +35,14 @@ bool patchFrame(const del3d::TetMesh& m, const std::vector<CavityFace>& tris, co
 bool relaxIntoKernel(const del3d::TetMesh& m, const std::vector<CavityFace>& faces, Vec3 start, double margin,
                      Vec3& out);
 
+/// The same for several relaxations over one set of faces: their unit inward normals and
+/// offsets, computed once (build: false when a face has no area).
+struct KernelFaces {
+  std::vector<double> nx, ny, nz, offset;
+  bool build(const del3d::TetMesh& m, const std::vector<CavityFace>& faces);
+  bool relax(Vec3 start, double margin, Vec3& out) const;
+};
+
 struct Apex {
   bool found = false;
   bool isNew = false;

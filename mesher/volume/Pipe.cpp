@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <array>
-#include <set>
 #include <utility>
 
+#include "mesher/core/KeySet.h"
 #include "mesher/delaunay3d/EdgeRing.h"
 #include "mesher/volume/MeshQueries.h"
 #include "mesher/volume/SegmentCrossing.h"
@@ -46,16 +46,15 @@ class Region {
     del3d::edgeRing(mesh_, t, i, j, ring_);
     for (const TetId u : ring_.tets) push(u);
   }
+  /// Each face once: keyed by the smaller of its two face codes (4·tet + face).
   bool newFace(TetId t, int f) {
-    std::array<std::uint32_t, 3> k{};
-    for (int m = 0; m < 3; ++m) k[m] = mesh_.vertex(t, del3d::kFaceVertex[f][m]).index;
-    std::sort(k.begin(), k.end());
-    return faces_.insert(k).second;
+    const std::uint32_t own = 4 * t.index + static_cast<std::uint32_t>(f), other = mesh_.adjacentCode(t, f);
+    return faces_.insert(other == del3d::kNone ? own : std::min(own, other));
   }
   bool newEdge(TetId t, int i, int j) {
-    std::uint32_t p = mesh_.vertex(t, i).index, q = mesh_.vertex(t, j).index;
+    std::uint64_t p = mesh_.vertex(t, i).index, q = mesh_.vertex(t, j).index;
     if (p > q) std::swap(p, q);
-    return edges_.insert({p, q}).second;
+    return edges_.insert(p << 32 | q);
   }
 
  private:
@@ -63,9 +62,16 @@ class Region {
   Pipe& pipe_;
   std::vector<TetId> star_;
   del3d::EdgeRing ring_;
-  std::set<std::array<std::uint32_t, 3>> faces_;
-  std::set<std::pair<std::uint32_t, std::uint32_t>> edges_;
+  KeySet faces_, edges_;
 };
+
+/// Has vertex v: the entities of the stars of a missing edge's ends that contain an end
+/// can neither be pierced nor crossed by it (SegmentCrossing.h: a shared endpoint is no
+/// crossing), so they are not tested.
+bool faceHas(const TetMesh& mesh, TetId t, int f, VertexId v) {
+  const auto& fv = del3d::kFaceVertex[f];
+  return mesh.vertex(t, fv[0]) == v || mesh.vertex(t, fv[1]) == v || mesh.vertex(t, fv[2]) == v;
+}
 
 }  // namespace
 
@@ -78,7 +84,7 @@ void segmentPipe(const TetMesh& mesh, VertexId a, VertexId b, Pipe& pipe) {
   for (std::size_t k = 0; k < pipe.tets.size(); ++k) {
     const TetId t = pipe.tets[k];
     for (int f = 0; f < 4; ++f) {
-      if (!region.newFace(t, f)) continue;
+      if (faceHas(mesh, t, f, a) || faceHas(mesh, t, f, b) || !region.newFace(t, f)) continue;
       const auto& fv = del3d::kFaceVertex[f];
       const Cross c = segmentPiercesTriangle(pa, pb, mesh.coords(mesh.vertex(t, fv[0])),
                                              mesh.coords(mesh.vertex(t, fv[1])), mesh.coords(mesh.vertex(t, fv[2])));
@@ -88,7 +94,8 @@ void segmentPipe(const TetMesh& mesh, VertexId a, VertexId b, Pipe& pipe) {
       region.push(mesh.neighbour(t, f));
     }
     for (const auto& e : kTetEdge) {
-      if (!region.newEdge(t, e[0], e[1])) continue;
+      const VertexId x = mesh.vertex(t, e[0]), y = mesh.vertex(t, e[1]);
+      if (x == a || x == b || y == a || y == b || !region.newEdge(t, e[0], e[1])) continue;
       const Cross c = segmentsCross(pa, pb, mesh.coords(mesh.vertex(t, e[0])), mesh.coords(mesh.vertex(t, e[1])));
       if (c == Cross::Degenerate) pipe.degenerate = true;
       if (c != Cross::Interior) continue;

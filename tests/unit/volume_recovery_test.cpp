@@ -7,6 +7,7 @@
 
 #include "mesher/delaunay3d/Delaunay3d.h"
 #include "mesher/delaunay3d/Validate.h"
+#include "mesher/volume/BoundaryCrossing.h"
 #include "mesher/volume/MeshQueries.h"
 #include "mesher/volume/Pipe.h"
 #include "mesher/volume/PipeReduction.h"
@@ -144,4 +145,25 @@ TEST(VolumeRecovery, RegionReplaceRefusesAnotherBoundary) {
   EXPECT_FALSE(replaceRegion(b.mesh, star, quads));
   EXPECT_EQ(b.mesh.numTets(), before);
   EXPECT_EQ(joined(del3d::validate(b.mesh)), "");
+}
+
+TEST(VolumeRecovery, BoundaryCrossingNamesThePresentBoundaryEntityCrossed) {
+  // The square's two diagonals: Delaunay keeps one (a flat square with apexes above and
+  // below has s1-s3 or s0-s2); as boundary edges both, the missing one crosses the other.
+  Built b = delaunay({Vec3(2, 0, 0), Vec3(0, 2.1, 0), Vec3(-2, 0, 0), Vec3(0, -2.1, 0), Vec3(0.1, 0, 3), Vec3(0, 0.1, -3)});
+  const VertexId s0 = b.v[0], s1 = b.v[1], s2 = b.v[2], s3 = b.v[3];
+  const bool first = hasEdge(b.mesh, s0, s2);
+  ASSERT_NE(first, hasEdge(b.mesh, s1, s3));
+  const VertexId ma = first ? s1 : s0, mb = first ? s3 : s2;    // missing
+  const VertexId pa = first ? s0 : s1, pb = first ? s2 : s3;    // present
+  const EdgeGuard both = [&](VertexId x, VertexId y) {
+    const auto is = [&](VertexId u, VertexId v) { return (x == u && y == v) || (x == v && y == u); };
+    return is(pa, pb) || is(ma, mb);
+  };
+  Pipe pipe;
+  const std::vector<VertexId> x = boundaryCrossing(b.mesh, ma, mb, both, pipe);
+  ASSERT_EQ(x.size(), 2u);
+  EXPECT_TRUE((x[0] == pa && x[1] == pb) || (x[0] == pb && x[1] == pa));
+  // Not a boundary edge: no evidence.
+  EXPECT_TRUE(boundaryCrossing(b.mesh, ma, mb, kNoGuard, pipe).empty());
 }
