@@ -6,7 +6,6 @@
 #include <cstdint>
 #include <numbers>
 #include <optional>
-#include <unordered_map>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -46,15 +45,45 @@ int capCorner(const SurfaceMesh& m, const Tri& t) {
   return -1;
 }
 
+/// Triangle indices, ascending: those using one mesh edge or one node (empty: none).
+struct TriRange {
+  const int* first = nullptr;
+  const int* last = nullptr;
+  const int* begin() const { return first; }
+  const int* end() const { return last; }
+  std::size_t size() const { return static_cast<std::size_t>(last - first); }
+  bool empty() const { return first == last; }
+  int operator[](std::size_t i) const { return first[i]; }
+};
+
 class SliverPass {
  public:
+  // The adjacency is built once per pass in flat arrays (a pass over a 2.2 M triangle
+  // surface rebuilt a hash map of vectors, half its time in malloc) and not updated within
+  // the pass: an operation only touches triangles none of whose nodes changed (dirty_).
   SliverPass(SurfaceMesh& m, double tolerance, const MidEdgeGeometry* geo, SurfaceSliverStats& stats)
-      : m_(m), tol_(tolerance), geo_(geo), stats_(stats), nodeTris_(m.nodes.size()), dirty_(m.nodes.size(), 0) {
-    for (int t = 0; t < static_cast<int>(m.triangles.size()); ++t)
+      : m_(m), tol_(tolerance), geo_(geo), stats_(stats), dirty_(m.nodes.size(), 0) {
+    const int nt = static_cast<int>(m.triangles.size());
+    std::vector<std::pair<std::uint64_t, int>> edges;
+    edges.reserve(3 * static_cast<std::size_t>(nt));
+    nodeStart_.assign(m.nodes.size() + 1, 0);
+    for (int t = 0; t < nt; ++t)
       for (int k = 0; k < 3; ++k) {
-        edgeTris_[edgeKey(m.triangles[t][k], m.triangles[t][(k + 1) % 3])].push_back(t);
-        nodeTris_[m.triangles[t][k]].push_back(t);
+        edges.push_back({edgeKey(m.triangles[t][k], m.triangles[t][(k + 1) % 3]), t});
+        ++nodeStart_[static_cast<std::size_t>(m.triangles[t][k]) + 1];
       }
+    std::sort(edges.begin(), edges.end());
+    edgeKeys_.reserve(edges.size());
+    edgeTris_.reserve(edges.size());
+    for (const auto& [key, t] : edges) {
+      edgeKeys_.push_back(key);
+      edgeTris_.push_back(t);
+    }
+    for (std::size_t v = 1; v < nodeStart_.size(); ++v) nodeStart_[v] += nodeStart_[v - 1];
+    nodeTriList_.resize(static_cast<std::size_t>(nodeStart_.back()));
+    std::vector<int> fill(nodeStart_.begin(), nodeStart_.end() - 1);
+    for (int t = 0; t < nt; ++t)
+      for (int k = 0; k < 3; ++k) nodeTriList_[static_cast<std::size_t>(fill[static_cast<std::size_t>(m.triangles[t][k])]++)] = t;
     removed_.assign(m.triangles.size(), 0);
   }
 
@@ -91,8 +120,7 @@ class SliverPass {
   /// The local size at the edge (a, b): the smallest longest edge of its triangles.
   double edgeSize(int a, int b) const {
     double size = 1e300;
-    if (const std::vector<int>* u = uses(a, b))
-      for (const int t : *u) size = std::min(size, longestEdge(m_.triangles[t]));
+    for (const int t : uses(a, b)) size = std::min(size, longestEdge(m_.triangles[t]));
     return size;
   }
 
@@ -108,16 +136,24 @@ class SliverPass {
     return best;
   }
 
-  const std::vector<int>* uses(int a, int b) const {
-    const auto it = edgeTris_.find(edgeKey(a, b));
-    return it == edgeTris_.end() ? nullptr : &it->second;
+  TriRange uses(int a, int b) const {
+    const std::uint64_t key = edgeKey(a, b);
+    const auto lo = std::lower_bound(edgeKeys_.begin(), edgeKeys_.end(), key);
+    const auto hi = std::upper_bound(lo, edgeKeys_.end(), key);
+    const int* base = edgeTris_.data();
+    return {base + (lo - edgeKeys_.begin()), base + (hi - edgeKeys_.begin())};
+  }
+
+  TriRange nodeTris(int v) const {
+    const int* base = nodeTriList_.data();
+    return {base + nodeStart_[static_cast<std::size_t>(v)], base + nodeStart_[static_cast<std::size_t>(v) + 1]};
   }
 
   /// The other triangle on the manifold edge (a, b), or -1.
   int across(int t, int a, int b) const {
-    const std::vector<int>* u = uses(a, b);
-    if (!u || u->size() != 2) return -1;
-    return (*u)[0] == t ? (*u)[1] : (*u)[0];
+    const TriRange u = uses(a, b);
+    if (u.size() != 2) return -1;
+    return u[0] == t ? u[1] : u[0];
   }
 
   /// Distance of the mesh edge (a, b) of face f from the CAD (its midpoint from the
@@ -141,8 +177,10 @@ class SliverPass {
   double tol_;
   const MidEdgeGeometry* geo_;
   SurfaceSliverStats& stats_;
-  std::unordered_map<std::uint64_t, std::vector<int>> edgeTris_;
-  std::vector<std::vector<int>> nodeTris_;
+  std::vector<std::uint64_t> edgeKeys_;  ///< sorted (edge key, triangle): the keys ...
+  std::vector<int> edgeTris_;            ///< ... and the triangles
+  std::vector<int> nodeStart_;           ///< per node, its first entry in nodeTriList_
+  std::vector<int> nodeTriList_;
   std::vector<std::uint8_t> dirty_;  ///< per node: in a triangle changed in this pass
   std::vector<std::uint8_t> removed_;
 };
@@ -151,18 +189,18 @@ class SliverPass {
 bool SliverPass::merge(int a, int c) {
   if (rank(m_.nodeOn[c]) < rank(m_.nodeOn[a]) || (rank(m_.nodeOn[c]) == rank(m_.nodeOn[a]) && c < a)) std::swap(a, c);
   if (m_.nodeOn[c].kind == NodeOn::Kind::Vertex) return false;
-  const std::vector<int>* ac = uses(a, c);
-  if (!ac || ac->size() != 2) return false;
+  const TriRange ac = uses(a, c);
+  if (ac.size() != 2) return false;
   for (const int v : {a, c})
-    for (const int t : nodeTris_[v])
+    for (const int t : nodeTris(v))
       if (!clean(m_.triangles[t])) return false;
   // link condition: a and c share exactly the two opposite nodes of (a, c)
   std::vector<int> opposite, linkA, linkC;
-  for (const int t : *ac)
+  for (const int t : ac)
     for (const int v : m_.triangles[t])
       if (v != a && v != c) opposite.push_back(v);
   for (const auto& [v, link] : {std::pair<int, std::vector<int>*>{a, &linkA}, {c, &linkC}})
-    for (const int t : nodeTris_[v])
+    for (const int t : nodeTris(v))
       for (const int w : m_.triangles[t])
         if (w != a && w != c) link->push_back(w);
   for (auto* l : {&linkA, &linkC, &opposite}) {
@@ -173,23 +211,22 @@ bool SliverPass::merge(int a, int c) {
   std::set_intersection(linkA.begin(), linkA.end(), linkC.begin(), linkC.end(), std::back_inserter(shared));
   if (shared != opposite || opposite.size() != 2) return false;
   // every edge at c manifold; moved triangles keep a non-zero area and their side
-  for (const int t : nodeTris_[c]) {
+  for (const int t : nodeTris(c)) {
     const Tri& tri = m_.triangles[t];
     for (int k = 0; k < 3; ++k)
       if (tri[k] == c || tri[(k + 1) % 3] == c) {
-        const std::vector<int>* u = uses(tri[k], tri[(k + 1) % 3]);
-        if (!u || u->size() != 2) return false;
+        if (uses(tri[k], tri[(k + 1) % 3]).size() != 2) return false;
       }
-    if (std::find(ac->begin(), ac->end(), t) != ac->end()) continue;
+    if (std::find(ac.begin(), ac.end(), t) != ac.end()) continue;
     Tri moved = tri;
     std::replace(moved.begin(), moved.end(), c, a);
     const Vec3 before = normal(tri), after = normal(moved);
     if (!(after.norm() > 0) || !(after.dot(before) > 0)) return false;
   }
-  for (const int t : nodeTris_[a]) touch(t);
-  for (const int t : nodeTris_[c]) {
+  for (const int t : nodeTris(a)) touch(t);
+  for (const int t : nodeTris(c)) {
     touch(t);
-    if (std::find(ac->begin(), ac->end(), t) != ac->end())
+    if (std::find(ac.begin(), ac.end(), t) != ac.end())
       removed_[t] = 1;
     else
       std::replace(m_.triangles[t].begin(), m_.triangles[t].end(), c, a);
@@ -208,7 +245,7 @@ bool SliverPass::flip(int t, int k) {
   int d = -1;
   for (const int v : U)
     if (v != a && v != b) d = v;
-  if (d < 0 || d == c || uses(c, d)) return false;
+  if (d < 0 || d == c || !uses(c, d).empty()) return false;
   // c within the tolerance of the plane of (a, b, d), or (inside one face) the new edge
   // nearer the CAD surface than the old one
   const Vec3 nu = normal(U);
