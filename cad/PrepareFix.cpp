@@ -45,6 +45,7 @@ void fixShape(CadModel::Impl& impl, double diag, PrepareReport& report) {
         if (impl.nameIndex.IsBound(key) && !impl.nameIndex.IsBound(fk)) impl.nameIndex.Bind(fk, impl.nameIndex.Find(key));
       }
     impl.shape = fixed;
+    rebuildSelfIntersecting(impl, report);
   } catch (const Standard_Failure& e) {
     report.warnings.push_back(std::string("shape fixing failed (") + e.GetMessageString() +
                               "); the shape is kept as read");

@@ -11,6 +11,13 @@ namespace aniso::cad::detail {
 /// ShapeFix_Shape on the whole shape (wires, edges, faces, shells, solids).
 void fixShape(CadModel::Impl& impl, double diag, PrepareReport& report);
 
+/// Solids whose faces cross one another (BOPAlgo_ArgumentAnalyzer's self-interference:
+/// BRepCheck calls them valid, the volume mesher finds their boundary crossing itself)
+/// rebuilt from their faces by BOPAlgo_MakerVolume, faces split where they cross; a solid
+/// is replaced only when the rebuilt pieces add up to its volume. Run at the end of
+/// fixShape. A warning names the solids rebuilt.
+void rebuildSelfIntersecting(CadModel::Impl& impl, PrepareReport& report);
+
 /// Sews the faces that are not in a solid (loose faces, open shells) with tolerance
 /// tol; keeps the result only if it leaves fewer free edges. Solids are not touched.
 void sewLooseFaces(CadModel::Impl& impl, double tol, PrepareReport& report);

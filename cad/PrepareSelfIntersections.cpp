@@ -1,0 +1,119 @@
+#include <BOPAlgo_ArgumentAnalyzer.hxx>
+#include <BOPAlgo_MakerVolume.hxx>
+#include <BRep_Builder.hxx>
+#include <Standard_Failure.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS_Compound.hxx>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "cad/detail/Prepare.h"
+
+namespace aniso::cad::detail {
+namespace {
+
+/// The rebuilt pieces must add up to the solid's volume within this fraction (measured:
+/// Push_SMD_6.2x6.2mm solid 1, 109.684 -> 109.682; water_module solids 3, 8, 10 the same to
+/// 2e-5).
+constexpr double kRebuildVolumeRel = 5e-3;
+
+bool selfInterfering(const TopoDS_Shape& solid) {
+  BOPAlgo_ArgumentAnalyzer a;
+  a.SetShape1(solid);
+  a.SelfInterMode() = Standard_True;
+  a.SetRunParallel(false);
+  a.Perform();
+  return a.HasFaulty();
+}
+
+/// True when an edge of the piece bounds more than two distinct faces: a solid touching
+/// itself (hinge_R_assy's slit), which the rebuild does not make any better for the mesher.
+bool nonManifold(const TopoDS_Shape& piece) {
+  TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
+  TopExp::MapShapesAndAncestors(piece, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
+  for (int i = 1; i <= edgeFaces.Extent(); ++i) {
+    TopTools_IndexedMapOfShape distinct;
+    for (const TopoDS_Shape& f : edgeFaces(i)) distinct.Add(f);
+    if (distinct.Extent() > 2) return true;
+  }
+  return false;
+}
+
+/// The solids with positive volume MakerVolume builds from the solid's faces; empty when
+/// they do not add up to its volume or one of them is not manifold.
+std::vector<TopoDS_Shape> rebuilt(const TopoDS_Shape& solid) {
+  BOPAlgo_MakerVolume mv;
+  TopTools_ListOfShape faces;
+  for (TopExp_Explorer f(solid, TopAbs_FACE); f.More(); f.Next()) faces.Append(f.Current());
+  mv.SetArguments(faces);
+  mv.SetRunParallel(false);
+  mv.SetIntersect(true);
+  mv.Perform();
+  if (mv.HasErrors()) return {};
+  TopTools_IndexedMapOfShape out;
+  TopExp::MapShapes(mv.Shape(), TopAbs_SOLID, out);
+  std::vector<TopoDS_Shape> pieces;
+  double total = 0;
+  for (int k = 1; k <= out.Extent(); ++k)
+    if (const double v = solidVolume(out(k)); v > 0) {
+      if (nonManifold(out(k))) return {};
+      pieces.push_back(out(k));
+      total += v;
+    }
+  const double before = std::abs(solidVolume(solid));
+  if (pieces.empty() || std::abs(total - before) > kRebuildVolumeRel * before) return {};
+  return pieces;
+}
+
+}  // namespace
+
+void rebuildSelfIntersecting(CadModel::Impl& impl, PrepareReport& report) {
+  TopTools_IndexedMapOfShape solids;
+  TopExp::MapShapes(impl.shape, TopAbs_SOLID, solids);
+  std::vector<std::vector<TopoDS_Shape>> replacement(static_cast<std::size_t>(solids.Extent()) + 1);
+  std::string fixed;
+  for (int i = 1; i <= solids.Extent(); ++i) {
+    try {
+      if (!selfInterfering(solids(i))) continue;
+      replacement[static_cast<std::size_t>(i)] = rebuilt(solids(i));
+    } catch (const Standard_Failure&) {
+      continue;  // left as it is
+    }
+    if (!replacement[static_cast<std::size_t>(i)].empty())
+      fixed += (fixed.empty() ? "" : ", ") + std::to_string(i) + " \"" + impl.solidName(solids(i), i) + "\"";
+  }
+  if (fixed.empty()) return;
+  // the new shape: the solids in order, each rebuilt one replaced by its pieces, then the
+  // faces in no solid (as the fragmenting step assembles its result)
+  BRep_Builder b;
+  TopoDS_Compound c;
+  b.MakeCompound(c);
+  TopTools_IndexedMapOfShape inSolid;
+  for (int i = 1; i <= solids.Extent(); ++i) {
+    TopExp::MapShapes(solids(i), TopAbs_FACE, inSolid);
+    const std::vector<TopoDS_Shape>& pieces = replacement[static_cast<std::size_t>(i)];
+    if (pieces.empty()) {
+      b.Add(c, solids(i));
+      continue;
+    }
+    const TopoDS_Shape key = solids(i).Located(TopLoc_Location());
+    for (const TopoDS_Shape& p : pieces) {
+      b.Add(c, p);
+      if (impl.nameIndex.IsBound(key)) impl.nameIndex.Bind(p.Located(TopLoc_Location()), impl.nameIndex.Find(key));
+    }
+  }
+  TopTools_IndexedMapOfShape allFaces;
+  TopExp::MapShapes(impl.shape, TopAbs_FACE, allFaces);
+  for (int i = 1; i <= allFaces.Extent(); ++i)
+    if (!inSolid.Contains(allFaces(i))) b.Add(c, allFaces(i));
+  impl.shape = c;
+  report.warnings.push_back("solid(s) " + fixed +
+                            " had faces crossing one another: rebuilt from their faces, split where they cross");
+}
+
+}  // namespace aniso::cad::detail
