@@ -32,24 +32,31 @@ void facesOfNode(const Model& model, const NodeOn& on, std::set<int>& out) {
       if (e.v0 == on.entity || e.v1 == on.entity) out.insert(e.faces.begin(), e.faces.end());
 }
 
-/// Where solid s's flattest tetrahedron is and the CAD faces its nodes lie on: ", the
-/// flattest at (x, y, z) by faces 12, 43" (the faces whose surface mesh forces it, when the
-/// sliver cannot be removed without changing the surface).
-std::string flattestSliver(const Model& model, const VolumeMesh& mesh, std::size_t s) {
+/// The flattest tetrahedron (referee's dihedral) of each solid flagged in `which`, in one
+/// pass over the mesh; tets.size() for a solid with none.
+std::vector<std::size_t> flattestTets(const VolumeMesh& mesh, const std::vector<char>& which) {
   const std::vector<Vec3>& x = mesh.nodes();
-  double worst = 180;
-  std::size_t at = mesh.tets.size();
+  std::vector<std::size_t> at(which.size(), mesh.tets.size());
+  std::vector<double> worst(which.size(), 180);
   for (std::size_t t = 0; t < mesh.tets.size(); ++t) {
-    if (static_cast<std::size_t>(mesh.tetSolid[t]) != s) continue;
+    const auto s = static_cast<std::size_t>(mesh.tetSolid[t]);
+    if (s >= which.size() || !which[s]) continue;
     const auto& k = mesh.tets[t];
-    const double d = refereeMinDihedral(x[k[0]], x[k[1]], x[k[2]], x[k[3]]);
-    if (d < worst) {
-      worst = d;
-      at = t;
+    if (const double d = refereeMinDihedral(x[k[0]], x[k[1]], x[k[2]], x[k[3]]); d < worst[s]) {
+      worst[s] = d;
+      at[s] = t;
     }
   }
-  if (at == mesh.tets.size()) return "";
-  const auto& k = mesh.tets[at];
+  return at;
+}
+
+/// Where tetrahedron t is and the CAD faces its nodes lie on: ", the flattest at (x, y, z)
+/// by faces 12, 43" (the faces whose surface mesh forces it, when the sliver cannot be
+/// removed without changing the surface).
+std::string whereSliver(const Model& model, const VolumeMesh& mesh, std::size_t t) {
+  if (t >= mesh.tets.size()) return "";
+  const std::vector<Vec3>& x = mesh.nodes();
+  const auto& k = mesh.tets[t];
   const Vec3 c = 0.25 * (x[k[0]] + x[k[1]] + x[k[2]] + x[k[3]]);
   std::set<int> faces;
   for (const int n : k)
@@ -90,16 +97,22 @@ std::vector<Problem> gradeSurfaceGeometry(const Model& model, const SurfaceGeome
 std::vector<Problem> gradeVolumeMesh(const Model& model, const VolumeMeshResult& volume, bool isotropic) {
   std::vector<Problem> out;
   const std::size_t n = std::min(model.solids.size(), volume.solids.size());
-  std::vector<char> mismatched(model.solids.size(), 0);
-  bool anyMismatch = false;
+  std::vector<char> mismatched(model.solids.size(), 0), slivers(model.solids.size(), 0);
+  bool anyMismatch = false, anySliver = false;
+  const auto meshed = [&](std::size_t s) {
+    return volume.solids[s].status == SolidOutcome::Status::Ok && volume.solids[s].tets > 0;
+  };
+  for (std::size_t s = 0; s < n; ++s)
+    if (meshed(s) && volume.solids[s].quality.refereeMinDihedral < kSliverBarDeg) slivers[s] = anySliver = true;
+  const std::vector<std::size_t> flattest = anySliver ? flattestTets(volume.mesh, slivers) : std::vector<std::size_t>();
   for (std::size_t s = 0; s < n; ++s) {
     const SolidOutcome& o = volume.solids[s];
-    if (o.status != SolidOutcome::Status::Ok || o.tets == 0) continue;
-    if (o.quality.refereeMinDihedral < kSliverBarDeg)
+    if (!meshed(s)) continue;
+    if (slivers[s])
       out.push_back({solidRef(model, s), Severity::Degraded, "slivers",
-                     format("its smallest dihedral angle is %.2f deg (bar: %.0f deg); %.0f tetrahedra are below 5 deg",
+                     format("its smallest dihedral angle is %.2f deg (bar: %.0f deg), tetrahedra below 5 deg: %.0f",
                             o.quality.refereeMinDihedral, kSliverBarDeg, static_cast<double>(o.quality.belowDihedral)) +
-                         flattestSliver(model, volume.mesh, s),
+                         whereSliver(model, volume.mesh, flattest[s]),
                      "quality"});
     const double cad = model.solids[s].cadVolume;
     if (cad > 0 && std::abs(o.volume - cad) > kVolumeMismatchRel * cad) {

@@ -71,7 +71,13 @@ TEST(MeshGrade, SliversAndLowQualityAreDegraded) {
   poor.add(0.5);
   v.quality.meanRatio = poor;
   std::vector<std::string> codes;
-  for (const Problem& p : gradeVolumeMesh(m.model, v, true)) codes.push_back(p.code);
+  for (const Problem& p : gradeVolumeMesh(m.model, v, true)) {
+    codes.push_back(p.code);
+    if (p.code == "slivers") {  // where the flattest tet is, and the CAD faces at its nodes
+      EXPECT_NE(p.detail.find("the flattest at ("), std::string::npos) << p.detail;
+      EXPECT_EQ(p.entity.id, 1);
+    }
+  }
   EXPECT_EQ(codes, (std::vector<std::string>{"slivers", "low-quality"}));
   codes.clear();
   for (const Problem& p : gradeVolumeMesh(m.model, v, false)) codes.push_back(p.code);  // anisotropic
