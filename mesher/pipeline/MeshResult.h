@@ -32,6 +32,9 @@ struct ProximityOutcome {
   std::size_t thinTrianglesLeft = 0;
   double predictedTriangles = 0;  ///< of the last round considered
   double budgetFactor = 1;        ///< sourcesWithinBudget's factor of the last round scaled
+  /// (0-based face, size asked: the thickness found, times budgetFactor when scaled) of
+  /// every source of the kept rounds, by round then face.
+  std::vector<std::pair<int, double>> refined;
   double seconds = 0;             ///< spent in rounds, fallback and coarse-solid retry
 };
 

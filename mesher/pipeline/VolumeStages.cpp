@@ -58,10 +58,13 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
     }
     const double triangles = static_cast<double>(r.surface.mesh.triangles.size());
     const double budget = kMaxProximityGrowth * triangles;
-    std::vector<SizingSource> sources = thinSources(r.volume.thin, hmin);
+    std::vector<std::pair<int, double>> faceSizes;
+    double roundFactor = 1;  // this round's budget scaling of the sizes
+    std::vector<SizingSource> sources = thinSources(r.volume.thin, hmin, &faceSizes);
     px.predictedTriangles = predictedTriangles(r.surface.mesh, sources);
     if (px.predictedTriangles > budget && static_cast<double>(r.volume.thin.size()) >= kThinWholeShare * triangles) {
       sources = sourcesWithinBudget(r.surface.mesh, sources, budget, &px.budgetFactor);
+      roundFactor = px.budgetFactor;
       px.predictedTriangles = predictedTriangles(r.surface.mesh, sources);
       decide(r, "proximity", name + ": sources scaled to the budget", "factor " + num(px.budgetFactor));
     }
@@ -85,6 +88,7 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
       return false;
     }
     px.facesRefined += sources.size();
+    for (const auto& [f, h] : faceSizes) px.refined.push_back({f, h * roundFactor});
     if (!first) first = FirstSurface{std::move(r.surface), r.surfaceRepair};
     r.surface = std::move(finer);
     r.surfaceRepair = repair;

@@ -69,7 +69,8 @@ std::vector<ThinSpot> findThinBoundary(const SolidTetMesh& s, const std::vector<
   return out;
 }
 
-std::vector<SizingSource> thinSources(const std::vector<ThinSpot>& spots, double hmin) {
+std::vector<SizingSource> thinSources(const std::vector<ThinSpot>& spots, double hmin,
+                                      std::vector<std::pair<int, double>>* faces) {
   struct Acc {
     Box3 box;
     double grow = 0, size = 1e300;
@@ -91,6 +92,7 @@ std::vector<SizingSource> thinSources(const std::vector<ThinSpot>& spots, double
     src.b = a.box.hi + Vec3::Constant(a.grow);
     src.metric = Metric3d::isotropic(a.size);
     out.push_back(src);
+    if (faces) faces->push_back({face, a.size});
   }
   return out;
 }

@@ -49,8 +49,10 @@ struct ThinSpot {
 std::vector<ThinSpot> findThinBoundary(const SolidTetMesh& s, const std::vector<std::array<int, 3>>& triangles,
                                        const std::vector<int>& triangleFace);
 
-/// One box source per face with thin spots (see above), faces in increasing order.
-std::vector<SizingSource> thinSources(const std::vector<ThinSpot>& spots, double hmin);
+/// One box source per face with thin spots (see above), faces in increasing order. With
+/// `faces`, it receives the (0-based face, size asked) of each source, in the same order.
+std::vector<SizingSource> thinSources(const std::vector<ThinSpot>& spots, double hmin,
+                                      std::vector<std::pair<int, double>>* faces = nullptr);
 
 /// Triangles the surface mesh would have with the sources: each triangle whose centroid
 /// lies in a source counts (mean edge / the smallest size of those sources)² when that is

@@ -85,6 +85,20 @@ r = run("mesh", os.path.join(models, "overlap2.step"), "-o", os.path.join(t, "o.
 check(r.returncode == 0 and re.search(r"warning: overlapping parts: part 1 'BOX_A' and part 2 'BOX_B' .*merged.*in part 1",
                                       r.stderr) is not None, "overlap2: the summary names the merged overlap")
 
+# thin walls: the faces refined and the smallest size asked, as the report has them
+thin = os.path.join(shared, "models", "periodic_u_cst.step")
+if os.path.exists(thin):
+    rep = os.path.join(t, "pu.json")
+    r = run("mesh", thin, "-o", os.path.join(t, "pu.msh"), "--hmax-rel", "0.5", "--curvature-ratio", "0.15",
+            "--report", rep)
+    px = json.load(open(rep))["proximity"] if r.returncode == 0 else {}
+    refined = px.get("refined", [])
+    m = re.search(r"thin walls: .*element size down to ([0-9.e+-]+) on face\(s\) ([0-9, ]+)\)", r.stderr)
+    check(px.get("rounds", 0) >= 1 and refined and m is not None
+          and abs(float(m.group(1)) - min(e["size"] for e in refined)) < 1e-5 * float(m.group(1))
+          and [int(x) for x in m.group(2).split(",")] == [e["face"] for e in refined],
+          f"periodic_u_cst: the thin-wall warning names the faces and size of the report ({r.stderr[-300:]})")
+
 # --- errors a new user meets
 r = run("mesh", bracket, "-o", t)
 check(r.returncode == 2 and "is a directory" in r.stderr and len(r.stderr.splitlines()) == 1,

@@ -97,6 +97,9 @@ void fillRunReport(const Model& model, const MeshResult& r, io::Report& report) 
                                  {"predicted_triangles", px.predictedTriangles},
                                  {"budget_factor", px.budgetFactor},
                                  {"seconds", px.seconds}};
+    nlohmann::ordered_json refined = nlohmann::ordered_json::array();
+    for (const auto& [f, h] : px.refined) refined.push_back({{"face", f + 1}, {"size", h}});
+    report.extra["proximity"]["refined"] = std::move(refined);
     fillVolumeReport(model, r.volume, report);
     // the repair stage before the volume and after its split rounds, as one count
     nlohmann::ordered_json& rec = report.extra["recovery"];

@@ -131,12 +131,29 @@ void addOverlapWarnings(const io::Report& r, std::vector<std::string>& out) {
   }
 }
 
+/// Faces the thin-wall warning lists by id.
+constexpr int kSummaryMaxFaces = 8;
+
 void addSizingWarnings(const io::Report& r, std::vector<std::string>& out) {
   const json& px = r.extra.contains("proximity") ? r.extra["proximity"] : json::object();
-  if (number(px, "rounds") > 0)
+  if (number(px, "rounds") > 0) {
+    // the faces refined (1-based, at most kSummaryMaxFaces) and the smallest size asked
+    std::string faces;
+    double smallest = 0;
+    int listed = 0, total = 0;
+    if (px.contains("refined"))
+      for (const json& e : px["refined"]) {
+        ++total;
+        const double h = number(e, "size");
+        if (smallest == 0 || h < smallest) smallest = h;
+        if (listed < kSummaryMaxFaces) faces += (listed++ ? ", " : "") + std::to_string(e.value("face", 0));
+      }
+    if (total > listed) faces += format(" and %.0f more", static_cast<double>(total - listed));
     out.push_back(format("thin walls: the surface was meshed again %.0f time(s), finer where a part is thinner "
-                         "than its elements (%.0f sizing sources); the element count grew accordingly",
-                         number(px, "rounds"), number(px, "faces_refined")));
+                         "than its elements (element size down to %g on face(s) ",
+                         number(px, "rounds"), smallest) +
+                  faces + "); the element count grew accordingly");
+  }
   const json& cs = r.extra.contains("coarse_solids") ? r.extra["coarse_solids"] : json::object();
   if (cs.value("refined_kept", false))
     out.push_back(format("%.0f solid(s) below the quality bar were meshed again with a finer surface",
