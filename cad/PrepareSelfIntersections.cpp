@@ -1,12 +1,15 @@
 #include <BOPAlgo_ArgumentAnalyzer.hxx>
 #include <BOPAlgo_MakerVolume.hxx>
+#include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRep_Builder.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
+#include <TopoDS_Solid.hxx>
 
 #include <cmath>
 #include <string>
@@ -21,6 +24,9 @@ namespace {
 /// Push_SMD_6.2x6.2mm solid 1, 109.684 -> 109.682; water_module solids 3, 8, 10 the same to
 /// 2e-5).
 constexpr double kRebuildVolumeRel = 5e-3;
+/// A shell of a rebuilt piece enclosing less than this fraction of the piece's volume is
+/// a sheet, dropped.
+constexpr double kFlatShellRel = 1e-9;
 
 bool selfInterfering(const TopoDS_Shape& solid) {
   BOPAlgo_ArgumentAnalyzer a;
@@ -44,8 +50,29 @@ bool nonManifold(const TopoDS_Shape& piece) {
   return false;
 }
 
-/// The solids with positive volume MakerVolume builds from the solid's faces; empty when
-/// they do not add up to its volume or one of them is not manifold.
+/// The piece without its shells that enclose no volume (sheets MakerVolume leaves inside a
+/// piece where faces crossed: water_module's solid 3 came with four, touching its outer
+/// shell along non-manifold edges).
+TopoDS_Shape withoutFlatShells(const TopoDS_Shape& piece, double pieceVolume) {
+  std::vector<TopoDS_Shape> kept;
+  int shells = 0;
+  for (TopExp_Explorer x(piece, TopAbs_SHELL); x.More(); x.Next()) {
+    ++shells;
+    BRepBuilderAPI_MakeSolid one(TopoDS::Shell(x.Current()));
+    if (one.IsDone() && std::abs(solidVolume(one.Shape())) > kFlatShellRel * std::abs(pieceVolume))
+      kept.push_back(x.Current());
+  }
+  if (kept.empty() || static_cast<int>(kept.size()) == shells) return piece;
+  BRep_Builder b;
+  TopoDS_Solid solid;
+  b.MakeSolid(solid);
+  for (const TopoDS_Shape& sh : kept) b.Add(solid, sh);
+  return solid;
+}
+
+/// The solids with positive volume MakerVolume builds from the solid's faces (without
+/// their flat shells); empty when they do not add up to its volume or one of them is not
+/// manifold.
 std::vector<TopoDS_Shape> rebuilt(const TopoDS_Shape& solid) {
   BOPAlgo_MakerVolume mv;
   TopTools_ListOfShape faces;
@@ -61,8 +88,9 @@ std::vector<TopoDS_Shape> rebuilt(const TopoDS_Shape& solid) {
   double total = 0;
   for (int k = 1; k <= out.Extent(); ++k)
     if (const double v = solidVolume(out(k)); v > 0) {
-      if (nonManifold(out(k))) return {};
-      pieces.push_back(out(k));
+      const TopoDS_Shape piece = withoutFlatShells(out(k), v);
+      if (nonManifold(piece)) return {};
+      pieces.push_back(piece);
       total += v;
     }
   const double before = std::abs(solidVolume(solid));
