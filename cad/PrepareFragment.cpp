@@ -1,8 +1,6 @@
 #include <BRepAlgoAPI_BuilderAlgo.hxx>
-#include <BRepGProp.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
-#include <GProp_GProps.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopTools_DataMapOfShapeInteger.hxx>
@@ -190,7 +188,7 @@ void assembleParts(CadModel::Impl& impl, const Arguments& args, const Fuse& f,
       keepsRegion = keepsRegion || r > 0;
       pieces.Append(f.images[i](k));
     }
-    const TopTools_ListOfShape solids = keepsRegion ? mergePieces(pieces, solidVolume(args.solids(i))) : pieces;
+    const TopTools_ListOfShape solids = keepsRegion ? mergePieces(pieces, args.volume[i]) : pieces;
     if (keepsRegion && solids.Extent() > 1)
       report.warnings.push_back(impl.solidName(args.originals(i), i) + " (solid " + std::to_string(i) +
                                 ") is " + std::to_string(solids.Extent()) + " solids after fragmenting");
@@ -201,12 +199,7 @@ void assembleParts(CadModel::Impl& impl, const Arguments& args, const Fuse& f,
       if (named) impl.nameIndex.Bind(s.Located(TopLoc_Location()), name);
     }
   }
-  TopTools_IndexedMapOfShape inSolid;
-  for (int i = 1; i <= args.originals.Extent(); ++i) TopExp::MapShapes(args.originals(i), TopAbs_FACE, inSolid);
-  TopTools_IndexedMapOfShape allFaces;
-  TopExp::MapShapes(impl.shape, TopAbs_FACE, allFaces);
-  for (int i = 1; i <= allFaces.Extent(); ++i)
-    if (!inSolid.Contains(allFaces(i))) b.Add(c, allFaces(i));
+  addLooseFaces(impl.shape, args.originals, c);
   impl.shape = c;
 }
 
@@ -220,16 +213,6 @@ int countSharedFaces(const TopoDS_Shape& shape) {
     if (distinct.Extent() >= 2) ++shared;
   }
   return shared;
-}
-
-double solidArea(const TopoDS_Shape& solid) {
-  try {
-    GProp_GProps g;
-    BRepGProp::SurfaceProperties(solid, g);
-    return g.Mass();
-  } catch (const Standard_Failure&) {
-    return 0;
-  }
 }
 
 /// Argument i with its wires mended (kWireFixVolumeRel); false when the fix changes
@@ -248,7 +231,7 @@ bool mendWires(Arguments& args, int i, double precision) {
     args.solids.Substitute(i, fixed);
     args.total += std::abs(v) - std::abs(args.volume[i]);
     args.volume[i] = v;
-    args.area[i] = solidArea(fixed);
+    args.area[i] = shapeArea(fixed);
     return true;
   } catch (const Standard_Failure&) {
     return false;
@@ -264,7 +247,7 @@ Arguments measureArguments(const TopoDS_Shape& shape) {
   for (int i = 1; i <= a.solids.Extent(); ++i) {
     a.volume[i] = solidVolume(a.solids(i));
     a.total += std::abs(a.volume[i]);
-    a.area[i] = solidArea(a.solids(i));
+    a.area[i] = shapeArea(a.solids(i));
   }
   return a;
 }

@@ -1,4 +1,5 @@
 #include <BOPAlgo_BuilderSolid.hxx>
+#include <BRep_Builder.hxx>
 #include <BRepGProp.hxx>
 #include <GProp_GProps.hxx>
 #include <Standard_Failure.hxx>
@@ -25,14 +26,32 @@ double volumeOfList(const TopTools_ListOfShape& solids) {
 
 }  // namespace
 
-double solidVolume(const TopoDS_Shape& solid) {
+namespace {
+
+/// GProp's mass of the shape (its volume, or with `area` its faces' area); 0 if OCCT fails.
+double mass(const TopoDS_Shape& shape, bool area) {
   try {
     GProp_GProps g;
-    BRepGProp::VolumeProperties(solid, g);
+    if (area) BRepGProp::SurfaceProperties(shape, g);
+    else BRepGProp::VolumeProperties(shape, g);
     return g.Mass();
   } catch (const Standard_Failure&) {
     return 0;
   }
+}
+
+}  // namespace
+
+double solidVolume(const TopoDS_Shape& solid) { return mass(solid, false); }
+double shapeArea(const TopoDS_Shape& shape) { return mass(shape, true); }
+
+void addLooseFaces(const TopoDS_Shape& shape, const TopTools_IndexedMapOfShape& solids, TopoDS_Compound& c) {
+  TopTools_IndexedMapOfShape inSolid, allFaces;
+  for (int i = 1; i <= solids.Extent(); ++i) TopExp::MapShapes(solids(i), TopAbs_FACE, inSolid);
+  TopExp::MapShapes(shape, TopAbs_FACE, allFaces);
+  BRep_Builder b;
+  for (int i = 1; i <= allFaces.Extent(); ++i)
+    if (!inSolid.Contains(allFaces(i))) b.Add(c, allFaces(i));
 }
 
 TopTools_ListOfShape mergePieces(const TopTools_ListOfShape& pieces, double partVolume) {

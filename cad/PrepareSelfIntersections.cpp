@@ -121,9 +121,7 @@ void rebuildSelfIntersecting(CadModel::Impl& impl, PrepareReport& report) {
   BRep_Builder b;
   TopoDS_Compound c;
   b.MakeCompound(c);
-  TopTools_IndexedMapOfShape inSolid;
   for (int i = 1; i <= solids.Extent(); ++i) {
-    TopExp::MapShapes(solids(i), TopAbs_FACE, inSolid);
     const std::vector<TopoDS_Shape>& pieces = replacement[static_cast<std::size_t>(i)];
     if (pieces.empty()) {
       b.Add(c, solids(i));
@@ -135,10 +133,7 @@ void rebuildSelfIntersecting(CadModel::Impl& impl, PrepareReport& report) {
       if (impl.nameIndex.IsBound(key)) impl.nameIndex.Bind(p.Located(TopLoc_Location()), impl.nameIndex.Find(key));
     }
   }
-  TopTools_IndexedMapOfShape allFaces;
-  TopExp::MapShapes(impl.shape, TopAbs_FACE, allFaces);
-  for (int i = 1; i <= allFaces.Extent(); ++i)
-    if (!inSolid.Contains(allFaces(i))) b.Add(c, allFaces(i));
+  addLooseFaces(impl.shape, solids, c);
   impl.shape = c;
   report.warnings.push_back("solid(s) " + fixed +
                             " had faces crossing one another: rebuilt from their faces, split where they cross");

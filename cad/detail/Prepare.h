@@ -1,7 +1,9 @@
 #pragma once
 // Internal: the preparation steps run by CadModel::prepare(), each its own operator.
 // Every step keeps the part names of solids: it rebinds impl.nameIndex for the images.
+#include <TopTools_IndexedMapOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
+#include <TopoDS_Compound.hxx>
 #include <functional>
 
 #include "cad/detail/CadModelImpl.h"
@@ -43,6 +45,12 @@ TopTools_ListOfShape mergePieces(const TopTools_ListOfShape& pieces, double part
 
 /// Volume of a solid (OCCT GProp), 0 if OCCT fails.
 double solidVolume(const TopoDS_Shape& solid);
+/// Area of a shape's faces (OCCT GProp), 0 if OCCT fails.
+double shapeArea(const TopoDS_Shape& shape);
+
+/// Adds to `c` the faces of `shape` that are in none of `solids` (loose faces, open shells):
+/// what a step that rebuilds the solids into a new compound keeps besides them.
+void addLooseFaces(const TopoDS_Shape& shape, const TopTools_IndexedMapOfShape& solids, TopoDS_Compound& c);
 
 /// Number of edges (not degenerate) bounding exactly one face of the shape.
 int countFreeEdges(const TopoDS_Shape& shape);
