@@ -2,7 +2,9 @@
 
 #include <Eigen/Geometry>
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <unordered_map>
 
 #include "mesher/highorder/MidEdgeGeometry.h"
@@ -59,10 +61,10 @@ std::vector<double> curvedSolidVolumes(const Model& model, const VolumeMesh& mes
   }
   const MidEdgeGeometry geometry(model, surface);
   std::unordered_map<std::uint64_t, Vec3> offset;  // mid node − chord midpoint, per mesh edge
-  std::unordered_map<int, double> bulge;           // per boundary triangle, its own orientation
+  // per boundary triangle, in its own orientation; NaN until computed
+  std::vector<double> bulge(surface.triangles.size(), std::numeric_limits<double>::quiet_NaN());
   auto bulgeOf = [&](int t) {
-    const auto found = bulge.find(t);
-    if (found != bulge.end()) return found->second;
+    if (!std::isnan(bulge[static_cast<std::size_t>(t)])) return bulge[static_cast<std::size_t>(t)];
     const auto& tri = surface.triangles[static_cast<std::size_t>(t)];
     const int face = surface.triangleFace[static_cast<std::size_t>(t)];
     const Vec3 n2 = (x[tri[1]] - x[tri[0]]).cross(x[tri[2]] - x[tri[0]]);  // 2A · unit normal
@@ -74,7 +76,7 @@ std::vector<double> curvedSolidVolumes(const Model& model, const VolumeMesh& mes
       sum += it->second.dot(n2);
     }
     const double v = sum / 6;  // A/3 · Σ d_k with A = |n2|/2 and d_k = offset · n2/|n2|
-    bulge.emplace(t, v);
+    bulge[static_cast<std::size_t>(t)] = v;
     return v;
   };
   // Outward faces of a positively oriented tetrahedron.
