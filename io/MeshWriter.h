@@ -22,9 +22,10 @@
 // Quadratic meshes (SurfaceMesh::triangleMid etc. non-empty) give the quadratic element
 // types of each format, in that format's node order (io/ElementOrder.h).
 // Every writer writes to a temporary file and renames it: no partial file is ever left.
-// Throws InputError for an unknown extension or a bad option, MeshingError for an I/O
-// failure.
+// Throws InputError for an unknown extension or a bad option (node data for a format
+// without it), MeshingError for an I/O failure or node data of the wrong size.
 #include <string>
+#include <vector>
 
 #include "mesher/model/Model.h"
 #include "mesher/surface/SurfaceMesh.h"
@@ -32,9 +33,20 @@
 
 namespace aniso::io {
 
+/// A data array at the nodes written with the mesh (`adapt --transfer`): `components`
+/// values per node of the written mesh (all its nodes, mid-edge ones too, in order),
+/// node-major. MSH: a $NodeData section (time step 0; Gmsh itself shows 1, 3 or 9
+/// components); VTU: a Float64 PointData array.
+struct NodeData {
+  std::string name;
+  int components = 1;
+  std::vector<double> values;
+};
+
 struct WriteOptions {
   bool binary = false;   ///< MSH, VTU, STL
   int mshVersion = 41;   ///< 41 or 22
+  std::vector<NodeData> nodeData;  ///< .msh and .vtu only (InputError for the other formats)
 };
 
 void writeSurfaceMesh(const Model& model, const SurfaceMesh& mesh, const std::string& path,

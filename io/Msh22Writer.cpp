@@ -69,6 +69,7 @@ void writeMsh22(const OutputMesh& m, const std::string& path, const WriteOptions
     }
   }
   w.endSection("$EndElements");
+  for (const NodeData& d : opt.nodeData) writeMshNodeData(w, d);
   file.commit();
 }
 

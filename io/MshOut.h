@@ -126,4 +126,20 @@ inline void writeMshHeader(std::ostream& o, const char* version, bool binary, co
   o << "$EndPhysicalNames\n";
 }
 
+/// A $NodeData section (MSH 4.1 and 2.2 alike): one string tag (the quoted name, '"'
+/// becoming '_'), one real tag (time 0), three integer tags (step 0, components, node
+/// count), then per node its tag (index + 1; int32 in binary) and its values.
+inline void writeMshNodeData(MshOut& w, const NodeData& d) {
+  std::string name = d.name;
+  std::replace(name.begin(), name.end(), '"', '_');
+  const std::size_t n = d.values.size() / static_cast<std::size_t>(d.components);
+  w.text("$NodeData\n1\n\"" + name + "\"\n1\n0\n3\n0\n" + std::to_string(d.components) + "\n" + std::to_string(n) + "\n");
+  for (std::size_t i = 0; i < n; ++i) {
+    w.value<int>(static_cast<int>(i) + 1);
+    for (int c = 0; c < d.components; ++c) w.value<double>(d.values[i * d.components + c]);
+    w.endLine();
+  }
+  w.endSection("$EndNodeData");
+}
+
 }  // namespace aniso::io

@@ -236,6 +236,7 @@ void writeMsh41(const OutputMesh& m, const std::string& path, const WriteOptions
   writeEntities(m, w, byEntity);
   writeNodes(m, w, byEntity);
   writeElements(m, w);
+  for (const NodeData& d : opt.nodeData) writeMshNodeData(w, d);
   file.commit();
 }
 

@@ -1,6 +1,7 @@
 // VTK XML unstructured grid (.vtu) writer: ASCII, or with `binary` inline base64 data
 // arrays (format="binary", header_type="UInt64": each array is base64 of its byte count
-// followed by its bytes). Cells: the triangles, the quads, then the tetrahedra.
+// followed by its bytes). Cells: the triangles, the quads, then the tetrahedra. Node data
+// (WriteOptions::nodeData) as PointData arrays.
 #include <bit>
 #include <cstdint>
 #include <cstring>
@@ -65,6 +66,19 @@ class VtuOut {
   bool binary_;
 };
 
+/// `s` with XML's special characters as entities (an attribute value in double quotes).
+std::string xmlEscaped(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '&') out += "&amp;";
+    else if (c == '<') out += "&lt;";
+    else if (c == '>') out += "&gt;";
+    else if (c == '"') out += "&quot;";
+    else out += c;
+  }
+  return out;
+}
+
 std::uint8_t vtkType(Shape s, bool quadratic) {
   switch (s) {
     case Shape::Triangle: return quadratic ? 22 : 5;
@@ -112,7 +126,13 @@ void writeVtu(const OutputMesh& m, const std::string& path, const WriteOptions& 
   w.array("Int64", "connectivity", 1, connectivity);
   w.array("Int64", "offsets", 1, offsets);
   w.array("UInt8", "types", 1, types);
-  o << "      </Cells>\n      <CellData Scalars=\"quality\">\n";
+  o << "      </Cells>\n";
+  if (!opt.nodeData.empty()) {
+    o << "      <PointData>\n";
+    for (const NodeData& d : opt.nodeData) w.array("Float64", xmlEscaped(d.name).c_str(), d.components, d.values);
+    o << "      </PointData>\n";
+  }
+  o << "      <CellData Scalars=\"quality\">\n";
   w.array("Int32", "region", 1, region);
   w.array("Int32", "face", 1, face);
   w.array("Float64", "quality", 1, quality);

@@ -14,6 +14,12 @@ void write(const OutputMesh& m, const std::string& path, const WriteOptions& opt
                      ext == ".obj" || ext == ".off";
   if (!known) throw InputError(path + ": unknown output format (expected .msh .inp .vtu .unv .stl .obj .off)");
   m.check(path);
+  for (const NodeData& d : opt.nodeData) {
+    if (ext != ".msh" && ext != ".vtu") throw InputError(path + ": node data (" + d.name + ") is written to .msh and .vtu only");
+    if (d.components < 1 || d.values.size() != m.nodes().size() * static_cast<std::size_t>(d.components))
+      throw MeshingError(path + ": node data " + d.name + " has " + std::to_string(d.values.size()) + " values for " +
+                         std::to_string(m.nodes().size()) + " nodes");
+  }
   if (ext == ".msh") return opt.mshVersion == 22 ? writeMsh22(m, path, opt) : writeMsh41(m, path, opt);
   if (ext == ".inp") return writeInp(m, path);
   if (ext == ".vtu") return writeVtu(m, path, opt);

@@ -10,18 +10,12 @@ t=$(mktemp -d); trap 'rm -rf "$t"' EXIT
 ANISOMESH=$cli timeout 600 bash "$src/tools/examples/adapt_ccx/adapt_loop.sh" "$models/cantilever.step" "$t/loop" 1 3000 \
   > "$t/loop.log" 2>&1 || { echo "adapt_loop failed: $(tail -3 "$t/loop.log")"; exit 1; }
 cat "$t/loop.log"
-/usr/bin/python3 - "$t/loop" <<'PY' || exit 1
+/usr/bin/python3 - "$t/loop" "$src/tools/examples/adapt_ccx" <<'PY' || exit 1
 import json, math, sys
 d = sys.argv[1]
-lines = open(d + "/r0/job.frd").read().splitlines()
-start = max(i for i, l in enumerate(lines) if l.startswith(" -4  STRESS"))
-vm = []
-for l in lines[start + 1:]:
-    if l.startswith(" -3"): break
-    if not l.startswith(" -1"): continue
-    s = [float(l[13 + 12 * c: 25 + 12 * c]) for c in range(6)]
-    a, b, c = s[0] - s[1], s[1] - s[2], s[2] - s[0]
-    vm.append(math.sqrt(0.5 * (a * a + b * b + c * c) + 3 * (s[3] ** 2 + s[4] ** 2 + s[5] ** 2)))
+sys.path.insert(0, sys.argv[2])
+from ccxlib import frd_mises
+vm = list(frd_mises(d + "/r0/job.frd").values())
 r = json.load(open(d + "/r1/report.json"))
 ad = r.get("extra", r)["adapt"]
 n = r["counts"]["nodes"]

@@ -3,7 +3,8 @@
 // to a node count or an error; mesher/adapt/), the metric at the old mesh's nodes becomes
 // discrete point sources (thesis 3.3.1; mesher/sizing/PointSizing.h) intersected with the
 // geometric sizing, and MODEL is meshed as by `anisomesh mesh` — the new boundary nodes lie
-// on the CAD surfaces. The report gets an "adapt" block.
+// on the CAD surfaces. The report gets an "adapt" block. --transfer writes the field's
+// array (all components) at the new nodes into the output (.msh / .vtu; FieldTransfer.h).
 #include <unistd.h>
 
 #include <algorithm>
@@ -13,9 +14,11 @@
 
 #include "io/readers/ReadMesh.h"
 #include "io/readers/fields/NodalField.h"
+#include "mesher/adapt/FieldTransfer.h"
 #include "mesher/adapt/HessianRecovery.h"
 #include "mesher/adapt/LpMetric.h"
 #include "mesher/core/Error.h"
+#include "mesher/core/FileExtension.h"
 #include "mesher/core/Log.h"
 #include "mesher/volume/VolumeControlSpace.h"
 #include "tools/cli/AdaptCommand.h"
@@ -127,6 +130,19 @@ nlohmann::json adaptSizing(const AdaptArgs& a, const io::ReadMesh& old, const Pa
           {"anisotropy", lp.anisotropy}};
 }
 
+/// --transfer: the field's whole array at the new nodes, the report's adapt block told how
+/// many lay outside the old mesh and how far.
+NodeDataHook transferHook(const PatchMesh& p, const io::NodalField& field) {
+  return [&p, &field](const std::vector<Vec3>& nodes, nlohmann::ordered_json& extra) {
+    const TransferredField t = transferField(p, field.arrayValues, field.components, nodes);
+    extra["adapt"]["transfer"] = {{"array", field.arrayName},
+                                  {"components", field.components},
+                                  {"nodes_outside", t.outside},
+                                  {"max_distance_outside", t.maxDistance}};
+    return std::vector<io::NodeData>{{field.arrayName, field.components, t.values}};
+  };
+}
+
 }  // namespace
 
 CLI::App* addAdaptCommand(CLI::App& app, AdaptArgs& a) {
@@ -144,6 +160,7 @@ CLI::App* addAdaptCommand(CLI::App& app, AdaptArgs& a) {
   cmd->add_option("--dim", a.mesh.options.dim, "2 or 3 (default: that of the field's mesh)")->check(CLI::IsMember({2, 3}));
   cmd->add_option("--order", a.mesh.options.order, "Element order")->check(CLI::IsMember({1, 2}))->capture_default_str();
   cmd->add_flag("--binary", a.mesh.binary, "Binary output where the format has it");
+  cmd->add_flag("--transfer", a.transfer, "Write the field (all its components) at the new nodes (.msh .vtu)");
   cmd->add_option("--report", a.mesh.report, "Write the JSON run report here");
   cmd->fallthrough();
   return cmd;
@@ -154,6 +171,9 @@ int runAdapt(const AdaptArgs& given) {
   if (a.targetNodes > 0 && a.error > 0) throw InputError("adapt: give --target-nodes or --error, not both");
   if (!(a.norm >= 1)) throw InputError("adapt: --norm must be at least 1");
   if (!(a.mesh.options.sizing.anisotropy >= 1)) throw InputError("adapt: --anisotropy must be at least 1");
+  const std::string ext = lowerExtension(a.mesh.output);
+  if (a.transfer && ext != ".msh" && ext != ".vtu")
+    throw InputError(a.mesh.output + ": --transfer writes the field into .msh or .vtu only");
   // the field first: a bad one fails before the model is read
   const io::ReadMesh old = io::readMesh(a.from);
   const io::NodalField field = io::selectField(old, a.field, a.from);
@@ -164,7 +184,8 @@ int runAdapt(const AdaptArgs& given) {
   m.extraSizing = [&a, &old, &p, &field](const Model& model, UserSizing& user) {
     return adaptSizing(a, old, p, field, model, user);
   };
-  if (a.error > 0) return runMesh(m);
+  const NodeDataHook nodeData = a.transfer ? transferHook(p, field) : NodeDataHook();
+  if (a.error > 0) return runMesh(m, nodeData);
   if (!(a.targetNodes > 0)) a.targetNodes = static_cast<double>(old.nodes.size());
   // the count made is read from the report: a temporary one when none is asked
   const bool ownReport = m.report.empty();
@@ -178,7 +199,7 @@ int runAdapt(const AdaptArgs& given) {
   double prevScaled = 0, prevMade = 0;
   a.metricTarget = scaled;
   for (int round = 1;; ++round) {
-    const int rc = runMesh(m);
+    const int rc = runMesh(m, nodeData);
     if (rc != 0 || round == kMaxCountRounds) return rc;
     std::ifstream in(m.report);
     const double made = nlohmann::json::parse(in, nullptr, false).value("/counts/nodes"_json_pointer, 0.0);

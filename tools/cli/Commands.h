@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cad/CadModel.h"
+#include "io/MeshWriter.h"
 #include "mesher/core/MeshOptions.h"
 #include "mesher/sizing/UserSizing.h"
 #include "tools/app/MeshArgs.h"
@@ -24,7 +25,10 @@ struct InfoArgs {
 int runInfo(const InfoArgs& args);
 
 using app::MeshArgs;
-int runMesh(const MeshArgs& args);
+/// Called once the mesh is made, before it is written: data arrays at its nodes to write
+/// with it (adapt --transfer); may add to the report's `extra` block.
+using NodeDataHook = std::function<std::vector<io::NodeData>(const std::vector<Vec3>& nodes, nlohmann::ordered_json& extra)>;
+int runMesh(const MeshArgs& args, const NodeDataHook& nodeData = {});
 
 struct AdaptArgs {
   MeshArgs mesh;           ///< model, output, report, order, sizing options
@@ -36,6 +40,7 @@ struct AdaptArgs {
   std::string hessian = "ls";  ///< --hessian: ls (least squares) or l2 (double L2 projection)
   double metricTarget = 0;     ///< the vertex count the metric is scaled to (set by runAdapt)
   double firstNodes = 0;       ///< the first mesh's count, when it was made again
+  bool transfer = false;       ///< --transfer: the field's array interpolated to the new nodes
 };
 /// anisomesh adapt (AdaptCommand.cpp): the mesh of MODEL adapted to a field of a solver's
 /// mesh (issue 19).

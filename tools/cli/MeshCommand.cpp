@@ -64,7 +64,7 @@ bool isKnownOutputExtension(const std::string& path) {
 }
 
 /// Reads the model, meshes it (tools/app/MeshRun.h), writes the mesh and the report.
-static int meshRun(const MeshArgs& given, io::Report& report) {
+static int meshRun(const MeshArgs& given, io::Report& report, const NodeDataHook& nodeData) {
   MeshArgs args = given;
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
@@ -76,6 +76,7 @@ static int meshRun(const MeshArgs& given, io::Report& report) {
   io::WriteOptions wopt;
   wopt.binary = args.binary;
   wopt.mshVersion = args.mshVersion;
+  if (nodeData) wopt.nodeData = nodeData((result.volumeRan ? result.volume.mesh.surface : result.surface.mesh).nodes, report.extra);
   const auto tw = Clock::now();
   if (result.volumeRan) io::writeVolumeMesh(model, result.volume.mesh, args.output, wopt);
   else io::writeSurfaceMesh(model, result.surface.mesh, args.output, wopt);
@@ -86,13 +87,13 @@ static int meshRun(const MeshArgs& given, io::Report& report) {
 
 /// --time-limit: the token every mesher checks (mesher/core/Cancel.h); when it fires, the
 /// report says failed, no mesh is written, and the one line names the phase (exit 3).
-int runMesh(const MeshArgs& given) {
+int runMesh(const MeshArgs& given, const NodeDataHook& nodeData) {
   const auto t0 = std::chrono::steady_clock::now();
   MeshArgs args = given;
   if (args.timeLimit > 0) args.options.cancel = std::make_shared<const CancelToken>(args.timeLimit);
   io::Report report;
   try {
-    const int rc = meshRun(args, report);
+    const int rc = meshRun(args, report, nodeData);
     printRunSummary(report, args.output);
     return rc;
   } catch (const Cancelled& e) {

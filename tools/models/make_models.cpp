@@ -1,6 +1,6 @@
 // make_models: writes anisomesh's own sample models as STEP AP214 through XCAF.
 //
-//   make_models OUTDIR        build the models and write OUTDIR/{bracket,assembly2,plate,cylinder,cantilever,blocks2,passage,overlap2,cube}.step
+//   make_models OUTDIR        build the models and write OUTDIR/{bracket,assembly2,plate,cylinder,cantilever,blocks2,passage,overlap2,cube,holeplate}.step
 //   make_models --check FILE  read FILE with STEPCAFControl_Reader and print solids, volume, part names
 //
 // Output is deterministic: the STEP header (name, time stamp, author, organization,
@@ -196,6 +196,14 @@ TopoDS_Shape makeCantilever() { return box(0, 0, 0, 100, 10, 10); }
 
 /// Cube 10 × 10 × 10 from the origin, for the adapt tests (issue 19).
 TopoDS_Shape makeCube() { return box(0, 0, 0, 10, 10, 10); }
+
+/// Plate 200 × 100 × 5 from the origin with a Ø20 through-hole at its centre (100, 50): the
+/// stress concentration benchmark of the adapt command (tools/bench/adapt_holeplate.py;
+/// d/W = 0.2, Peterson's net-section K_t 2.51). OCCT's box faces x = 0 and x = 200 come first.
+TopoDS_Shape makeHolePlate() {
+  TopoDS_Shape p = box(0, 0, 0, 200, 100, 5);
+  return cut(p, cylinder(gp_Pnt(100, 50, -1), gp_Dir(0, 0, 1), 10.0, 7.0), "holeplate hole");
+}
 
 
 // ---------------------------------------------------------------- XCAF / STEP
@@ -492,6 +500,7 @@ int main(int argc, char** argv) {
     writePart(makePassage(), "PASSAGE", out / "passage.step");  // a surface model: no solid
     writeOverlap2(out / "overlap2.step");
     writeSinglePart(makeCube(), "CUBE", out / "cube.step");
+    writeSinglePart(makeHolePlate(), "HOLEPLATE", out / "holeplate.step");
     return 0;
   } catch (const Standard_Failure& e) {
     std::cerr << "make_models: OCCT exception: " << e.GetMessageString() << "\n";

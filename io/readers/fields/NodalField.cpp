@@ -91,6 +91,29 @@ Extract extractor(const MeshData& d, const std::string& comp, const std::string&
   return fail("unknown component '" + comp + "'");
 }
 
+/// The value `f` gives at every node of `mesh`: from node data, or element data averaged
+/// (NaN at a node no element with a finite value uses).
+std::vector<double> atNodes(const ReadMesh& mesh, const MeshData& d, bool perCell, const Extract& f) {
+  const std::size_t n = mesh.nodes.size();
+  std::vector<double> out(n);
+  if (!perCell) {
+    for (std::size_t i = 0; i < n; ++i) out[i] = f(d.values.data() + i * d.components);
+    return out;
+  }
+  std::vector<double> sum(n, 0.0);
+  std::vector<int> count(n, 0);
+  for (std::size_t e = 0; e < mesh.cellCount(); ++e) {
+    const double v = f(d.values.data() + e * d.components);
+    if (!std::isfinite(v)) continue;
+    for (int k = 0; k < mesh.cellSize(e); ++k) {
+      sum[mesh.cell(e)[k]] += v;
+      ++count[mesh.cell(e)[k]];
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) out[i] = count[i] ? sum[i] / count[i] : std::nan("");
+  return out;
+}
+
 }  // namespace
 
 double vonMises(const double* s) {
@@ -121,26 +144,16 @@ NodalField selectField(const ReadMesh& mesh, const std::string& spec, const std:
   const bool perCell = !d;
   if (!d) d = findArray(mesh.cellData, name);
   if (!d) throw InputError(path + ": no field '" + name + "' (the file has: " + available(mesh) + ")");
-  const Extract f = extractor(*d, comp, path);
   NodalField out;
   out.name = spec;
+  out.values = atNodes(mesh, *d, perCell, extractor(*d, comp, path));
+  out.arrayName = d->name;
+  out.components = d->components;
   const std::size_t n = mesh.nodes.size();
-  if (!perCell) {
-    out.values.resize(n);
-    for (std::size_t i = 0; i < n; ++i) out.values[i] = f(d->values.data() + i * d->components);
-  } else {  // element data averaged to the nodes
-    std::vector<double> sum(n, 0.0);
-    std::vector<int> count(n, 0);
-    for (std::size_t e = 0; e < mesh.cellCount(); ++e) {
-      const double v = f(d->values.data() + e * d->components);
-      if (!std::isfinite(v)) continue;
-      for (int k = 0; k < mesh.cellSize(e); ++k) {
-        sum[mesh.cell(e)[k]] += v;
-        ++count[mesh.cell(e)[k]];
-      }
-    }
-    out.values.resize(n);
-    for (std::size_t i = 0; i < n; ++i) out.values[i] = count[i] ? sum[i] / count[i] : std::nan("");
+  out.arrayValues.resize(n * d->components);
+  for (int c = 0; c < d->components; ++c) {
+    const std::vector<double> v = atNodes(mesh, *d, perCell, [c](const double* x) { return x[c]; });
+    for (std::size_t i = 0; i < n; ++i) out.arrayValues[i * d->components + c] = v[i];
   }
   // nodes no element uses carry no information (and may have no value)
   std::vector<char> used(n, 0);

@@ -27,6 +27,11 @@ namespace aniso::io {
 struct NodalField {
   std::string name;            ///< the spec, as given
   std::vector<double> values;  ///< one per node of the mesh
+  /// The whole array the spec names (all its components, element data averaged as above):
+  /// what `adapt --transfer` carries to the new mesh. Node-major, `components` per node.
+  std::string arrayName;
+  int components = 1;
+  std::vector<double> arrayValues;
 };
 
 /// The selected scalar of `mesh`, read from `path` (named in the messages).
