@@ -2,6 +2,8 @@
 the analytic fields of issue 19, an independent quadrature of the P1 interpolation error,
 and the three mesh sequences compared (uniform, isotropic and anisotropic adaptation).
 Needs numpy and meshio (/usr/bin/python3 on Debian)."""
+import contextlib
+import io
 import json
 import os
 import subprocess
@@ -72,9 +74,15 @@ def interpolation_error(points, cells, f, d, n=None, chunk=20000):
     return np.sqrt(total), peak
 
 
+def read_mesh(path):
+    """meshio.read without the empty line meshio prints for our MSH files."""
+    with contextlib.redirect_stdout(io.StringIO()):
+        return meshio.read(path)
+
+
 def read_simplices(path, d, scale):
     """The points (divided by `scale`) and the triangles (d = 2) or tetrahedra (d = 3) of a mesh."""
-    m = meshio.read(path)
+    m = read_mesh(path)
     key = "triangle" if d == 2 else "tetra"
     cells = np.vstack([b.data for b in m.cells if b.type == key])
     return m.points / scale, cells
@@ -116,7 +124,7 @@ class Case:
 
     def sample(self, mesh, field, out):
         """Writes `field` at the nodes of `mesh` as point data "f" of an MSH file."""
-        m = meshio.read(mesh)
+        m = read_mesh(mesh)
         key = "triangle" if self.d == 2 else "tetra"
         cells = [b for b in m.cells if b.type == key]
         meshio.Mesh(m.points, cells, point_data={"f": FIELDS[field](m.points[:, :self.d] / self.scale)}).write(
@@ -138,16 +146,18 @@ def load_report(path):
 
 
 def metric_quality(report, d):
-    """(μ_M mean, η_M mean) of a run report: the surface's for d = 2, the volume's for d = 3."""
-    q = report["quality"] if d == 2 else report["volume"]["quality"]
+    """(μ_M mean, η_M mean) of a run report: the surface's for d = 2, the tetrahedra's (in the
+    metric of the tets, M_v) for d = 3."""
+    q = report["quality"] if d == 2 else report["quality"]["volume"]
     return q["mu_M"]["mean"], q["eta_M"]["mean"]
 
 
-def sequence(case, field, targets, variant, tag):
+def sequence(case, field, targets, variant, tag, passes=2):
     """Rows (nodes, L2, L∞, μ_M, η_M) of one variant over the node counts `targets`:
     'uniform' meshes of about each count; 'iso' / 'aniso' adaptation (γ_a = 1 / 10), level k
-    adapted from level k-1's mesh (level 0: the uniform mesh of targets[0] nodes) with the
-    field sampled at its nodes."""
+    adapted `passes` times to its count, the first pass from level k-1's mesh (level 0: the
+    uniform mesh of targets[0] nodes), each from the field sampled at the previous mesh's nodes
+    (a second pass at the same count brings mesh and metric together)."""
     rows = []
     prev = None
     for k, n in enumerate(targets):
@@ -157,9 +167,10 @@ def sequence(case, field, targets, variant, tag):
             rep = case.uniform_for(start, n)
             if variant != "uniform":
                 prev = start
-        if variant != "uniform":
+        for p in range(passes if variant != "uniform" else 0):
             src = prev + ".f.msh"
             case.sample(prev, field, src)
+            out = os.path.join(case.work, f"{tag}-{variant}-{k}-{p}.msh")
             rep = case.adapt(src, out, n, 1 if variant == "iso" else 10)
             prev = out
         l2, linf = case.error(out, field)

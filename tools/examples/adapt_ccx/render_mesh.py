@@ -2,6 +2,7 @@
 """A PNG of a mesh rendered offscreen with VTK: its surface with the element edges drawn,
 coloured by a point-data array when one is named (e.g. a field written by adapt --transfer).
 
+Needs a display: on a machine without one, run it under xvfb-run.
 usage: render_mesh.py MESH.vtu OUT.png [--array NAME] [--view top|iso] [--size W H] [--zoom Z] [--focus X Y Z]
 """
 import argparse
@@ -39,6 +40,7 @@ def main():
         mapper.SetScalarRange(data.GetRange(-1))
         lut = vtk.vtkLookupTable()
         lut.SetHueRange(0.667, 0.0)
+        lut.SetVectorModeToMagnitude()
         lut.Build()
         mapper.SetLookupTable(lut)
     else:
