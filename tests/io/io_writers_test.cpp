@@ -15,6 +15,7 @@
 #include "io/ElementOrder.h"
 #include "io/MeshWriter.h"
 #include "io/OutputMesh.h"
+#include "io/readers/ReadMesh.h"
 #include "mesher/core/Error.h"
 #include "tests/io/BoxFixture.h"
 
@@ -158,6 +159,37 @@ TEST(IoWriters, FailuresLeaveNoFile) {
   vm.tets[0][2] = 10000;  // a node out of range
   EXPECT_THROW(writeVolumeMesh(model, vm, (d / "b.inp").string()), MeshingError);
   EXPECT_TRUE(fs::is_empty(d));
+}
+
+TEST(IoWriters, NodeDataIsReadBackFromEveryEncoding) {
+  const Vec3 size(1, 1, 1);
+  const Model model = fx::boxModel(size, "BOX");
+  const VolumeMesh vm = fx::boxTets(size, {2, 1, 1}, true);
+  NodeData d{"u", 3, {}};
+  for (const Vec3& p : vm.surface.nodes) d.values.insert(d.values.end(), {p.x() + 0.1, 2 * p.y(), -p.z() / 3});
+  const TempDir dir;
+  for (const char* name : {"a.msh", "a.vtu"})
+    for (int version : {41, 22})
+      for (bool binary : {false, true}) {
+        WriteOptions o;
+        o.binary = binary;
+        o.mshVersion = version;
+        o.nodeData = {d};
+        const std::string path = (dir.path / name).string();
+        writeVolumeMesh(model, vm, path, o);
+        const ReadMesh back = readMesh(path);
+        ASSERT_EQ(back.pointData.size(), 1u) << name << " " << version << " " << binary;
+        EXPECT_EQ(back.pointData[0].name, "u");
+        EXPECT_EQ(back.pointData[0].components, 3);
+        EXPECT_EQ(back.pointData[0].values, d.values) << name << " " << version << " " << binary;
+      }
+  WriteOptions o;
+  o.nodeData = {d};
+  EXPECT_THROW(writeVolumeMesh(model, vm, (dir.path / "a.inp").string(), o), InputError);
+  o.nodeData[0].values.pop_back();
+  EXPECT_THROW(writeVolumeMesh(model, vm, (dir.path / "b.msh").string(), o), MeshingError);
+  EXPECT_FALSE(fs::exists(dir.path / "a.inp"));
+  EXPECT_FALSE(fs::exists(dir.path / "b.msh"));
 }
 
 TEST(IoWriters, QualityOfRegularElements) {

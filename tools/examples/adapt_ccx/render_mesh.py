@@ -4,6 +4,7 @@ coloured by a point-data array when one is named (e.g. a field written by adapt 
 
 Needs a display: on a machine without one, run it under xvfb-run.
 usage: render_mesh.py MESH.vtu OUT.png [--array NAME] [--view top|iso] [--size W H] [--zoom Z] [--focus X Y Z]
+                      [--colors N]   (a palette of N colours, with PIL: a smaller file)
 """
 import argparse
 
@@ -19,6 +20,7 @@ def main():
     ap.add_argument("--size", type=int, nargs=2, default=[1200, 800])
     ap.add_argument("--zoom", type=float, default=1.0)
     ap.add_argument("--focus", type=float, nargs=3, help="look at this point (default: the mesh's centre)")
+    ap.add_argument("--colors", type=int, default=0, help="reduce the PNG to a palette of this many colours (PIL)")
     a = ap.parse_args()
 
     reader = vtk.vtkXMLUnstructuredGridReader()
@@ -83,6 +85,9 @@ def main():
     writer.SetFileName(a.png)
     writer.SetInputConnection(grab.GetOutputPort())
     writer.Write()
+    if a.colors:
+        from PIL import Image
+        Image.open(a.png).convert("P", palette=Image.ADAPTIVE, colors=a.colors).save(a.png, optimize=True)
 
 
 if __name__ == "__main__":
