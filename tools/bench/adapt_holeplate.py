@@ -159,7 +159,8 @@ def main():
         for n, kt, what in rows:
             print(f"| {name} | {what} | {n} | {kt:.4f} | {100 * (kt / ref - 1):+.2f} % |")
     nu, na = nodes_for(uniform, ref), nodes_for(adapted, ref)
-    print(f"\nnodes for K_t within {100 * TOLERANCE:.0f} %: uniform {nu}, adapted {na}"
+    print(f"\nnodes for K_t within {100 * TOLERANCE:.0f} %: uniform {nu or 'none of the runs'}, "
+          f"adapted {na or 'none of the runs'}"
           + (f" (ratio {nu / na:.1f})" if nu and na else ""))
     if not a.keep:
         subprocess.run(["rm", "-rf", work])
