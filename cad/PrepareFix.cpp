@@ -8,7 +8,7 @@
 
 namespace aniso::cad::detail {
 
-void fixShape(CadModel::Impl& impl, double diag, PrepareReport& report) {
+void fixShape(CadModel::Impl& impl, double diag, const std::vector<int>& check, PrepareReport& report) {
   try {
     Handle(ShapeFix_Shape) fixer = new ShapeFix_Shape(impl.shape);
     // Fixes may not open gaps larger than a small fraction of the model.
@@ -45,7 +45,7 @@ void fixShape(CadModel::Impl& impl, double diag, PrepareReport& report) {
         if (impl.nameIndex.IsBound(key) && !impl.nameIndex.IsBound(fk)) impl.nameIndex.Bind(fk, impl.nameIndex.Find(key));
       }
     impl.shape = fixed;
-    rebuildSelfIntersecting(impl, report);
+    rebuildSelfIntersecting(impl, check, report);
   } catch (const Standard_Failure& e) {
     report.warnings.push_back(std::string("shape fixing failed (") + e.GetMessageString() +
                               "); the shape is kept as read");
