@@ -21,7 +21,10 @@
 //    meaning as ModelFace.reversed.
 //  - Edges with INTERNAL or EXTERNAL orientation in a face get a pcurve on it but are in no
 //    loop and do not count for a shell's closedness. A face itself met as INTERNAL or
-//    EXTERNAL is treated as FORWARD (reversed = false).
+//    EXTERNAL is treated as FORWARD (reversed = false) and is in no ModelShell's faces; an
+//    INTERNAL face of a solid's shell is one of the solid's embedded faces (a crack when
+//    its shell has no other face: ModelSolid::embedded), a shell of only such faces is
+//    neither the outer shell's nor a void shell.
 #include "cad/TopologyBuilder.h"
 
 #include <BRepBndLib.hxx>
@@ -43,6 +46,7 @@
 #include <TopoDS_Vertex.hxx>
 #include <TopoDS_Wire.hxx>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -253,6 +257,7 @@ void buildShell(const ShapeMaps& maps, int si, Model& model) {
   ModelShell& ms = model.shells[si];
   std::vector<int> uses(model.edges.size(), 0);
   for (TopExp_Explorer f(maps.shells(si + 1), TopAbs_FACE); f.More(); f.Next()) {
+    if (!isForwardOrReversed(f.Current().Orientation())) continue;  // inside the material: ModelSolid::embedded
     ms.faces.push_back({indexIn(maps.faces, f.Current(), "face"),
                         f.Current().Orientation() == TopAbs_REVERSED});
     for (TopExp_Explorer e(f.Current(), TopAbs_EDGE); e.More(); e.Next()) {
@@ -311,8 +316,23 @@ void buildSolid(const ShapeMaps& maps, int si, Model& model,
   } catch (const Standard_Failure&) {
     ms.cadVolume = 0;  // not known
   }
-  for (const TopoDS_Shape& s : shells)
-    if (!s.IsSame(outer)) ms.voidShells.push_back(indexIn(maps.shells, s, "shell"));
+  for (const TopoDS_Shape& s : shells) {
+    // Faces met INTERNAL lie inside the material. A shell made only of them encloses no
+    // volume (OCCT's way of keeping a face inside a solid, e.g. after a general fuse of
+    // the solid with the face): a zero-thickness shell, i.e. a crack; INTERNAL faces in a
+    // shell that bounds the solid are a bonded interface.
+    std::vector<int> internal;
+    bool bounding = false;
+    for (TopExp_Explorer f(s, TopAbs_FACE); f.More(); f.Next()) {
+      if (f.Current().Orientation() == TopAbs_INTERNAL) internal.push_back(indexIn(maps.faces, f.Current(), "face"));
+      else bounding = bounding || f.Current().Orientation() != TopAbs_EXTERNAL;
+    }
+    for (const int f : internal) {
+      const bool seen = std::any_of(ms.embedded.begin(), ms.embedded.end(), [&](const EmbeddedFace& e) { return e.face == f; });
+      if (!seen) ms.embedded.push_back({f, !bounding});
+    }
+    if (!s.IsSame(outer) && bounding) ms.voidShells.push_back(indexIn(maps.shells, s, "shell"));
+  }
 }
 
 void buildSolids(const ShapeMaps& maps, Model& model,

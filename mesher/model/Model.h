@@ -78,10 +78,21 @@ struct ModelShell {
   bool closed = false;  ///< every edge (not degenerate, not seam) used by exactly two faces
 };
 
+/// A face inside a solid's material: both of its sides are the solid (a crack, an internal
+/// interface, a baffle; Gmsh's "embedded" surface). Its surface mesh is a constraint of the
+/// solid's tetrahedra (conformal). A crack is two-sided: after volume meshing its nodes are
+/// duplicated so that the two sides separate (mesher/volume/CrackSplit.h); otherwise the
+/// tetrahedra on both sides share its nodes (a bonded interface).
+struct EmbeddedFace {
+  int face = -1;
+  bool crack = false;
+};
+
 struct ModelSolid {
   std::string name;            ///< STEP part name, or "SOLID<n>"
   int outerShell = -1;
   std::vector<int> voidShells; ///< inner shells bounding cavities
+  std::vector<EmbeddedFace> embedded;  ///< faces inside the material, each once
   double cadVolume = 0;        ///< the CAD kernel's volume of the solid; 0 when not known
 };
 
