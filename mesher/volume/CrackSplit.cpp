@@ -47,48 +47,68 @@ int findRoot(std::vector<int>& parent, int x) {
   return x;
 }
 
+/// A solid's crack triangles (surface indices) and faces, and the nodes of its front: the
+/// crack edges used by one crack triangle and by no boundary face of the solid.
+struct CrackFront {
+  std::vector<int> triangles;
+  std::set<int> faces;
+  std::set<int> frontNodes;
+  std::set<std::pair<int, int>> frontEdges;
+};
+
+CrackFront crackFront(const Model& model, int solid, const std::vector<char>& isCrack, const SurfaceMesh& sm) {
+  CrackFront cf;
+  for (std::size_t t = 0; t < sm.triangles.size(); ++t) {
+    const int f = sm.triangleFace[t];
+    if (f >= 0 && static_cast<std::size_t>(f) < isCrack.size() && isCrack[f]) {
+      cf.triangles.push_back(static_cast<int>(t));
+      cf.faces.insert(f);
+    }
+  }
+  if (cf.triangles.empty()) return cf;
+  std::vector<char> bounding(model.faces.size(), 0);
+  for (const int f : model.solidFaces(solid))
+    if (f >= 0 && static_cast<std::size_t>(f) < bounding.size()) bounding[f] = 1;
+  std::map<std::pair<int, int>, std::pair<int, bool>> edges;  // -> (crack uses, on the boundary)
+  for (const int t : cf.triangles)
+    for (int k = 0; k < 3; ++k) ++edges[std::minmax(sm.triangles[t][k], sm.triangles[t][(k + 1) % 3])].first;
+  for (std::size_t t = 0; t < sm.triangles.size(); ++t) {
+    const int f = sm.triangleFace[t];
+    if (f < 0 || static_cast<std::size_t>(f) >= bounding.size() || !bounding[f]) continue;
+    for (int k = 0; k < 3; ++k) {
+      const auto it = edges.find(std::minmax(sm.triangles[t][k], sm.triangles[t][(k + 1) % 3]));
+      if (it != edges.end()) it->second.second = true;
+    }
+  }
+  for (const auto& [e, use] : edges)
+    if (use.first == 1 && !use.second) {
+      cf.frontEdges.insert(e);
+      cf.frontNodes.insert({e.first, e.second});
+    }
+  return cf;
+}
+
+std::vector<char> faceFlags(const Model& model, const std::vector<int>& faces) {
+  std::vector<char> on(model.faces.size(), 0);
+  for (const int f : faces)
+    if (f >= 0 && static_cast<std::size_t>(f) < on.size()) on[f] = 1;
+  return on;
+}
+
 class SolidCracks {
  public:
   SolidCracks(const Model& model, int solid, const std::vector<int>& crackFaces, VolumeMesh& mesh)
-      : model_(model), solid_(solid), mesh_(mesh), isCrack_(model.faces.size(), 0) {
-    for (const int f : crackFaces)
-      if (f >= 0 && static_cast<std::size_t>(f) < isCrack_.size()) isCrack_[f] = 1;
-  }
+      : model_(model), solid_(solid), mesh_(mesh), isCrack_(faceFlags(model, crackFaces)) {}
 
   void run(CrackSplitStats& st) {
     const SurfaceMesh& sm = mesh_.surface;
-    std::vector<char> bounding(model_.faces.size(), 0);
-    for (const int f : model_.solidFaces(solid_))
-      if (f >= 0 && static_cast<std::size_t>(f) < bounding.size()) bounding[f] = 1;
-    // Edges of the crack triangles: crack uses and whether a boundary face uses them too.
-    std::map<std::pair<int, int>, std::pair<int, bool>> edges;  // -> (crack uses, on the boundary)
-    std::set<int> faces;
-    for (std::size_t t = 0; t < sm.triangles.size(); ++t) {
-      const int f = sm.triangleFace[t];
-      if (f < 0 || static_cast<std::size_t>(f) >= isCrack_.size()) continue;
-      if (isCrack_[f]) {
-        crackTris_.push_back(static_cast<int>(t));
-        crackOf_.emplace(sorted(sm.triangles[t]), static_cast<int>(t));
-        faces.insert(f);
-      }
-    }
+    const CrackFront cf = crackFront(model_, solid_, isCrack_, sm);
+    crackTris_ = cf.triangles;
     if (crackTris_.empty()) return;
-    st.crackFaces += static_cast<int>(faces.size());
-    st.faces.insert(st.faces.end(), faces.begin(), faces.end());
-    for (const int t : crackTris_)
-      for (int k = 0; k < 3; ++k) ++edges[std::minmax(sm.triangles[t][k], sm.triangles[t][(k + 1) % 3])].first;
-    for (std::size_t t = 0; t < sm.triangles.size(); ++t) {
-      const int f = sm.triangleFace[t];
-      if (f < 0 || static_cast<std::size_t>(f) >= bounding.size() || !bounding[f]) continue;
-      for (int k = 0; k < 3; ++k) {
-        const auto it = edges.find(std::minmax(sm.triangles[t][k], sm.triangles[t][(k + 1) % 3]));
-        if (it != edges.end()) it->second.second = true;
-      }
-    }
-    // The nodes to split: on a crack triangle, on no front edge, in no other solid's tet.
-    std::set<int> front;
-    for (const auto& [e, use] : edges)
-      if (use.first == 1 && !use.second) front.insert({e.first, e.second});
+    for (const int t : crackTris_) crackOf_.emplace(sorted(sm.triangles[t]), t);
+    st.crackFaces += static_cast<int>(cf.faces.size());
+    st.faces.insert(st.faces.end(), cf.faces.begin(), cf.faces.end());
+    const std::set<int>& front = cf.frontNodes;
     for (const int t : crackTris_)
       for (const int n : sm.triangles[t])
         if (!front.count(n)) split_.insert(n);
@@ -223,6 +243,30 @@ CrackSplitStats splitCracks(const Model& model, const std::vector<std::vector<in
   for (std::size_t s = 0; s < cracks.size() && s < model.solids.size(); ++s)
     if (!cracks[s].empty()) SolidCracks(model, static_cast<int>(s), cracks[s], mesh).run(st);
   return st;
+}
+
+
+std::vector<std::array<int, 2>> crackEdgesToOpen(const Model& model, const std::vector<std::vector<int>>& cracks,
+                                                 const SurfaceMesh& surface) {
+  std::vector<std::array<int, 2>> out;
+  for (std::size_t s = 0; s < cracks.size() && s < model.solids.size(); ++s) {
+    if (cracks[s].empty()) continue;
+    const CrackFront cf = crackFront(model, static_cast<int>(s), faceFlags(model, cracks[s]), surface);
+    for (const int t : cf.triangles) {
+      const auto& tri = surface.triangles[t];
+      if (!cf.frontNodes.count(tri[0]) || !cf.frontNodes.count(tri[1]) || !cf.frontNodes.count(tri[2])) continue;
+      double best = -1;
+      std::array<int, 2> edge{-1, -1};
+      for (int k = 0; k < 3; ++k) {
+        const int a = tri[k], b = tri[(k + 1) % 3];
+        if (cf.frontEdges.count(std::minmax(a, b))) continue;
+        const double l = (surface.nodes[a] - surface.nodes[b]).squaredNorm();
+        if (l > best) best = l, edge = {a, b};
+      }
+      if (edge[0] >= 0) out.push_back(edge);
+    }
+  }
+  return out;
 }
 
 }  // namespace aniso

@@ -17,6 +17,7 @@
 // and gets a twin, reversed, on the copies of the other side (same face); every other
 // surface triangle through a duplicated node takes the nodes of the one tetrahedron it
 // is a face of. Linear meshes only (before order 2). Deterministic.
+#include <array>
 #include <vector>
 
 #include "mesher/model/Model.h"
@@ -30,6 +31,12 @@ struct CrackSplitStats {
   int nodesDuplicated = 0;  ///< copies made
   int trianglesAdded = 0;   ///< twin crack triangles
 };
+
+/// A crack triangle whose three nodes are on the front cannot open (no node of it is
+/// doubled): the edges to split first (SplitSurfaceEdges.h, a new node on the CAD face), the
+/// longest of each such triangle's edges not on the front.
+std::vector<std::array<int, 2>> crackEdgesToOpen(const Model& model, const std::vector<std::vector<int>>& cracks,
+                                                 const SurfaceMesh& surface);
 
 /// Splits the crack faces of every solid with `crack` set (see above). `cracks[s]` lists
 /// solid s's crack faces (0-based); faces of other solids are not affected.

@@ -282,10 +282,11 @@ std::vector<int> repairAfterSplit(const Model& model, const MeshOptions& options
 
 /// Per solid, its embedded faces that are two-sided under `policy` (none for a solid left
 /// without tetrahedra).
-std::vector<std::vector<int>> crackFaces(const Model& model, InternalFaces policy, const std::vector<SolidOutcome>& solids) {
+std::vector<std::vector<int>> crackFaces(const Model& model, InternalFaces policy,
+                                         const std::vector<SolidOutcome>* solids = nullptr) {
   std::vector<std::vector<int>> out(model.solids.size());
   for (std::size_t s = 0; s < model.solids.size(); ++s) {
-    if (s < solids.size() && solids[s].status != SolidOutcome::Status::Ok) continue;
+    if (solids && s < solids->size() && (*solids)[s].status != SolidOutcome::Status::Ok) continue;
     for (const EmbeddedFace& e : model.solids[s].embedded)
       if (policy == InternalFaces::Crack || (policy == InternalFaces::Auto && e.crack)) out[s].push_back(e.face);
   }
@@ -319,6 +320,11 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
   std::vector<SolidPiece> pieces(static_cast<std::size_t>(ns));
   std::vector<int> todo(static_cast<std::size_t>(ns));
   for (int s = 0; s < ns; ++s) todo[s] = s;
+  // A crack triangle with every node on the crack's front could not open: split first.
+  if (const auto open = crackEdgesToOpen(model, crackFaces(model, in.options.internalFaces), surface); !open.empty()) {
+    splitSurfaceEdges(model, surface, open);
+    repairAfterSplit(model, in.options, surface, r);
+  }
   std::size_t firstMissing = 0;
   for (int round = 0;; ++round) {  // bounded by maxSplitRounds
     checkCancel(in.options.cancel.get(), "volume meshing");
@@ -382,7 +388,7 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
     r.solids.push_back(std::move(p.outcome));
   }
   for (const std::string& phase : timeOrder) r.times.emplace_back(phase, timeSum[phase]);
-  r.cracks = splitCracks(model, crackFaces(model, in.options.internalFaces, r.solids), r.mesh);
+  r.cracks = splitCracks(model, crackFaces(model, in.options.internalFaces, &r.solids), r.mesh);
   return r;
 }
 
