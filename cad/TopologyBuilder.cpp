@@ -19,8 +19,10 @@
 //  - FaceUse.reversed: the face's orientation as it occurs in the shell (composed from the
 //    root of the shape) is REVERSED, i.e. in that shell its normal is −(pu × pv); same
 //    meaning as ModelFace.reversed.
-//  - Edges with INTERNAL or EXTERNAL orientation in a face get a pcurve on it but are in no
-//    loop and do not count for a shell's closedness. A face itself met as INTERNAL or
+//  - Edges with INTERNAL or EXTERNAL orientation in a face get a pcurve on it and do not
+//    count for a shell's closedness; an INTERNAL one (an edge embedded in the face, e.g.
+//    where a face inside a solid meets its boundary) is also a slit loop of the face
+//    (Loop::slit), an EXTERNAL one is in no loop. A face itself met as INTERNAL or
 //    EXTERNAL is treated as FORWARD (reversed = false) and is in no ModelShell's faces; an
 //    INTERNAL face of a solid's shell is one of the solid's embedded faces (a crack when
 //    its shell has no other face: ModelSolid::embedded), a shell of only such faces is
@@ -239,6 +241,20 @@ void buildFace(const ShapeMaps& maps, int fi, Model& model) {
     if (x.Current().IsSame(outer) || !isForwardOrReversed(x.Current().Orientation())) continue;
     Loop loop = walkWire(maps, model, TopoDS::Wire(x.Current()), face, fi, false);
     if (!loop.uses.empty()) mf.loops.push_back(std::move(loop));
+  }
+  // Each INTERNAL edge: a slit, walked there and back (Loop::slit).
+  TopTools_IndexedMapOfShape slits;
+  for (TopExp_Explorer x(face, TopAbs_EDGE); x.More(); x.Next())
+    if (x.Current().Orientation() == TopAbs_INTERNAL && !BRep_Tool::Degenerated(TopoDS::Edge(x.Current())))
+      slits.Add(x.Current().Oriented(TopAbs_FORWARD));
+  const bool faceReversed = face.Orientation() == TopAbs_REVERSED;
+  for (int k = 1; k <= slits.Extent(); ++k) {
+    const TopoDS_Edge e = TopoDS::Edge(slits(k));
+    Loop loop;
+    loop.slit = true;
+    loop.uses.push_back(makeUse(maps, model, e, TopAbs_FORWARD, fi, faceReversed));
+    loop.uses.push_back(makeUse(maps, model, e, TopAbs_REVERSED, fi, faceReversed));
+    mf.loops.push_back(std::move(loop));
   }
 }
 

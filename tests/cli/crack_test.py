@@ -10,6 +10,8 @@ of the cube (area 25), imprinted on them.
   duplicated node lies on the crack, none on its front (the crack closes there).
 - --internal-faces bond: one-sided: exposed area 600, no coincident nodes, and the crack's
   area is covered by faces of the tetrahedra (conformal: the face is in the volume mesh).
+- the edge crack's mouth edges are INTERNAL edges of the cube's faces (slits, Loop::slit):
+  meshed into those faces, so the crack opens there too.
 - --dim 2: the crack face is meshed with the cube's six.
 usage: crack_test.py CLI MODELS_DIR SHARED_DIR"""
 import json, os, subprocess, sys, tempfile
@@ -88,6 +90,9 @@ for name, lo, hi, crack_area in (("crack", 2, 8, 36.0), ("crack_edge", 0, 5, 25.
     check(not tip, f"{name}: no duplicated node on the crack front ({len(tip)})")
     ref = subprocess.run(["/usr/bin/python3", os.path.join(shared, "tools", "meshq.py"), out], capture_output=True, text=True)
     check(ref.returncode == 0, f"{name}: the referee accepts the mesh ({ref.stdout.strip()[-300:]})")
+    q = json.loads(ref.stdout.strip().splitlines()[-1]) if ref.returncode == 0 else {}
+    check(q.get("edges_open") == 0 and q.get("edges_nonmanifold") == 0 and abs(q.get("tri_area", 0) - (600 + 2 * crack_area)) < 1e-6 * 600,
+          f"{name}: the boundary triangles close, no non-manifold edge, area 600 + 2 x {crack_area} ({q.get('edges_open')}, {q.get('edges_nonmanifold')}, {q.get('tri_area')})")
 
     # bonded: one-sided, conformal
     outb = os.path.join(t, name + "_bond.msh")
