@@ -245,7 +245,6 @@ CrackSplitStats splitCracks(const Model& model, const std::vector<std::vector<in
   return st;
 }
 
-
 std::vector<std::array<int, 2>> crackEdgesToOpen(const Model& model, const std::vector<std::vector<int>>& cracks,
                                                  const SurfaceMesh& surface) {
   std::vector<std::array<int, 2>> out;
