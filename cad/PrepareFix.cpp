@@ -10,6 +10,7 @@ namespace aniso::cad::detail {
 
 void fixShape(CadModel::Impl& impl, double diag, const std::vector<int>& check, PrepareReport& report) {
   try {
+    const InternalFaces internal = collectInternalFaces(impl.shape);
     Handle(ShapeFix_Shape) fixer = new ShapeFix_Shape(impl.shape);
     // Fixes may not open gaps larger than a small fraction of the model.
     fixer->SetMaxTolerance(1e-3 * diag);
@@ -45,6 +46,7 @@ void fixShape(CadModel::Impl& impl, double diag, const std::vector<int>& check, 
         if (impl.nameIndex.IsBound(key) && !impl.nameIndex.IsBound(fk)) impl.nameIndex.Bind(fk, impl.nameIndex.Find(key));
       }
     impl.shape = fixed;
+    restoreInternalFaces(impl, internal, fixer->Context());
     rebuildSelfIntersecting(impl, check, report);
   } catch (const Standard_Failure& e) {
     report.warnings.push_back(std::string("shape fixing failed (") + e.GetMessageString() +

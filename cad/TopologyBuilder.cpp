@@ -19,9 +19,14 @@
 //  - FaceUse.reversed: the face's orientation as it occurs in the shell (composed from the
 //    root of the shape) is REVERSED, i.e. in that shell its normal is −(pu × pv); same
 //    meaning as ModelFace.reversed.
-//  - Edges with INTERNAL or EXTERNAL orientation in a face get a pcurve on it but are in no
-//    loop and do not count for a shell's closedness. A face itself met as INTERNAL or
-//    EXTERNAL is treated as FORWARD (reversed = false).
+//  - Edges with INTERNAL or EXTERNAL orientation in a face get a pcurve on it and do not
+//    count for a shell's closedness; an INTERNAL one (an edge embedded in the face, e.g.
+//    where a face inside a solid meets its boundary) is also a slit loop of the face
+//    (Loop::slit), an EXTERNAL one is in no loop. A face itself met as INTERNAL or
+//    EXTERNAL is treated as FORWARD (reversed = false) and is in no ModelShell's faces; an
+//    INTERNAL face of a solid's shell is one of the solid's embedded faces (a crack when
+//    its shell has no other face: ModelSolid::embedded), a shell of only such faces is
+//    neither the outer shell's nor a void shell.
 #include "cad/TopologyBuilder.h"
 
 #include <BRepBndLib.hxx>
@@ -43,6 +48,7 @@
 #include <TopoDS_Vertex.hxx>
 #include <TopoDS_Wire.hxx>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -236,6 +242,20 @@ void buildFace(const ShapeMaps& maps, int fi, Model& model) {
     Loop loop = walkWire(maps, model, TopoDS::Wire(x.Current()), face, fi, false);
     if (!loop.uses.empty()) mf.loops.push_back(std::move(loop));
   }
+  // Each INTERNAL edge: a slit, walked there and back (Loop::slit).
+  TopTools_IndexedMapOfShape slits;
+  for (TopExp_Explorer x(face, TopAbs_EDGE); x.More(); x.Next())
+    if (x.Current().Orientation() == TopAbs_INTERNAL && !BRep_Tool::Degenerated(TopoDS::Edge(x.Current())))
+      slits.Add(x.Current().Oriented(TopAbs_FORWARD));
+  const bool faceReversed = face.Orientation() == TopAbs_REVERSED;
+  for (int k = 1; k <= slits.Extent(); ++k) {
+    const TopoDS_Edge e = TopoDS::Edge(slits(k));
+    Loop loop;
+    loop.slit = true;
+    loop.uses.push_back(makeUse(maps, model, e, TopAbs_FORWARD, fi, faceReversed));
+    loop.uses.push_back(makeUse(maps, model, e, TopAbs_REVERSED, fi, faceReversed));
+    mf.loops.push_back(std::move(loop));
+  }
 }
 
 void buildFaces(const ShapeMaps& maps, Model& model) {
@@ -253,6 +273,7 @@ void buildShell(const ShapeMaps& maps, int si, Model& model) {
   ModelShell& ms = model.shells[si];
   std::vector<int> uses(model.edges.size(), 0);
   for (TopExp_Explorer f(maps.shells(si + 1), TopAbs_FACE); f.More(); f.Next()) {
+    if (!isForwardOrReversed(f.Current().Orientation())) continue;  // inside the material: ModelSolid::embedded
     ms.faces.push_back({indexIn(maps.faces, f.Current(), "face"),
                         f.Current().Orientation() == TopAbs_REVERSED});
     for (TopExp_Explorer e(f.Current(), TopAbs_EDGE); e.More(); e.Next()) {
@@ -311,8 +332,23 @@ void buildSolid(const ShapeMaps& maps, int si, Model& model,
   } catch (const Standard_Failure&) {
     ms.cadVolume = 0;  // not known
   }
-  for (const TopoDS_Shape& s : shells)
-    if (!s.IsSame(outer)) ms.voidShells.push_back(indexIn(maps.shells, s, "shell"));
+  for (const TopoDS_Shape& s : shells) {
+    // Faces met INTERNAL lie inside the material. A shell made only of them encloses no
+    // volume (OCCT's way of keeping a face inside a solid, e.g. after a general fuse of
+    // the solid with the face): a zero-thickness shell, i.e. a crack; INTERNAL faces in a
+    // shell that bounds the solid are a bonded interface.
+    std::vector<int> internal;
+    bool bounding = false;
+    for (TopExp_Explorer f(s, TopAbs_FACE); f.More(); f.Next()) {
+      if (f.Current().Orientation() == TopAbs_INTERNAL) internal.push_back(indexIn(maps.faces, f.Current(), "face"));
+      else bounding = bounding || f.Current().Orientation() != TopAbs_EXTERNAL;
+    }
+    for (const int f : internal) {
+      const bool seen = std::any_of(ms.embedded.begin(), ms.embedded.end(), [&](const EmbeddedFace& e) { return e.face == f; });
+      if (!seen) ms.embedded.push_back({f, !bounding});
+    }
+    if (!s.IsSame(outer) && bounding) ms.voidShells.push_back(indexIn(maps.shells, s, "shell"));
+  }
 }
 
 void buildSolids(const ShapeMaps& maps, Model& model,

@@ -3,9 +3,11 @@
 // Every step keeps the part names of solids: it rebinds impl.nameIndex for the images.
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
+#include <ShapeBuild_ReShape.hxx>
 #include <TopoDS_Compound.hxx>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cad/detail/CadModelImpl.h"
@@ -27,6 +29,24 @@ void rebuildSelfIntersecting(CadModel::Impl& impl, const std::vector<int>& check
 /// The warning naming the solids rebuilt (report.rebuiltSolids) by their prepared ids and
 /// part names (report.solidOrigin); empty when none was.
 std::string rebuiltWarning(const CadModel::Impl& impl, const PrepareReport& report);
+
+/// The INTERNAL faces of each solid of a shape (faces inside its material: a crack, an
+/// interface; ModelSolid::embedded), solid by solid, with their placement in the shape.
+struct InternalFacesOf {
+  TopoDS_Shape solid;
+  int index = 0, count = 0;  ///< the solid's 1-based place among the shape's `count` solids
+  TopTools_ListOfShape faces;
+};
+using InternalFaces = std::vector<InternalFacesOf>;
+InternalFaces collectInternalFaces(const TopoDS_Shape& shape);
+
+/// ShapeFix drops a solid's shell made only of INTERNAL faces: puts back, into every solid
+/// `kept` lists whose image (through the fixer's context, else at the same place among the
+/// solids when their number is kept) has no INTERNAL face left, a
+/// shell of those faces (their sub-shapes renamed through the context, so the edges they
+/// share with the solid's faces stay shared). The shape then becomes a compound of its
+/// solids and loose faces; part names follow. Returns the solids changed.
+int restoreInternalFaces(CadModel::Impl& impl, const InternalFaces& kept, const Handle(ShapeBuild_ReShape)& context);
 
 /// Sews the faces that are not in a solid (loose faces, open shells) with tolerance
 /// tol; keeps the result only if it leaves fewer free edges. Solids are not touched.

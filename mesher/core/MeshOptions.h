@@ -80,12 +80,19 @@ struct SizingParameters {
 /// the mixed method (alg. 4.3).
 enum class QuadMethod { Merge, Morph, Mixed };
 
+/// What becomes of faces inside a solid (ModelSolid::embedded) in a volume mesh: Auto, a
+/// crack where the CAD says so (a shell of only internal faces: zero thickness) and bonded
+/// otherwise; Crack, every one two-sided; Bond, every one one-sided, its nodes shared by
+/// the tetrahedra on both sides (--internal-faces).
+enum class InternalFaces { Auto, Crack, Bond };
+
 struct MeshOptions {
   int dim = 0;          ///< 2 or 3; 0 = 3 when the model has solids, else 2
   int order = 1;        ///< 1 linear, 2 quadratic
   bool quad = false;    ///< quad-dominant surface meshes
   QuadMethod quadMethod = QuadMethod::Merge;  ///< --quad-method
   int threads = 0;      ///< 0 = all cores
+  InternalFaces internalFaces = InternalFaces::Auto;
   SizingParameters sizing;
   std::string sizingFile;  ///< user sizing sources (--sizing FILE.json)
   /// Element budget checked before meshing (mesher/sizing/ElementBudget.h): triangles, plus

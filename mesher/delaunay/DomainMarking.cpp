@@ -1,5 +1,7 @@
 #include "mesher/delaunay/DomainMarking.h"
 
+#include <unordered_set>
+
 #include "mesher/core/Error.h"
 
 namespace aniso::del2d {
@@ -54,10 +56,14 @@ DomainMarks markDomain(const Triangulation2d& tri, std::span<const std::pair<Ver
     }
   }
   flood(tri, m.inside, stack, std::uint8_t{1}, std::uint8_t{0});
+  // A slit (an edge in the contour both ways) has the domain on both sides.
+  std::unordered_set<std::uint64_t> directed;
+  const auto key = [](VertexId a, VertexId b) { return (std::uint64_t{a.index} << 32) | b.index; };
+  for (const auto& [a, b] : contour) directed.insert(key(a, b));
   for (const auto& [a, b] : contour) {
     TriId t;
     int i = 0;
-    if (tri.findEdge(b, a, t, i) && m.inside[t.index]) ++m.conflicts;
+    if (tri.findEdge(b, a, t, i) && m.inside[t.index] && !directed.count(key(b, a))) ++m.conflicts;
   }
   for (std::uint8_t v : m.inside) m.insideCount += v;
   return m;

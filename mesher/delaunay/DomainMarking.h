@@ -36,7 +36,8 @@ struct DomainMarks {
 /// Marks the triangles on the left of each oriented contour edge a→b (the domain side
 /// of counter-clockwise outer contours and clockwise holes) and propagates the marking
 /// through unconstrained edges. The contour edges should be constrained; an unconstrained
-/// contour edge lets the marking leak (reported through `conflicts`).
+/// contour edge lets the marking leak (reported through `conflicts`). An edge in the
+/// contour in both directions (a slit) has the domain on both sides.
 DomainMarks markDomain(const Triangulation2d& tri, std::span<const std::pair<VertexId, VertexId>> contour);
 
 /// Removes every live triangle t with remove[t] != 0 (remove.size() ≥ triangleSlots()):

@@ -223,6 +223,8 @@ class Validator {
     if (!inRange(so.outerShell, m_.shells)) problem(name + ": outer shell reference out of range");
     for (int v : so.voidShells)
       if (!inRange(v, m_.shells)) problem(name + ": void shell reference out of range");
+    for (const EmbeddedFace& e : so.embedded)
+      if (!inRange(e.face, m_.faces)) problem(name + ": embedded face reference out of range");
   }
 };
 

@@ -48,7 +48,8 @@ struct ModelEdge {
 /// (u,v) plane (outer loop counter-clockwise, holes clockwise); for a reversed face it lies
 /// on the right. In both cases the face is on the left seen from its oriented normal in 3D.
 /// On a seam, `pcurve` points at the pcurve of this use (see PCurve::seamSecond).
-/// Edges that are INTERNAL or EXTERNAL to a face have pcurves but appear in no loop.
+/// Edges INTERNAL to a face are slit loops (Loop::slit); EXTERNAL ones have pcurves but
+/// appear in no loop.
 struct EdgeUse {
   int edge = -1;
   bool reversed = false;
@@ -58,6 +59,10 @@ struct EdgeUse {
 struct Loop {
   std::vector<EdgeUse> uses;  ///< in walking order
   bool outer = false;
+  /// An edge embedded in the face (OCCT: INTERNAL): one use forward and one back, the face
+  /// on both sides; its mesh edges are constraints of the face's triangles, each used by
+  /// two of them. After the outer loop and the holes.
+  bool slit = false;
 };
 
 struct ModelFace {
@@ -78,10 +83,21 @@ struct ModelShell {
   bool closed = false;  ///< every edge (not degenerate, not seam) used by exactly two faces
 };
 
+/// A face inside a solid's material: both of its sides are the solid (a crack, an internal
+/// interface, a baffle; Gmsh's "embedded" surface). Its surface mesh is a constraint of the
+/// solid's tetrahedra (conformal). A crack is two-sided: after volume meshing its nodes are
+/// duplicated so that the two sides separate (mesher/volume/CrackSplit.h); otherwise the
+/// tetrahedra on both sides share its nodes (a bonded interface).
+struct EmbeddedFace {
+  int face = -1;
+  bool crack = false;
+};
+
 struct ModelSolid {
   std::string name;            ///< STEP part name, or "SOLID<n>"
   int outerShell = -1;
   std::vector<int> voidShells; ///< inner shells bounding cavities
+  std::vector<EmbeddedFace> embedded;  ///< faces inside the material, each once
   double cadVolume = 0;        ///< the CAD kernel's volume of the solid; 0 when not known
 };
 

@@ -154,6 +154,14 @@ BoundaryMesh buildBoundaryMesh(const Model& model, const SurfaceMesh& mesh,
     }
   }
   cancelOppositePairs(b);
+  for (const EmbeddedFace& e : ms.embedded) {
+    if (e.face < 0 || e.face >= static_cast<int>(faceTriangles.size()) || uses.count(e.face)) continue;
+    for (const int t : faceTriangles[e.face]) {
+      b.embedded.push_back(mesh.triangles[t]);
+      b.embeddedFace.push_back(e.face);
+      for (const int n : mesh.triangles[t]) nodes.insert(n);
+    }
+  }
   b.nodes.assign(nodes.begin(), nodes.end());
   return b;
 }

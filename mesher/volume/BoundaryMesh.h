@@ -17,6 +17,9 @@
 // coincident faces sharing one mesh, surface/contour/CoincidentFaces.h: a slit left by a
 // boolean) are both left out, and a face left with no triangle counts as internal.
 //
+// The triangles of the solid's embedded faces (ModelSolid::embedded) are kept apart: they
+// lie inside the material and are not part of the closed boundary.
+//
 // checkBoundaryMesh validates, BEFORE any 3D work, that the result is closed and
 // consistently oriented: every undirected edge is used by as many triangles in one
 // direction as in the other, and at least once each way (two in a manifold boundary, four
@@ -35,10 +38,14 @@ struct BoundaryMesh {
   int solid = -1;                               ///< 0-based model solid
   std::vector<std::array<int, 3>> triangles;    ///< surface-mesh node triples, outward
   std::vector<int> triangleFace;                ///< 0-based model face of each triangle
-  std::vector<int> nodes;                       ///< every surface node of the solid's faces, sorted
+  std::vector<int> nodes;                       ///< every surface node of the solid's faces (embedded too), sorted
   std::vector<int> faces;                       ///< 0-based faces whose triangles are kept, sorted
   std::vector<int> flippedShells;               ///< shells whose face uses gave the inward side
   std::vector<int> internalFaces;               ///< faces left out (used twice, opposite ways)
+  /// Triangles of the solid's embedded faces (ModelSolid::embedded; surface-mesh orientation,
+  /// which has no inside/outside meaning here): constraints inside the solid, not boundary.
+  std::vector<std::array<int, 3>> embedded;
+  std::vector<int> embeddedFace;                ///< 0-based model face of each embedded triangle
 };
 
 /// Triangles of each face of `mesh`: faceTriangles[f] lists the indices into

@@ -38,11 +38,15 @@ BoundaryTriangulation triangulateBoundary(const SurfaceMesh& mesh, const Boundar
   // triangle).
   std::unordered_map<std::uint64_t, int> edgeIndex;
   edgeIndex.reserve(2 * b.triangles.size());
-  for (std::size_t t = 0; t < b.triangles.size(); ++t) {
+  sb.embeddedFrom = b.triangles.size();
+  const std::size_t nt = b.triangles.size() + b.embedded.size();
+  for (std::size_t t = 0; t < nt; ++t) {
+    const bool embedded = t >= sb.embeddedFrom;
+    const std::array<int, 3>& nodes = embedded ? b.embedded[t - sb.embeddedFrom] : b.triangles[t];
     std::array<VertexId, 3> tri;
-    for (int k = 0; k < 3; ++k) tri[k] = vertexOfNode.at(b.triangles[t][k]);
+    for (int k = 0; k < 3; ++k) tri[k] = vertexOfNode.at(nodes[k]);
     sb.triangles.push_back(tri);
-    sb.triangleFace.push_back(b.triangleFace[t]);
+    sb.triangleFace.push_back(embedded ? b.embeddedFace[t - sb.embeddedFrom] : b.triangleFace[t]);
     for (int k = 0; k < 3; ++k) {
       std::uint32_t p = tri[k].index, q = tri[(k + 1) % 3].index;
       if (p > q) std::swap(p, q);

@@ -19,7 +19,12 @@
 namespace aniso {
 
 struct SolidBoundary {
-  std::vector<std::array<del3d::VertexId, 3>> triangles;  ///< outward, kernel ids
+  /// The boundary triangles (outward, kernel ids), then the embedded faces' triangles
+  /// (BoundaryMesh::embedded): from index `embeddedFrom` on. Recovery constrains all of
+  /// them; only the boundary ones have an inside (carving).
+  std::vector<std::array<del3d::VertexId, 3>> triangles;
+  std::size_t embeddedFrom = 0;
+  bool isEmbedded(std::size_t t) const { return t >= embeddedFrom; }
   std::vector<int> triangleFace;                          ///< 0-based model face
   std::vector<std::array<del3d::VertexId, 2>> edges;      ///< each undirected edge once
   std::vector<int> edgeTriangle;                          ///< one triangle using each edge

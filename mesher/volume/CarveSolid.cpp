@@ -34,7 +34,7 @@ std::vector<std::string> carveSolid(SolidTetMesh& s, const SolidBoundary& bounda
     triangleOf[k] = static_cast<int>(t);
   }
   if (!problems.empty()) return problems;
-  // Components across non-constrained faces.
+  // Components across non-constrained faces (and embedded ones).
   std::vector<int> comp(m.tetSlots(), -1);
   std::vector<int> verdict;  // per component: 1 inside, 0 outside, -1 unknown
   std::vector<TetId> queue;
@@ -57,19 +57,23 @@ std::vector<std::string> carveSolid(SolidTetMesh& s, const SolidBoundary& bounda
           outside = true;
           continue;
         }
-        if (!m.isConstrained(t, i)) {
+        auto it = triangleOf.end();
+        if (m.isConstrained(t, i)) {
+          const auto& fv = del3d::kFaceVertex[i];
+          Key key = {m.vertex(t, fv[0]).index, m.vertex(t, fv[1]).index, m.vertex(t, fv[2]).index};
+          std::sort(key.begin(), key.end());
+          it = triangleOf.find(key);
+          if (it == triangleOf.end()) {
+            ++strayConstraints;
+            continue;
+          }
+        }
+        // Across a free face, and across an embedded one (the solid on both sides).
+        if (!m.isConstrained(t, i) || boundary.isEmbedded(static_cast<std::size_t>(it->second))) {
           if (comp[n.index] < 0) {
             comp[n.index] = c;
             queue.push_back(n);
           }
-          continue;
-        }
-        const auto& fv = del3d::kFaceVertex[i];
-        Key key = {m.vertex(t, fv[0]).index, m.vertex(t, fv[1]).index, m.vertex(t, fv[2]).index};
-        std::sort(key.begin(), key.end());
-        const auto it = triangleOf.find(key);
-        if (it == triangleOf.end()) {
-          ++strayConstraints;
           continue;
         }
         const auto& tri = boundary.triangles[it->second];

@@ -5,7 +5,8 @@
 // (through adjacent elements but not crossing the boundary faces). Finally, the unmarked
 // tetrahedra are removed").
 //
-// Components of tets connected across non-constrained faces are classified by one
+// Components of tets connected across non-constrained faces (and across the embedded
+// faces' triangles, which have the solid on both sides) are classified by one
 // constrained face each: inside when the tet's vertex opposite that face lies on the inner
 // side of the outward boundary triangle (exact orient3d < 0). A component touching the
 // hull or the box corners is outside. Every constrained face of a component must agree;
@@ -19,7 +20,7 @@
 
 namespace aniso {
 
-/// Marks every boundary triangle constrained (it must be present), removes every tet
+/// Marks every boundary and embedded triangle constrained (it must be present), removes every tet
 /// outside the solid. Returns problems (empty on success); on problems nothing is removed.
 std::vector<std::string> carveSolid(SolidTetMesh& s, const SolidBoundary& boundary, const del3d::EnclosingBox& box);
 

@@ -12,7 +12,8 @@ using del3d::TetId;
 using del3d::VertexId;
 
 std::vector<std::string> validateSolidTetMesh(const SolidTetMesh& s,
-                                              const std::vector<std::array<int, 3>>& boundaryTriangles) {
+                                              const std::vector<std::array<int, 3>>& boundaryTriangles,
+                                              const std::vector<std::array<int, 3>>& embeddedTriangles) {
   const del3d::TetMesh& m = s.mesh;
   std::vector<std::string> problems = del3d::validate(m);
   const std::string solid = "solid " + std::to_string(s.solid + 1) + ": ";
@@ -41,28 +42,42 @@ std::vector<std::string> validateSolidTetMesh(const SolidTetMesh& s,
       if (m.isConstrained(t, i)) ++constrained[key];
     }
   }
-  long long missing = 0, notConstrained = 0, notHull = 0;
-  std::map<Key, int> expected;
-  for (const auto& tri : boundaryTriangles) {
-    Key key;
-    bool known = true;
+  long long missing = 0, notConstrained = 0, notHull = 0, onHull = 0;
+  std::map<Key, int> expected;  // boundary and embedded triangles
+  const auto keyOf = [&](const std::array<int, 3>& tri, Key& key) {
     for (int j = 0; j < 3; ++j) {
       const auto it = vertexOfNode.find(tri[j]);
-      if (it == vertexOfNode.end()) known = false;
-      else key[j] = it->second;
+      if (it == vertexOfNode.end()) return false;
+      key[j] = it->second;
     }
-    if (!known) {
+    std::sort(key.begin(), key.end());
+    return true;
+  };
+  for (const auto& tri : boundaryTriangles) {
+    Key key;
+    if (!keyOf(tri, key)) {
       ++missing;
       continue;
     }
-    std::sort(key.begin(), key.end());
     ++expected[key];
     if (!hull.count(key)) ++notHull;
     if (!constrained.count(key)) ++notConstrained;
   }
+  for (const auto& tri : embeddedTriangles) {  // constrained in both of its tets
+    Key key;
+    if (!keyOf(tri, key)) {
+      ++missing;
+      continue;
+    }
+    ++expected[key];
+    if (hull.count(key)) ++onHull;
+    const auto it = constrained.find(key);
+    if (it == constrained.end() || it->second != 2) ++notConstrained;
+  }
   if (missing) problems.push_back(solid + std::to_string(missing) + " boundary triangles have nodes not in the mesh");
   if (notHull) problems.push_back(solid + std::to_string(notHull) + " boundary triangles are not faces of exactly one tet");
   if (notConstrained) problems.push_back(solid + std::to_string(notConstrained) + " boundary triangles not constrained");
+  if (onHull) problems.push_back(solid + std::to_string(onHull) + " embedded triangles are on the hull");
   long long strayHull = 0, strayConstrained = 0;
   for (const auto& [key, n] : hull)
     if (!expected.count(key) || n != 1) ++strayHull;

@@ -8,8 +8,9 @@
 // Invariants between phases (checked by validateSolidTetMesh):
 //  - `mesh` holds only this solid's tetrahedra (exterior, void and box tets removed);
 //  - every boundary triangle of the solid is a face of exactly one live tet and carries the
-//    constrained bit; no other face is constrained; the hull of `mesh` is exactly the set
-//    of boundary triangles;
+//    constrained bit; every embedded triangle (BoundaryMesh::embedded) is a face of two live
+//    tets, constrained in both; no other face is constrained; the hull of `mesh` is exactly
+//    the set of boundary triangles;
 //  - node[v] >= 0 for a kernel vertex that is a node of the surface mesh (its index there):
 //    such vertices are FIXED (never moved, never removed); node[v] == -1 for vertices made
 //    by the volume mesher (refinement points, Steiner points inside the solid): free to
@@ -39,9 +40,10 @@ struct SolidTetMesh {
 };
 
 /// Checks the invariants above (plus del3d::validate of the kernel), one message per
-/// problem; empty when valid. `boundaryTriangles` are the solid's boundary triangles as
-/// surface mesh node triples (any orientation).
+/// problem; empty when valid. `boundaryTriangles` and `embeddedTriangles` are the solid's
+/// boundary and embedded triangles as surface mesh node triples (any orientation).
 std::vector<std::string> validateSolidTetMesh(const SolidTetMesh& s,
-                                              const std::vector<std::array<int, 3>>& boundaryTriangles);
+                                              const std::vector<std::array<int, 3>>& boundaryTriangles,
+                                              const std::vector<std::array<int, 3>>& embeddedTriangles = {});
 
 }  // namespace aniso

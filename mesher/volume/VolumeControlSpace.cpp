@@ -43,6 +43,8 @@ std::vector<char> solidFaces(const Model& model, int solid) {
   };
   addShell(s.outerShell);
   for (const int v : s.voidShells) addShell(v);
+  for (const EmbeddedFace& e : s.embedded)
+    if (e.face >= 0 && static_cast<std::size_t>(e.face) < in.size()) in[e.face] = 1;
   return in;
 }
 

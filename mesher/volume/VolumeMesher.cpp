@@ -19,6 +19,7 @@
 #include "mesher/volume/BoundaryMesh.h"
 #include "mesher/volume/BoundaryTriangulation.h"
 #include "mesher/volume/CarveSolid.h"
+#include "mesher/volume/CrackSplit.h"
 #include "mesher/volume/SolidTetMesh.h"
 #include "mesher/volume/SplitSurfaceEdges.h"
 #include "mesher/volume/VolumeControlSpace.h"
@@ -115,7 +116,7 @@ void extract(const SolidTetMesh& s, SolidPiece& p) {
 bool validated(SolidPiece& p, const VolumeMesherInput& in, const SolidTetMesh& s, const BoundaryMesh& b,
                const char* phase) {
   if (!in.validate) return true;
-  for (const std::string& problem : validateSolidTetMesh(s, b.triangles))
+  for (const std::string& problem : validateSolidTetMesh(s, b.triangles, b.embedded))
     fail(p, solidRef(s.solid), std::string("after ") + phase + ": " + problem);
   return p.outcome.status == SolidOutcome::Status::Ok;
 }
@@ -192,10 +193,12 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
     std::vector<Vec3> boundaryNodes;
     boundaryNodes.reserve(b.nodes.size());
     for (const int n : b.nodes) boundaryNodes.push_back(in.surface->nodes[n]);
+    std::vector<std::array<int, 3>> constraints = b.triangles;  // the transition layers follow the embedded faces too
+    constraints.insert(constraints.end(), b.embedded.begin(), b.embedded.end());
     cs = std::make_shared<VolumeMetricSpace>(
         buildVolumeControlSpace(*in.model, *in.surface, solid, in.options.sizing, in.user), boundaryNodes,
         kVolumeLengthFactor,
-        std::make_shared<TriangleTree>(in.surface->nodes, b.triangles,
+        std::make_shared<TriangleTree>(in.surface->nodes, constraints,
                                        kVolumeTransitionLayers * in.options.sizing.hmaxFor(in.model->diagonal())));
     p.outcome.times.emplace_back("volume control space", since(t0));
   }
@@ -250,7 +253,7 @@ std::vector<std::uint8_t> facesUsingEdges(const SurfaceMesh& surface, const std:
   return touched;
 }
 
-/// The solids (in order) whose outer or void shells use a touched face.
+/// The solids (in order) whose outer or void shells, or embedded faces, use a touched face.
 std::vector<int> solidsUsingFaces(const Model& model, const std::vector<std::uint8_t>& touched) {
   std::vector<int> out;
   for (int s = 0; s < static_cast<int>(model.solids.size()); ++s) {
@@ -260,6 +263,7 @@ std::vector<int> solidsUsingFaces(const Model& model, const std::vector<std::uin
     for (const int sh : shells)
       if (sh >= 0)
         for (const FaceUse& u : model.shells[sh].faces) uses = uses || touched[u.face];
+    for (const EmbeddedFace& e : model.solids[s].embedded) uses = uses || touched[e.face];
     if (uses) out.push_back(s);
   }
   return out;
@@ -276,6 +280,19 @@ std::vector<int> repairAfterSplit(const Model& model, const MeshOptions& options
   r.surfaceCapsFlipped += s.capsFlipped;
   r.foldsRepaired += s.foldsRepaired;
   return s.facesChanged;
+}
+
+/// Per solid, its embedded faces that are two-sided under `policy` (none for a solid left
+/// without tetrahedra).
+std::vector<std::vector<int>> crackFaces(const Model& model, InternalFaces policy,
+                                         const std::vector<SolidOutcome>* solids = nullptr) {
+  std::vector<std::vector<int>> out(model.solids.size());
+  for (std::size_t s = 0; s < model.solids.size(); ++s) {
+    if (solids && s < solids->size() && (*solids)[s].status != SolidOutcome::Status::Ok) continue;
+    for (const EmbeddedFace& e : model.solids[s].embedded)
+      if (policy == InternalFaces::Crack || (policy == InternalFaces::Auto && e.crack)) out[s].push_back(e.face);
+  }
+  return out;
 }
 
 }  // namespace
@@ -305,6 +322,11 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
   std::vector<SolidPiece> pieces(static_cast<std::size_t>(ns));
   std::vector<int> todo(static_cast<std::size_t>(ns));
   for (int s = 0; s < ns; ++s) todo[s] = s;
+  // A crack triangle with every node on the crack's front could not open: split first.
+  if (const auto open = crackEdgesToOpen(model, crackFaces(model, in.options.internalFaces), surface); !open.empty()) {
+    splitSurfaceEdges(model, surface, open);
+    repairAfterSplit(model, in.options, surface, r);
+  }
   std::size_t firstMissing = 0;
   for (int round = 0;; ++round) {  // bounded by maxSplitRounds
     checkCancel(in.options.cancel.get(), "volume meshing");
@@ -368,6 +390,7 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
     r.solids.push_back(std::move(p.outcome));
   }
   for (const std::string& phase : timeOrder) r.times.emplace_back(phase, timeSum[phase]);
+  r.cracks = splitCracks(model, crackFaces(model, in.options.internalFaces, &r.solids), r.mesh);
   return r;
 }
 

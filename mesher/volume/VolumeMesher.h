@@ -28,6 +28,9 @@
 // After carving, the boundary triangles whose tet reaches across a thin part are found
 // (ThinBoundary.h, alg. 3.3's proximity check) and returned; with stopWhenThin such a solid
 // stops there (the caller meshes the surface finer and calls again).
+// Faces inside a solid (ModelSolid::embedded) are constraints of its tetrahedra like its
+// boundary (recovered, kept by refinement and improvement, crossed by carving); at the end
+// the two-sided ones (MeshOptions::internalFaces) are split apart (CrackSplit.h).
 // A solid that still cannot be meshed (broken boundary mesh, unrecoverable boundary) gets
 // no tetrahedra and its problems are reported by CAD id; the others are meshed. Throws only
 // for errors that stop everything (bad input).
@@ -42,6 +45,7 @@
 #include "mesher/sizing/UserSizing.h"
 #include "mesher/surface/SurfaceMesh.h"
 #include "mesher/volume/BoundaryRecovery.h"
+#include "mesher/volume/CrackSplit.h"
 #include "mesher/volume/TetQuality.h"
 #include "mesher/volume/ThinBoundary.h"
 #include "mesher/volume/VolumeMesh.h"
@@ -109,6 +113,7 @@ struct VolumeMeshResult {
   std::vector<ThinSpot> thin;
   TetQualitySummary quality;                          ///< over all solids
   std::vector<std::pair<std::string, double>> times;  ///< phase -> seconds summed over the solids
+  CrackSplitStats cracks;  ///< the two-sided embedded faces separated (CrackSplit.h)
   /// Every solid meshed, or left out only because the surface left out one of its faces.
   bool ok() const;
 };

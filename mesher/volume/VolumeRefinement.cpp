@@ -182,10 +182,10 @@ bool Refiner::longestInnerEdgeMidpoint(TetId k, const Mat3& m, const TetPoints& 
   return false;
 }
 
-// Is p within minBoundaryDistance (in m) of the plane of a hull face of tet c?
+// Is p within minBoundaryDistance (in m) of the plane of a hull or embedded face of tet c?
 bool Refiner::nearHull(const Vec3& p, const Metric3d& m, TetId c) const {
   for (int i = 0; i < 4; ++i) {
-    if (mesh_.neighbour(c, i).valid()) continue;
+    if (mesh_.neighbour(c, i).valid() && !mesh_.isConstrained(c, i)) continue;  // hull and embedded faces
     const std::uint32_t* tv = mesh_.tetVertices(c);
     const Vec3 a = m.apply(mesh_.point(VertexId(tv[del3d::kFaceVertex[i][0]])));
     const Vec3 b = m.apply(mesh_.point(VertexId(tv[del3d::kFaceVertex[i][1]])));

@@ -92,7 +92,7 @@ CubeModel cubeModel(int n, int mi = 0, int mj = 0) {
   c.model.faces.resize(6);
   c.model.shells.resize(1);
   for (int f = 0; f < 6; ++f) c.model.shells[0].faces.push_back(FaceUse{f, false});
-  c.model.solids.push_back(ModelSolid{"cube", 0, {}});
+  c.model.solids.push_back(ModelSolid{"cube", 0, {}, {}});
   c.model.bbox.add(Vec3(0, 0, 0));
   c.model.bbox.add(Vec3(1, 1, 1));
   // each face its own grid (nodes not shared: enough for the metric)

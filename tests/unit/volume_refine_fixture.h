@@ -132,7 +132,7 @@ inline CubeSurface cubeSurface(const SolidTetMesh& s, const std::set<Triple>& bo
   c.model.faces.resize(6);
   c.model.shells.resize(1);
   for (int f = 0; f < 6; ++f) c.model.shells[0].faces.push_back(FaceUse{f, false});
-  c.model.solids.push_back(ModelSolid{"cube", 0, {}});
+  c.model.solids.push_back(ModelSolid{"cube", 0, {}, {}});
   std::vector<Vec3> at(s.node.size());
   int nodes = 0;
   for (std::uint32_t v = 0; v < s.node.size(); ++v)

@@ -61,6 +61,9 @@ nlohmann::ordered_json optionsJson(const MeshArgs& a) {
   }
   j["threads"] = a.options.threads;
   j["fragment"] = a.fragment;
+  j["internal_faces"] = a.options.internalFaces == InternalFaces::Crack
+                            ? "crack"
+                            : (a.options.internalFaces == InternalFaces::Bond ? "bond" : "auto");
   j["overlaps"] = cad::overlapPolicyName(a.overlaps);
   j["anisotropy"] = s.anisotropy;
   j["gradation"] = s.gradation;

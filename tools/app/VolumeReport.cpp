@@ -53,6 +53,12 @@ void fillVolumeReport(const Model& model, const VolumeMeshResult& vr, io::Report
   report.extra["recovery"]["surface_folds_repaired"] = vr.foldsRepaired;
   report.extra["recovery"]["surface_nodes_merged"] = vr.surfaceNodesMerged;
   report.extra["recovery"]["surface_caps_flipped"] = vr.surfaceCapsFlipped;
+  std::vector<int> crackIds;
+  for (const int f : vr.cracks.faces) crackIds.push_back(f + 1);
+  report.extra["cracks"] = {{"faces", vr.cracks.crackFaces},
+                            {"face_ids", crackIds},
+                            {"nodes_duplicated", vr.cracks.nodesDuplicated},
+                            {"triangles_added", vr.cracks.trianglesAdded}};
   report.quality["volume"] = qualityJson(vr.quality);
   report.quality["elements"] = io::elementQuality(vr.mesh);
   report.quality["volume"]["length_factor"] = kVolumeLengthFactor;

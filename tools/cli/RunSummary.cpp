@@ -154,6 +154,15 @@ void addSizingWarnings(const io::Report& r, std::vector<std::string>& out) {
                          number(px, "rounds"), smallest) +
                   faces + "); the element count grew accordingly");
   }
+  const json& cr = r.extra.contains("cracks") ? r.extra["cracks"] : json::object();
+  if (number(cr, "faces") > 0) {
+    std::string ids;
+    for (const json& f : cr["face_ids"]) ids += (ids.empty() ? "" : ", ") + std::to_string(f.get<int>());
+    out.push_back("crack: face(s) " + ids +
+                  format(" inside a solid meshed two-sided (%.0f nodes doubled so the sides separate); "
+                         "--internal-faces bond keeps them joined",
+                         number(cr, "nodes_duplicated")));
+  }
   const json& cs = r.extra.contains("coarse_solids") ? r.extra["coarse_solids"] : json::object();
   if (cs.value("refined_kept", false))
     out.push_back(format("%.0f solid(s) below the quality bar were meshed again with a finer surface",

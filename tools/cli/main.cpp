@@ -113,6 +113,14 @@ int main(int argc, char** argv) {
       ->option_text("FILE")
       ->group(cli::kSizeGroup);
   meshCmd->add_flag("!--no-fragment", mesh.fragment, "Do not make touching solids conformal")->group(kModel);
+  meshCmd->add_option("--internal-faces", mesh.options.internalFaces,
+                      "Faces inside a solid: crack = two-sided (nodes doubled), bond = one-sided (nodes shared); auto = "
+                      "crack where the CAD keeps the face in a shell of its own, bond otherwise")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, InternalFaces>{
+          {"auto", InternalFaces::Auto}, {"crack", InternalFaces::Crack}, {"bond", InternalFaces::Bond}}))
+      ->option_text("auto|crack|bond")
+      ->default_str("auto")
+      ->group(kModel);
   addOverlapsOption(*meshCmd, mesh.overlaps);
   meshCmd->add_option("--threads", mesh.options.threads, "Threads (0 = all cores)")
       ->check(CLI::Range(0, 4096))

@@ -1,6 +1,7 @@
 // make_models: writes anisomesh's own sample models as STEP AP214 through XCAF.
 //
-//   make_models OUTDIR        build the models and write OUTDIR/{bracket,assembly2,plate,cylinder,cantilever,blocks2,passage,overlap2,cube,holeplate}.step
+//   make_models OUTDIR        build the models and write OUTDIR/{bracket,assembly2,plate,cylinder,cantilever,blocks2,passage,overlap2,cube,holeplate}.step and
+//                             OUTDIR/{crack,crack_edge}.brep
 //   make_models --check FILE  read FILE with STEPCAFControl_Reader and print solids, volume, part names
 //
 // Output is deterministic: the STEP header (name, time stamp, author, organization,
@@ -11,6 +12,7 @@
 
 #include <APIHeaderSection_MakeHeader.hxx>
 #include <BRepAdaptor_Curve.hxx>
+#include <BOPAlgo_Builder.hxx>
 #include <BRepAlgoAPI_Cut.hxx>
 #include <BRepAlgoAPI_Fuse.hxx>
 #include <BRepBndLib.hxx>
@@ -19,6 +21,7 @@
 #include <BRepGProp.hxx>
 #include <BRepBuilderAPI_MakeFace.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepTools.hxx>
 #include <BRepPrimAPI_MakePrism.hxx>
 #include <BRepPrimAPI_MakeCylinder.hxx>
 #include <BRep_Tool.hxx>
@@ -53,6 +56,8 @@
 #include <TColStd_Array1OfReal.hxx>
 #include <TColgp_Array2OfPnt.hxx>
 #include <TopoDS_Edge.hxx>
+#include <TopoDS_Face.hxx>
+#include <gp_Pln.hxx>
 #include <TopoDS_Shell.hxx>
 #include <TopoDS_Shape.hxx>
 #include <TopoDS_Vertex.hxx>
@@ -382,6 +387,29 @@ void writeOverlap2(const std::filesystem::path& path) {
   writeTwoParts(path, "OVERLAP2", a, "BOX_A", TopLoc_Location(), b, "BOX_B", TopLoc_Location(shift));
 }
 
+// A 10 mm cube with a face inside (issue 20, embedded faces): the square x, y in [lo, hi]
+// at z = 5, joined to the cube by OCCT's general fuse, which keeps it as an INTERNAL face
+// of the solid in a shell of its own (zero thickness: a crack). lo < 0 or hi > 10 make the
+// face reach the cube's sides (an edge crack, imprinted on them).
+TopoDS_Shape makeCrackedCube(double lo, double hi) {
+  const TopoDS_Shape cube = box(0, 0, 0, 10, 10, 10);
+  const TopoDS_Face crack = BRepBuilderAPI_MakeFace(gp_Pln(gp_Pnt(0, 0, 5), gp_Dir(0, 0, 1)), lo, hi, lo, hi).Face();
+  BOPAlgo_Builder fuse;
+  fuse.AddArgument(cube);
+  fuse.AddArgument(crack);
+  fuse.Perform();
+  if (fuse.HasErrors()) fail("cracked cube: general fuse failed");
+  TopExp_Explorer solid(fuse.Shape(), TopAbs_SOLID);
+  if (!solid.More()) fail("cracked cube: no solid");
+  return solid.Current();
+}
+
+void writeBrep(const TopoDS_Shape& s, const char* what, const std::filesystem::path& path) {
+  checkShape(s, what, 1);
+  if (!BRepTools::Write(s, path.string().c_str())) fail(std::string("cannot write ") + path.string());
+  std::cout << "wrote " << path.string() << "\n";
+}
+
 // ---------------------------------------------------------------- --check
 
 // Round-off below the printed precision would otherwise show up as "-0.00".
@@ -501,6 +529,9 @@ int main(int argc, char** argv) {
     writeOverlap2(out / "overlap2.step");
     writeSinglePart(makeCube(), "CUBE", out / "cube.step");
     writeSinglePart(makeHolePlate(), "HOLEPLATE", out / "holeplate.step");
+    // STEP (OCCT's writer) drops a solid's INTERNAL faces: the cracked cubes are BREP.
+    writeBrep(makeCrackedCube(2, 8), "cracked cube", out / "crack.brep");  // a crack inside
+    writeBrep(makeCrackedCube(-1, 5), "edge crack", out / "crack_edge.brep");  // open at two sides
     return 0;
   } catch (const Standard_Failure& e) {
     std::cerr << "make_models: OCCT exception: " << e.GetMessageString() << "\n";

@@ -103,7 +103,7 @@ void SliverRemover::candidates(TetId t, std::vector<Vec3>& out) const {
   if (refine3d::metricCircumcentre(m, p[0], p[1], p[2], p[3], c)) out.push_back(c);
   const Mat3 inv = m.inverse();
   for (int i = 0; i < 4; ++i) {
-    if (s_.mesh.neighbour(t, i).valid()) continue;
+    if (s_.mesh.neighbour(t, i).valid() && !s_.mesh.isConstrained(t, i)) continue;  // hull and embedded faces
     const Vec3 a = m * p[del3d::kFaceVertex[i][0]], b = m * p[del3d::kFaceVertex[i][1]],
                d = m * p[del3d::kFaceVertex[i][2]];
     Vec3 n = (b - a).cross(d - a);

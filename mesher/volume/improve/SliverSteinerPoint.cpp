@@ -108,7 +108,7 @@ void candidatePoints(const SolidTetMesh& s, TetId t, const Region& r, std::vecto
   out.push_back(cr);
   out.push_back(0.5 * (ct + cr));
   for (int f = 0; f < 4; ++f) {
-    if (m.neighbour(t, f).valid()) continue;  // a hull face: the solid lies on vertex f's side
+    if (m.neighbour(t, f).valid() && !m.isConstrained(t, f)) continue;  // a hull or embedded face: the tet lies on vertex f's side
     const Vec3 a = m.point(m.vertex(t, del3d::kFaceVertex[f][0])), b = m.point(m.vertex(t, del3d::kFaceVertex[f][1])),
                c = m.point(m.vertex(t, del3d::kFaceVertex[f][2]));
     const Vec3 n = hullInwardNormal(m, t, f);

@@ -1,0 +1,73 @@
+#include <BRep_Builder.hxx>
+#include <ShapeBuild_ReShape.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopTools_DataMapOfShapeShape.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Compound.hxx>
+#include <TopoDS_Iterator.hxx>
+#include <TopoDS_Shell.hxx>
+#include <TopoDS_Solid.hxx>
+
+#include "cad/detail/Prepare.h"
+
+namespace aniso::cad::detail {
+
+InternalFaces collectInternalFaces(const TopoDS_Shape& shape) {
+  InternalFaces out;
+  TopTools_IndexedMapOfShape solids;
+  TopExp::MapShapes(shape, TopAbs_SOLID, solids);
+  for (int i = 1; i <= solids.Extent(); ++i) {
+    TopTools_ListOfShape faces;
+    for (TopExp_Explorer f(solids(i), TopAbs_FACE); f.More(); f.Next())
+      if (f.Current().Orientation() == TopAbs_INTERNAL) faces.Append(f.Current());
+    if (!faces.IsEmpty()) out.push_back({solids(i), i, solids.Extent(), faces});
+  }
+  return out;
+}
+
+int restoreInternalFaces(CadModel::Impl& impl, const InternalFaces& kept, const Handle(ShapeBuild_ReShape)& context) {
+  TopTools_IndexedMapOfShape solids;
+  TopExp::MapShapes(impl.shape, TopAbs_SOLID, solids);
+  TopTools_DataMapOfShapeShape replaced;  // fixed solid -> the same with its internal faces again
+  BRep_Builder b;
+  for (const InternalFacesOf& k : kept) {
+    // The solid's image: through the fixer's context, else the one at the same place when
+    // the fixer kept the number of solids (it rebuilds some without recording them).
+    TopTools_IndexedMapOfShape images;
+    TopExp::MapShapes(context->Apply(k.solid), TopAbs_SOLID, images);
+    TopoDS_Shape image;
+    if (images.Extent() == 1 && solids.Contains(images(1))) image = images(1);
+    else if (solids.Extent() == k.count) image = solids(k.index);
+    else continue;
+    bool hasInternal = false;
+    for (TopExp_Explorer f(image, TopAbs_FACE); f.More() && !hasInternal; f.Next())
+      hasInternal = f.Current().Orientation() == TopAbs_INTERNAL;
+    if (hasInternal) continue;
+    // The image's shells (placed as in the shape), then one shell of the internal faces,
+    // their edges renamed as the fixer renamed them in the solid's other faces.
+    TopoDS_Solid rebuilt;
+    b.MakeSolid(rebuilt);
+    for (TopoDS_Iterator s(image); s.More(); s.Next()) b.Add(rebuilt, s.Value());
+    TopoDS_Shell shell;
+    b.MakeShell(shell);
+    for (const TopoDS_Shape& f : k.faces) b.Add(shell, context->Apply(f).Oriented(TopAbs_INTERNAL));
+    b.Add(rebuilt, shell);
+    const TopoDS_Shape key = image.Located(TopLoc_Location());
+    if (impl.nameIndex.IsBound(key)) impl.nameIndex.Bind(rebuilt, impl.nameIndex.Find(key));
+    replaced.Bind(image, rebuilt);
+  }
+  if (replaced.IsEmpty()) return 0;
+  TopoDS_Compound c;
+  b.MakeCompound(c);
+  TopTools_IndexedMapOfShape now;  // the solids as they will be: an internal face is not loose
+  for (int i = 1; i <= solids.Extent(); ++i) {
+    now.Add(replaced.IsBound(solids(i)) ? replaced.Find(solids(i)) : solids(i));
+    b.Add(c, now(i));
+  }
+  addLooseFaces(impl.shape, now, c);
+  impl.shape = c;
+  return replaced.Extent();
+}
+
+}  // namespace aniso::cad::detail
