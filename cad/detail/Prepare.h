@@ -14,8 +14,9 @@
 
 namespace aniso::cad::detail {
 
-/// ShapeFix_Shape on the whole shape (wires, edges, faces, shells, solids), then
-/// rebuildSelfIntersecting on the solids `check` names.
+/// ShapeFix_Shape on the whole shape (wires, edges, faces, shells, solids), the internal
+/// faces it dropped put back (restoreInternalFaces), then rebuildSelfIntersecting on the
+/// solids `check` names.
 void fixShape(CadModel::Impl& impl, double diag, const std::vector<int>& check, PrepareReport& report);
 
 /// The solids `check` names (1-based; ids out of range are ignored) whose faces cross one
