@@ -1,3 +1,4 @@
+#include <BRepClass3d.hxx>
 #include <BRep_Builder.hxx>
 #include <ShapeBuild_ReShape.hxx>
 #include <TopExp.hxx>
@@ -10,6 +11,7 @@
 #include <TopoDS_Solid.hxx>
 
 #include "cad/detail/Prepare.h"
+#include "cad/detail/SheetShell.h"
 
 namespace aniso::cad::detail {
 
@@ -21,6 +23,13 @@ InternalFaces collectInternalFaces(const TopoDS_Shape& shape) {
     TopTools_ListOfShape faces;
     for (TopExp_Explorer f(solids(i), TopAbs_FACE); f.More(); f.Next())
       if (f.Current().Orientation() == TopAbs_INTERNAL) faces.Append(f.Current());
+    // the faces of a sheet stored as a void shell (SheetShell.h): inside the material too
+    const TopoDS_Shape outer = BRepClass3d::OuterShell(TopoDS::Solid(solids(i)));
+    for (TopoDS_Iterator s(solids(i)); s.More(); s.Next())
+      if (s.Value().ShapeType() == TopAbs_SHELL && !s.Value().IsSame(outer) && isSheetShell(s.Value()))
+        for (TopExp_Explorer f(s.Value(), TopAbs_FACE); f.More(); f.Next())
+          if (f.Current().Orientation() != TopAbs_INTERNAL && f.Current().Orientation() != TopAbs_EXTERNAL)
+            faces.Append(f.Current());
     if (!faces.IsEmpty()) out.push_back({solids(i), i, solids.Extent(), faces});
   }
   return out;
@@ -40,10 +49,11 @@ int restoreInternalFaces(CadModel::Impl& impl, const InternalFaces& kept, const 
     if (images.Extent() == 1 && solids.Contains(images(1))) image = images(1);
     else if (solids.Extent() == k.count) image = solids(k.index);
     else continue;
-    bool hasInternal = false;
-    for (TopExp_Explorer f(image, TopAbs_FACE); f.More() && !hasInternal; f.Next())
-      hasInternal = f.Current().Orientation() == TopAbs_INTERNAL;
-    if (hasInternal) continue;
+    TopTools_IndexedMapOfShape imageFaces;
+    TopExp::MapShapes(image, TopAbs_FACE, imageFaces);
+    bool kept = false;  // the fixer left them in the solid
+    for (const TopoDS_Shape& f : k.faces) kept = kept || imageFaces.Contains(context->Apply(f));
+    if (kept) continue;
     // The image's shells (placed as in the shape), then one shell of the internal faces,
     // their edges renamed as the fixer renamed them in the solid's other faces.
     TopoDS_Solid rebuilt;

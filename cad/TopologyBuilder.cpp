@@ -55,6 +55,7 @@
 #include "cad/OcctCurve2d.h"
 #include "cad/OcctCurve3d.h"
 #include "cad/OcctSurface.h"
+#include "cad/detail/SheetShell.h"
 #include "mesher/core/Error.h"
 
 namespace aniso::cad {
@@ -337,17 +338,22 @@ void buildSolid(const ShapeMaps& maps, int si, Model& model,
     // volume (OCCT's way of keeping a face inside a solid, e.g. after a general fuse of
     // the solid with the face): a zero-thickness shell, i.e. a crack; INTERNAL faces in a
     // shell that bounds the solid are a bonded interface.
+    // An open void shell that is a sheet (detail/SheetShell.h) is a crack too, whatever the
+    // orientation its faces are stored with.
+    const int si2 = indexIn(maps.shells, s, "shell");
+    const bool sheet = !s.IsSame(outer) && !model.shells[si2].closed && detail::isSheetShell(s);
     std::vector<int> internal;
     bool bounding = false;
     for (TopExp_Explorer f(s, TopAbs_FACE); f.More(); f.Next()) {
-      if (f.Current().Orientation() == TopAbs_INTERNAL) internal.push_back(indexIn(maps.faces, f.Current(), "face"));
+      if (f.Current().Orientation() == TopAbs_INTERNAL || (sheet && f.Current().Orientation() != TopAbs_EXTERNAL))
+        internal.push_back(indexIn(maps.faces, f.Current(), "face"));
       else bounding = bounding || f.Current().Orientation() != TopAbs_EXTERNAL;
     }
     for (const int f : internal) {
       const bool seen = std::any_of(ms.embedded.begin(), ms.embedded.end(), [&](const EmbeddedFace& e) { return e.face == f; });
       if (!seen) ms.embedded.push_back({f, !bounding});
     }
-    if (!s.IsSame(outer) && bounding) ms.voidShells.push_back(indexIn(maps.shells, s, "shell"));
+    if (!s.IsSame(outer) && bounding) ms.voidShells.push_back(si2);
   }
 }
 

@@ -32,7 +32,8 @@ void rebuildSelfIntersecting(CadModel::Impl& impl, const std::vector<int>& check
 std::string rebuiltWarning(const CadModel::Impl& impl, const PrepareReport& report);
 
 /// The INTERNAL faces of each solid of a shape (faces inside its material: a crack, an
-/// interface; ModelSolid::embedded), solid by solid, with their placement in the shape.
+/// interface; ModelSolid::embedded) and the faces of its sheet shells (SheetShell.h), solid
+/// by solid, with their placement in the shape.
 struct InternalFacesOf {
   TopoDS_Shape solid;
   int index = 0, count = 0;  ///< the solid's 1-based place among the shape's `count` solids
@@ -43,7 +44,7 @@ InternalFaces collectInternalFaces(const TopoDS_Shape& shape);
 
 /// ShapeFix drops a solid's shell made only of INTERNAL faces: puts back, into every solid
 /// `kept` lists whose image (through the fixer's context, else at the same place among the
-/// solids when their number is kept) has no INTERNAL face left, a
+/// solids when their number is kept) has none of those faces left, a
 /// shell of those faces (their sub-shapes renamed through the context, so the edges they
 /// share with the solid's faces stay shared). The shape then becomes a compound of its
 /// solids and loose faces; part names follow. Returns the solids changed.

@@ -13,6 +13,8 @@ of the cube (area 25), imprinted on them.
 - the edge crack's mouth edges are INTERNAL edges of the cube's faces (slits, Loop::slit):
   meshed into those faces, so the crack opens there too.
 - --dim 2: the crack face is meshed with the cube's six.
+- the crack stored as an open shell of a FORWARD face (not INTERNAL) is found a sheet and
+  meshed as the same crack.
 usage: crack_test.py CLI MODELS_DIR SHARED_DIR"""
 import json, os, subprocess, sys, tempfile
 
@@ -110,6 +112,24 @@ for name, lo, hi, crack_area in (("crack", 2, 8, 36.0), ("crack_edge", 0, 5, 25.
     out2 = os.path.join(t, name + "_2d.msh")
     p = run("mesh", model, "-o", out2, "--dim", "2", "--hmax", "1.5")
     check(p.returncode == 0, f"{name} 2D: exit 0 ({p.stderr.strip()[-300:]})")
+
+# The same crack stored as an open shell of a FORWARD face (a "second, non-manifold shell",
+# as other writers keep it; ShapeFix drops such a shell): detected as a sheet, meshed as a crack.
+text = open(os.path.join(models, "crack.brep")).read().splitlines()
+internal = [i for i, l in enumerate(text) if l == "i3 0 *"]
+check(len(internal) == 1, "crack.brep holds its face INTERNAL in a shell of its own (i3)")
+if len(internal) == 1:
+    text[internal[0]] = "+3 0 *"
+    sheet = os.path.join(t, "crack_sheet.brep")
+    open(sheet, "w").write("\n".join(text) + "\n")
+    out, rep = os.path.join(t, "sheet.msh"), os.path.join(t, "sheet.json")
+    p = run("mesh", sheet, "-o", out, "--report", rep, "--hmax", "1.5")
+    check(p.returncode == 0, f"sheet shell: exit 0 ({p.stderr.strip()[-300:]})")
+    if p.returncode == 0:
+        P, T = tets_of(out)
+        u, cnt = faces(T)
+        check(json.load(open(rep)).get("cracks", {}).get("faces") == 1, "sheet shell: meshed as a crack")
+        check(abs(area(P, u[cnt == 1]) - 672) < 1e-6 * 600, f"sheet shell: exposed area {area(P, u[cnt == 1]):.6f} = 672")
 
 print("FAILED: " + "; ".join(fails) if fails else "all passed")
 sys.exit(1 if fails else 0)
