@@ -220,24 +220,29 @@ void TreeControlSpace<D>::insertInitial(const Vec& x, const Metric<D>& m) {
   const Box<D> box = tree_.box();
   const Vec xc = x.cwiseMax(box.lo).cwiseMin(box.hi);
   const Mat t = m.matrix() * auxIn(leaf, local);
-  // Proximity of point sources: combine with a pending source closer than ε_M.
+  // Proximity of point sources: combine with a pending source closer than ε_M; the merged
+  // metric is compared with the others at the leaf's next check.
   for (int s = sourceHead_[leaf]; s != -1; s = sources_[s].next) {
     if ((t * (sources_[s].x - xc)).norm() < epsM_) {
-      intersectInto(sources_[s].m, m);
+      if (intersectInto(sources_[s].m, m)) sources_[s].checked = false;
       return;
     }
   }
   sources_.push_back({xc, m, sourceHead_[leaf]});
   sourceHead_[leaf] = static_cast<int>(sources_.size()) - 1;
   ++pending_;
-  // Size sensitivity and metric difference, recursively in the sub-elements.
+  // Size sensitivity and metric difference, recursively in the sub-elements. A leaf that
+  // passes, or cannot split (deepest level), has its sources marked checked.
   std::vector<int> work{leaf};
   while (!work.empty()) {
     const int n = work.back();
     work.pop_back();
-    if (!tree_.isLeaf(n) || !initialSplitNeeded(n)) continue;
+    if (!tree_.isLeaf(n)) continue;
     const int before = tree_.nodeCount();
-    if (!splitLeaf(n)) continue;
+    if (!initialSplitNeeded(n) || !splitLeaf(n)) {
+      markChecked(n);
+      continue;
+    }
     for (int c = before; c < tree_.nodeCount(); ++c)
       if (tree_.isLeaf(c) && sourceHead_[c] != -1) work.push_back(c);
   }
@@ -246,11 +251,20 @@ void TreeControlSpace<D>::insertInitial(const Vec& x, const Metric<D>& m) {
 template <int D>
 bool TreeControlSpace<D>::initialSplitNeeded(int leaf) const {
   for (int s = sourceHead_[leaf]; s != -1; s = sources_[s].next) {
-    if (maxEdgeMetricLength(leaf, sources_[s].m, auxAt(sources_[s].x)) > lMax_) return true;
-    for (int r = sources_[s].next; r != -1; r = sources_[r].next)
-      if (metricDifference(sources_[s].m, sources_[r].m) > epsDelta_) return true;
+    const PointSource& a = sources_[s];
+    // a checked source was short enough in an ancestor, hence in this smaller leaf, unless
+    // the cached M_p it is measured with changed
+    if ((!a.checked || hasAux_) && maxEdgeMetricLength(leaf, a.m, auxAt(a.x)) > lMax_) return true;
+    if (a.checked) continue;
+    for (int r = sourceHead_[leaf]; r != -1; r = sources_[r].next)
+      if (r != s && metricDifference(a.m, sources_[r].m) > epsDelta_) return true;
   }
   return false;
+}
+
+template <int D>
+void TreeControlSpace<D>::markChecked(int leaf) {
+  for (int s = sourceHead_[leaf]; s != -1; s = sources_[s].next) sources_[s].checked = true;
 }
 
 template <int D>

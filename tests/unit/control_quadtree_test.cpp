@@ -107,6 +107,24 @@ TEST(ControlQuadtree, InitialPointSourcesSplitAndInitialize) {
   EXPECT_EQ(visited, cs.controlVertexCount());
 }
 
+TEST(ControlQuadtree, MergedPointSourceIsComparedAtTheLeafsNextInsertion) {
+  // ε_δ 0.2: isotropic sizes h, h' differ by √2 |h/h' + h'/h - 2|: 0.2 / 0.4 by 0.71,
+  // 0.28 by 0.16 from 0.2 and 0.18 from 0.4. The box is short in every size (size rule idle).
+  SizingParameters params;
+  CSQuadtree2d cs(box2(0, 0, 0.35, 0.35), params);
+  const Vec2 a(0.1, 0.1), c(0.3, 0.3);
+  cs.insertDiscreteSource(a, Metric2d::isotropic(0.4));
+  cs.insertDiscreteSource(c, Metric2d::isotropic(0.4));
+  EXPECT_EQ(cs.leafCount(), 1u);
+  // merged into a's source (0.2 now), unlike c's: compared when the leaf takes the next one
+  cs.insertDiscreteSource(a, Metric2d::isotropic(0.2));
+  EXPECT_EQ(cs.pendingSourceCount(), 2u);
+  cs.insertDiscreteSource(Vec2(0.3, 0.1), Metric2d::isotropic(0.28));
+  cs.validate();
+  const auto& tree = cs.structure().tree();
+  EXPECT_NE(tree.locate(a), tree.locate(c));
+}
+
 TEST(ControlQuadtree, ContinuousSourceFoldsInSourcesCollectedBefore) {
   SizingParameters params;
   CSQuadtree2d cs(box2(0, 0, 1, 1), params);

@@ -9,9 +9,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
+#include "io/AtomicFile.h"
 #include "io/readers/ReadMesh.h"
 #include "io/readers/fields/NodalField.h"
 #include "mesher/adapt/FieldTransfer.h"
@@ -33,11 +35,18 @@ constexpr double kCoverTolerance = 0.05;
 /// --target-nodes is met within this fraction when it can be: a mesh that misses it by more
 /// is made again (at most kMaxCountRounds meshes in all) with the metric's target moved by a
 /// secant step on log(count made) against log(count the metric is scaled to): the first step
-/// assumes proportionality, later ones the measured slope (clamped to kCountSlope). The
+/// assumes proportionality, later ones the measured slope (at most kCountSlope[1]). The
 /// Lp metric's prediction (LpMetric.h) is calibrated on uniform metrics; anisotropic fields
 /// that vary fast make up to ~50 % more nodes (the 10 mm cube, tanh front, second round),
 /// a field the first mesh does not resolve fewer (the same cube from a size-1 mesh: 1932
 /// for 3000, then 2248 for a metric scaled to 4658: slope 0.34).
+/// The rounds stop early when the count cannot follow the metric: a measured slope below
+/// kCountSlope[0] (the model bounds the count: thin walls keep sizes under a thickness,
+/// hmin / hmax, curvature; the next step would rescale the metric by (asked / made)^5 or
+/// more, to no effect: the holeplate from its h 5 mesh, 8000 asked, 19669 then 17667 nodes
+/// at a metric scaled 0.41 times, slope 0.12; a third mesh at hmax made 18732), or a metric
+/// already clamped to [hmin, hmax] (LpMetric::limited) on the side the count missed.
+/// The mesh kept is the one closest to the count asked (made again when it is not the last).
 constexpr double kCountTolerance = 0.15;
 /// --target-nodes counts the output's nodes, the mid-side nodes of --order 2 too (what the
 /// solver counts); the metric is first scaled to N / this many vertices: a Delaunay tet mesh
@@ -46,6 +55,15 @@ constexpr double kCountTolerance = 0.15;
 constexpr double kQuadraticNodesPerVertex[4] = {1, 1, 4.0, 7.0};
 constexpr int kMaxCountRounds = 3;
 constexpr double kCountSlope[2] = {0.2, 1.5};
+
+/// What the field gives every round: its recovered Hessians and the old mesh's measures
+/// (the count rounds rescale the metric only).
+struct FieldMetricInput {
+  std::vector<Mat3> hessians;
+  std::vector<double> measures;
+  std::vector<Vec3> normals;
+  std::vector<BoundaryFacet> boundary;
+};
 
 /// The cells of the top dimension of `m` (tetrahedra, else triangles) as a PatchMesh.
 PatchMesh patchMesh(const io::ReadMesh& m, const std::string& path) {
@@ -79,8 +97,8 @@ void checkCover(const PatchMesh& p, const Model& model, const std::string& path,
                      std::to_string(kCoverTolerance) + " of its diagonal): a mesh of another model?");
 }
 
-nlohmann::json adaptSizing(const AdaptArgs& a, const io::ReadMesh& old, const PatchMesh& p,
-                           const io::NodalField& field, const Model& model, UserSizing& user) {
+nlohmann::json adaptSizing(const AdaptArgs& a, const io::ReadMesh& old, const PatchMesh& p, const io::NodalField& field,
+                           const FieldMetricInput& in, const Model& model, UserSizing& user) {
   checkCover(p, model, a.from, a.mesh.file);
   const SizingParameters& s = a.mesh.options.sizing;
   LpMetricParameters lp;
@@ -91,11 +109,9 @@ nlohmann::json adaptSizing(const AdaptArgs& a, const io::ReadMesh& old, const Pa
   lp.hmin = s.hminFor(model.diagonal());
   lp.hmax = s.hmaxFor(model.diagonal());
   lp.anisotropy = s.anisotropy;
-  const std::vector<Mat3> h =
-      recoverHessian(p, field.values, a.hessian == "l2" ? HessianMethod::DoubleL2 : HessianMethod::LeastSquares);
   LpMetric metric;
   try {
-    metric = lpMetric(h, nodeMeasures(p), nodeNormals(p), boundaryFacets(p), lp);
+    metric = lpMetric(in.hessians, in.measures, in.normals, in.boundary, lp);
   } catch (const MeshingError& e) {
     throw InputError(a.from + ": field " + a.field + ": " + e.what());
   }
@@ -166,6 +182,49 @@ CLI::App* addAdaptCommand(CLI::App& app, AdaptArgs& a) {
   return cmd;
 }
 
+namespace {
+
+/// One mesh of the count rounds, read back from its report.
+struct CountRound {
+  double scaled = 0;  ///< the vertex count the metric was scaled to
+  double made = 0;    ///< the output's nodes
+  bool limitedAway = false;  ///< the metric was clamped on the side the count missed
+};
+
+CountRound readRound(const std::string& report, double scaled, double asked) {
+  std::ifstream in(report);
+  const nlohmann::json r = nlohmann::json::parse(in, nullptr, false);
+  CountRound c{scaled, r.value("/counts/nodes"_json_pointer, 0.0), false};
+  const double predicted = r.value("/adapt/predicted_nodes"_json_pointer, 0.0);
+  // limited: the metric could not reach `scaled`; the prediction is on the side of the
+  // count made when the metric is as coarse (or as fine) as it can be
+  c.limitedAway = r.value("/adapt/limited"_json_pointer, false) && (c.made - asked) * (predicted - scaled) > 0;
+  return c;
+}
+
+/// The report asked by --report gets the count rounds' outcome in its adapt block.
+void recordCount(const std::string& report, double asked, double made, int meshes, const std::string& stop) {
+  std::ifstream in(report);
+  nlohmann::ordered_json r = nlohmann::ordered_json::parse(in, nullptr, false);
+  if (r.is_discarded() || !r.contains("adapt")) return;
+  r["adapt"]["count"] = {{"asked", asked},
+                         {"made", made},
+                         {"meshes", meshes},
+                         {"reached", std::abs(made / asked - 1) <= kCountTolerance},
+                         {"stop", stop}};
+  io::writeFileAtomically(report, r.dump(1) + "\n");
+}
+
+std::string count(double n) { return std::to_string(static_cast<long long>(std::llround(n))); }
+
+std::string ratio(double x) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3g", x);
+  return b;
+}
+
+}  // namespace
+
 int runAdapt(const AdaptArgs& given) {
   AdaptArgs a = given;
   if (a.targetNodes > 0 && a.error > 0) throw InputError("adapt: give --target-nodes or --error, not both");
@@ -178,11 +237,14 @@ int runAdapt(const AdaptArgs& given) {
   const io::ReadMesh old = io::readMesh(a.from);
   const io::NodalField field = io::selectField(old, a.field, a.from);
   const PatchMesh p = patchMesh(old, a.from);
+  const FieldMetricInput in{
+      recoverHessian(p, field.values, a.hessian == "l2" ? HessianMethod::DoubleL2 : HessianMethod::LeastSquares),
+      nodeMeasures(p), nodeNormals(p), boundaryFacets(p)};
   MeshArgs& m = a.mesh;
   if (m.options.dim == 0) m.options.dim = p.dim;
   m.anisotropyGiven = true;  // the adapted metric's γ_a holds in the volume too
-  m.extraSizing = [&a, &old, &p, &field](const Model& model, UserSizing& user) {
-    return adaptSizing(a, old, p, field, model, user);
+  m.extraSizing = [&a, &old, &p, &field, &in](const Model& model, UserSizing& user) {
+    return adaptSizing(a, old, p, field, in, model, user);
   };
   const NodeDataHook nodeData = a.transfer ? transferHook(p, field) : NodeDataHook();
   if (a.error > 0) return runMesh(m, nodeData);
@@ -195,26 +257,63 @@ int runAdapt(const AdaptArgs& given) {
     std::string path;
     ~Remove() { if (!path.empty()) std::filesystem::remove(path); }
   } cleanup{ownReport ? m.report : std::string()};
-  double scaled = a.mesh.options.order == 2 ? a.targetNodes / kQuadraticNodesPerVertex[p.dim] : a.targetNodes;
-  double prevScaled = 0, prevMade = 0;
-  a.metricTarget = scaled;
-  for (int round = 1;; ++round) {
+  const double asked = a.targetNodes;
+  auto miss = [asked](const CountRound& r) { return std::abs(std::log(r.made / asked)); };
+  std::vector<CountRound> rounds;
+  a.metricTarget = a.mesh.options.order == 2 ? asked / kQuadraticNodesPerVertex[p.dim] : asked;
+  std::string stop;
+  for (;;) {
     const int rc = runMesh(m, nodeData);
-    if (rc != 0 || round == kMaxCountRounds) return rc;
-    std::ifstream in(m.report);
-    const double made = nlohmann::json::parse(in, nullptr, false).value("/counts/nodes"_json_pointer, 0.0);
-    if (!(made > 0) || std::abs(made / a.targetNodes - 1) <= kCountTolerance) return rc;
+    if (rc != 0) return rc;
+    rounds.push_back(readRound(m.report, a.metricTarget, asked));
+    const CountRound& r = rounds.back();
+    if (!(r.made > 0)) return rc;
+    if (std::abs(r.made / asked - 1) <= kCountTolerance) {
+      stop = "within tolerance";
+      break;
+    }
     double slope = 1;
-    if (prevMade > 0 && made != prevMade && scaled != prevScaled)
-      slope = std::clamp(std::log(made / prevMade) / std::log(scaled / prevScaled), kCountSlope[0], kCountSlope[1]);
-    logInfo("adapt: " + std::to_string(static_cast<long long>(made)) + " nodes for " +
-            std::to_string(static_cast<long long>(a.targetNodes)) + " asked: meshing again with the metric rescaled");
-    prevScaled = scaled;
-    prevMade = made;
-    scaled *= std::pow(a.targetNodes / made, 1 / slope);
-    if (a.firstNodes == 0) a.firstNodes = made;
-    a.metricTarget = scaled;
+    if (rounds.size() > 1) {
+      const CountRound& q = rounds[rounds.size() - 2];
+      slope = std::log(r.made / q.made) / std::log(r.scaled / q.scaled);
+      if (!(slope >= kCountSlope[0])) {
+        stop = "count bound by the model";
+        logWarning("adapt: " + count(r.made) + " nodes for " + count(asked) + " asked: the count hardly follows the metric (" +
+                   count(q.made) + " then " + count(r.made) + " nodes for a metric scaled " +
+                   ratio(r.scaled / q.scaled) + " times): the model bounds it (thin walls, hmin / hmax, curvature)");
+        break;
+      }
+    }
+    if (r.limitedAway) {
+      stop = "metric at hmin / hmax";
+      logWarning("adapt: " + count(r.made) + " nodes for " + count(asked) +
+                 " asked: the metric is already at its bound (hmin / hmax) on that side");
+      break;
+    }
+    if (static_cast<int>(rounds.size()) == kMaxCountRounds) {
+      stop = "rounds";
+      logWarning("adapt: " + count(r.made) + " nodes for " + count(asked) + " asked after " +
+                 std::to_string(kMaxCountRounds) + " meshes (tolerance " + count(100 * kCountTolerance) + " %)");
+      break;
+    }
+    logInfo("adapt: " + count(r.made) + " nodes for " + count(asked) + " asked: meshing again with the metric rescaled");
+    if (a.firstNodes == 0) a.firstNodes = r.made;
+    a.metricTarget *= std::pow(asked / r.made, 1 / std::min(slope, kCountSlope[1]));
   }
+  const auto best = std::min_element(rounds.begin(), rounds.end(),
+                                     [&miss](const CountRound& x, const CountRound& y) { return miss(x) < miss(y); });
+  int meshes = static_cast<int>(rounds.size());
+  double made = rounds.back().made;
+  if (best != rounds.end() - 1) {
+    logInfo("adapt: meshing again the closest of the " + std::to_string(meshes) + " meshes (" + count(best->made) + " nodes)");
+    a.metricTarget = best->scaled;
+    const int rc = runMesh(m, nodeData);
+    if (rc != 0) return rc;
+    ++meshes;
+    made = readRound(m.report, a.metricTarget, asked).made;
+  }
+  if (!ownReport) recordCount(m.report, asked, made, meshes, stop);
+  return 0;
 }
 
 }  // namespace aniso::cli
