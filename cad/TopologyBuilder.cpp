@@ -340,8 +340,8 @@ void buildSolid(const ShapeMaps& maps, int si, Model& model,
     // shell that bounds the solid are a bonded interface.
     // An open void shell that is a sheet (detail/SheetShell.h) is a crack too, whatever the
     // orientation its faces are stored with.
-    const int si2 = indexIn(maps.shells, s, "shell");
-    const bool sheet = !s.IsSame(outer) && !model.shells[si2].closed && detail::isSheetShell(s);
+    const int shellIndex = indexIn(maps.shells, s, "shell");
+    const bool sheet = !s.IsSame(outer) && !model.shells[shellIndex].closed && detail::isSheetShell(s);
     std::vector<int> internal;
     bool bounding = false;
     for (TopExp_Explorer f(s, TopAbs_FACE); f.More(); f.Next()) {
@@ -353,7 +353,7 @@ void buildSolid(const ShapeMaps& maps, int si, Model& model,
       const bool seen = std::any_of(ms.embedded.begin(), ms.embedded.end(), [&](const EmbeddedFace& e) { return e.face == f; });
       if (!seen) ms.embedded.push_back({f, !bounding});
     }
-    if (!s.IsSame(outer) && bounding) ms.voidShells.push_back(si2);
+    if (!s.IsSame(outer) && bounding) ms.voidShells.push_back(shellIndex);
   }
 }
 
