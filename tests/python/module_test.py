@@ -56,6 +56,16 @@ class SameAsCli(unittest.TestCase):
         m = self.same(PERIODIC, ["--hmax-rel", "0.5", "--curvature-ratio", "0.15"], hmax_rel=0.5, curvature_ratio=0.15)
         self.assertEqual(m.report["proximity"]["rounds"], 1)  # the round is the point of this case
 
+    def test_crack(self):
+        crack = os.path.join(OWN, "crack.brep")
+        m = self.same(crack, ["--hmax", "1.5"], hmax=1.5)
+        bonded = self.same(crack, ["--hmax", "1.5", "--internal-faces", "bond"], hmax=1.5, internal_faces="bond")
+        doubled = m.report["cracks"]["nodes_duplicated"]
+        self.assertGreater(doubled, 0)
+        self.assertEqual(bonded.report["cracks"]["faces"], 0)
+        with self.assertRaises(anisomesh.InputError):
+            anisomesh.mesh(crack, internal_faces="open")
+
     def test_other_formats(self):
         m = anisomesh.mesh(BRACKET, dim=2)
         with tempfile.TemporaryDirectory() as d:

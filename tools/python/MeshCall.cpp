@@ -86,7 +86,8 @@ struct SizeKeywords {
 /// The CLI's MeshArgs of the keywords (main.cpp's defaults).
 app::MeshArgs meshArgs(const std::string& file, std::optional<int> dim, int order, bool quad, const std::string& quadMethod,
                        const SizeKeywords& sizes, const std::optional<std::string>& sizing, int threads,
-                       std::optional<double> maxElements, bool fragment, const std::string& overlaps) {
+                       std::optional<double> maxElements, bool fragment, const std::string& overlaps,
+                       const std::string& internalFaces) {
   app::MeshArgs a;
   a.file = file;
   a.options.sizing = SizingParameters::forAnalysis();
@@ -106,6 +107,8 @@ app::MeshArgs meshArgs(const std::string& file, std::optional<int> dim, int orde
   a.options.maxElements = maxElements.value_or(0);
   a.fragment = fragment;
   a.overlaps = overlapPolicy(overlaps);
+  a.options.internalFaces = choice<InternalFaces>(
+      "internal_faces", internalFaces, {{"auto", InternalFaces::Auto}, {"crack", InternalFaces::Crack}, {"bond", InternalFaces::Bond}});
   return a;
 }
 
@@ -119,11 +122,13 @@ py::object mesh(const py::object& path, std::optional<int> dim, std::optional<do
                 std::optional<double> timeLimit, const py::object& progress, std::optional<double> hmaxRel,
                 std::optional<double> hminRel, std::optional<double> elementsPerCircle, std::optional<double> curvatureRatio,
                 bool curvature, std::optional<double> gradation, std::optional<double> anisotropy,
-                std::optional<double> contourAnisotropy, bool fragment, const std::string& overlaps) {
+                std::optional<double> contourAnisotropy, bool fragment, const std::string& overlaps,
+                const std::string& internalFaces) {
   const auto t0 = std::chrono::steady_clock::now();
   const SizeKeywords sizes{size, hmax, hmin, hmaxRel, hminRel, elementsPerCircle, curvatureRatio,
                            gradation, anisotropy, contourAnisotropy, curvature};
-  app::MeshArgs args = meshArgs(pathOf(path), dim, order, quad, quadMethod, sizes, sizing, threads, maxElements, fragment, overlaps);
+  app::MeshArgs args = meshArgs(pathOf(path), dim, order, quad, quadMethod, sizes, sizing, threads, maxElements, fragment, overlaps,
+                                internalFaces);
   if (timeLimit && !(*timeLimit >= 0)) refuse("time_limit must be a number of seconds ≥ 0");
   args.timeLimit = timeLimit.value_or(0);
   // A token always: Ctrl-C stops the run through it (Worker.h).
@@ -201,7 +206,7 @@ void bindCalls(py::module_& m) {
         py::arg("hmax_rel") = py::none(), py::arg("hmin_rel") = py::none(), py::arg("elements_per_circle") = py::none(),
         py::arg("curvature_ratio") = py::none(), py::arg("curvature") = true, py::arg("gradation") = py::none(),
         py::arg("anisotropy") = py::none(), py::arg("contour_anisotropy") = py::none(), py::arg("fragment") = true,
-        py::arg("overlaps") = "merge",
+        py::arg("overlaps") = "merge", py::arg("internal_faces") = "auto",
         "Meshes a CAD file (STEP, IGES, BREP, .json analytic) as `anisomesh mesh` does with the same options; "
         "returns an anisomesh.Mesh. progress(phase, done, total, detail) is called from this thread.");
   m.def("info", &info, py::arg("path"), py::kw_only(), py::arg("faces") = false, py::arg("fragment") = true,
