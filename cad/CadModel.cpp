@@ -114,19 +114,11 @@ PrepareReport CadModel::prepare(const PrepareOptions& options) {
     Impl& impl;
     ~Reset() { impl.cancel = nullptr; }
   } reset{*impl_};
-  if (impl_->readShape.IsNull()) {  // the first preparation: the shape as read is kept
-    impl_->readShape = impl_->shape;
-    impl_->readNameIndex = impl_->nameIndex;
-  } else {
-    impl_->shape = impl_->readShape;
-    impl_->nameIndex = impl_->readNameIndex;
-  }
   const double diag = detail::exactBoundingBox(impl_->shape).diagonal();
   // each step in a child process: a crash of OCCT costs that step only (detail/Prepare.h)
   if (options.fix)
-    detail::runPrepareStep("shape fixing", "prepare-fix", *impl_, report, [&](Impl& impl, PrepareReport& r) {
-      detail::fixShape(impl, diag, options.checkSelfIntersections, r);
-    });
+    detail::runPrepareStep("shape fixing", "prepare-fix", *impl_, report,
+                           [&](Impl& impl, PrepareReport& r) { detail::fixShape(impl, diag, r); });
   if (options.sew)
     detail::runPrepareStep("sewing", "prepare-sew", *impl_, report, [&](Impl& impl, PrepareReport& r) {
       detail::sewLooseFaces(impl, options.sewRelTolerance * diag, r);
@@ -134,7 +126,6 @@ PrepareReport CadModel::prepare(const PrepareOptions& options) {
   if (options.fragment)
     detail::runPrepareStep("fragmenting the solids", "prepare-fragment", *impl_, report,
                            [&](Impl& impl, PrepareReport& r) { detail::fragmentSolids(impl, diag, options.overlaps, r); });
-  if (const std::string w = detail::rebuiltWarning(*impl_, report); !w.empty()) report.warnings.push_back(w);
   return report;
 }
 

@@ -61,12 +61,6 @@ struct PrepareOptions {
   OverlapPolicy overlaps = OverlapPolicy::Merge;
   /// Sewing tolerance as a fraction of the bounding-box diagonal.
   double sewRelTolerance = 1e-5;
-  /// Solids (1-based, numbered as after shape fixing: PrepareReport::solidOrigin) checked
-  /// for faces crossing one another (BOPAlgo_ArgumentAnalyzer, costly: seconds per curved
-  /// solid) and rebuilt from their faces when they do, before sewing and fragmenting. Empty:
-  /// none is checked. A program asks for the solids whose boundary mesh crossed itself
-  /// (tools/app/SelfIntersections.h).
-  std::vector<int> checkSelfIntersections;
   /// Stops a step under way (its child process is killed): Cancelled naming the step.
   const CancelToken* cancel = nullptr;
 };
@@ -90,12 +84,6 @@ struct PrepareReport {
   /// Solids (1-based, as prepared) left out of the fragmenting because the fuse failed on
   /// them: meshed on their own, not conformal with the parts they touch.
   std::vector<int> unfusedSolids;
-  /// Solids (1-based, as after shape fixing) checked for faces crossing one another
-  /// (PrepareOptions::checkSelfIntersections), and those of them rebuilt from their faces.
-  std::vector<int> checkedSolids, rebuiltSolids;
-  /// Per prepared solid (1-based id k at [k-1]): the id, as after shape fixing, of the solid
-  /// it comes from (a rebuilt or fragmented solid may become several). Empty: the same ids.
-  std::vector<int> solidOrigin;
   std::vector<std::string> warnings;
 };
 
@@ -122,9 +110,8 @@ class CadModel {
   /// Summary of the current shape (as read, or as prepared after prepare()).
   ShapeSummary summary() const;
 
-  /// Healing and conformal assembly (see PrepareOptions), always from the shape as read: a
-  /// second call prepares it again (e.g. with solids to check for self-intersections).
-  /// Throws MeshingError if OCCT fails in a way that leaves no usable shape.
+  /// Healing and conformal assembly (see PrepareOptions). Throws MeshingError if OCCT
+  /// fails in a way that leaves no usable shape.
   PrepareReport prepare(const PrepareOptions& options);
 
   /// The mesher's topology of the current shape.

@@ -8,7 +8,7 @@
 
 namespace aniso::cad::detail {
 
-void fixShape(CadModel::Impl& impl, double diag, const std::vector<int>& check, PrepareReport& report) {
+void fixShape(CadModel::Impl& impl, double diag, PrepareReport& report) {
   try {
     const InternalFaces internal = collectInternalFaces(impl.shape);
     Handle(ShapeFix_Shape) fixer = new ShapeFix_Shape(impl.shape);
@@ -47,7 +47,7 @@ void fixShape(CadModel::Impl& impl, double diag, const std::vector<int>& check, 
       }
     impl.shape = fixed;
     restoreInternalFaces(impl, internal, fixer->Context());
-    rebuildSelfIntersecting(impl, check, report);
+    rebuildSelfIntersecting(impl, report);
   } catch (const Standard_Failure& e) {
     report.warnings.push_back(std::string("shape fixing failed (") + e.GetMessageString() +
                               "); the shape is kept as read");

@@ -176,7 +176,6 @@ void assembleParts(CadModel::Impl& impl, const Arguments& args, const Fuse& f,
   TopoDS_Compound c;
   b.MakeCompound(c);
   int added = 0;  // solids in c: the 1-based id of the next one, less one
-  std::vector<int> origin;  // report.solidOrigin carried through the fuse
   for (int i = 1; i <= args.solids.Extent(); ++i) {
     const TopoDS_Shape key = args.originals(i).Located(TopLoc_Location());
     const bool named = impl.nameIndex.IsBound(key);
@@ -196,14 +195,12 @@ void assembleParts(CadModel::Impl& impl, const Arguments& args, const Fuse& f,
     for (const TopoDS_Shape& s : solids) {
       b.Add(c, s);
       ++added;
-      origin.push_back(static_cast<size_t>(i) <= report.solidOrigin.size() ? report.solidOrigin[static_cast<size_t>(i - 1)] : i);
       if (f.excluded[i]) report.unfusedSolids.push_back(added);
       if (named) impl.nameIndex.Bind(s.Located(TopLoc_Location()), name);
     }
   }
   addLooseFaces(impl.shape, args.originals, c);
   impl.shape = c;
-  report.solidOrigin = std::move(origin);
 }
 
 int countSharedFaces(const TopoDS_Shape& shape) {

@@ -11,7 +11,7 @@ namespace {
 // The report crosses the process boundary as text: numbers space-separated, strings
 // length-prefixed. Every field of PrepareReport must be here (CadModel.h says so); the size
 // check makes a new field a build error here instead of a field silently lost.
-static_assert(sizeof(PrepareReport) == 2 * sizeof(int) + sizeof(double) + 6 * sizeof(std::vector<int>),
+static_assert(sizeof(PrepareReport) == 2 * sizeof(int) + sizeof(double) + 3 * sizeof(std::vector<int>),
               "PrepareReport changed: add the new field to encode() and decode()");
 std::string encode(const PrepareReport& r) {
   std::ostringstream out;
@@ -20,10 +20,8 @@ std::string encode(const PrepareReport& r) {
   for (const Overlap& o : r.overlaps)
     out << ' ' << o.a << ' ' << o.b << ' ' << o.volume << ' ' << o.assignedTo << ' ' << o.nameA.size() << ':' << o.nameA
         << ' ' << o.nameB.size() << ':' << o.nameB;
-  for (const std::vector<int>* ids : {&r.unfusedSolids, &r.checkedSolids, &r.rebuiltSolids, &r.solidOrigin}) {
-    out << ' ' << ids->size();
-    for (const int id : *ids) out << ' ' << id;
-  }
+  out << ' ' << r.unfusedSolids.size();
+  for (const int id : r.unfusedSolids) out << ' ' << id;
   out << ' ' << r.warnings.size();
   for (const std::string& w : r.warnings) out << ' ' << w.size() << ':' << w;
   return out.str();
@@ -47,11 +45,9 @@ PrepareReport decode(const std::string& text) {
     readString(o.nameA);
     readString(o.nameB);
   }
-  for (std::vector<int>* ids : {&r.unfusedSolids, &r.checkedSolids, &r.rebuiltSolids, &r.solidOrigin}) {
-    in >> n;
-    ids->resize(n);
-    for (int& id : *ids) in >> id;
-  }
+  in >> n;
+  r.unfusedSolids.resize(n);
+  for (int& id : r.unfusedSolids) in >> id;
   in >> n;
   r.warnings.resize(n);
   for (std::string& w : r.warnings) readString(w);

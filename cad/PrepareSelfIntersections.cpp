@@ -12,7 +12,6 @@
 #include <TopoDS_Solid.hxx>
 
 #include <cmath>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -101,65 +100,43 @@ std::vector<TopoDS_Shape> rebuilt(const TopoDS_Shape& solid) {
 
 }  // namespace
 
-void rebuildSelfIntersecting(CadModel::Impl& impl, const std::vector<int>& check, PrepareReport& report) {
+void rebuildSelfIntersecting(CadModel::Impl& impl, PrepareReport& report) {
   TopTools_IndexedMapOfShape solids;
   TopExp::MapShapes(impl.shape, TopAbs_SOLID, solids);
   std::vector<std::vector<TopoDS_Shape>> replacement(static_cast<std::size_t>(solids.Extent()) + 1);
-  std::set<int> ids;
-  for (const int i : check)
-    if (i >= 1 && i <= solids.Extent()) ids.insert(i);
-  for (const int i : ids) {
-    report.checkedSolids.push_back(i);
+  std::string fixed;
+  for (int i = 1; i <= solids.Extent(); ++i) {
     try {
       if (!selfInterfering(solids(i))) continue;
       replacement[static_cast<std::size_t>(i)] = rebuilt(solids(i));
     } catch (const Standard_Failure&) {
       continue;  // left as it is
     }
-    if (!replacement[static_cast<std::size_t>(i)].empty()) report.rebuiltSolids.push_back(i);
+    if (!replacement[static_cast<std::size_t>(i)].empty())
+      fixed += (fixed.empty() ? "" : ", ") + std::to_string(i) + " \"" + impl.solidName(solids(i), i) + "\"";
   }
-  if (report.rebuiltSolids.empty()) return;
+  if (fixed.empty()) return;
   // the new shape: the solids in order, each rebuilt one replaced by its pieces, then the
   // faces in no solid (as the fragmenting step assembles its result)
   BRep_Builder b;
   TopoDS_Compound c;
   b.MakeCompound(c);
-  report.solidOrigin.clear();
   for (int i = 1; i <= solids.Extent(); ++i) {
     const std::vector<TopoDS_Shape>& pieces = replacement[static_cast<std::size_t>(i)];
     if (pieces.empty()) {
       b.Add(c, solids(i));
-      report.solidOrigin.push_back(i);
       continue;
     }
     const TopoDS_Shape key = solids(i).Located(TopLoc_Location());
     for (const TopoDS_Shape& p : pieces) {
       b.Add(c, p);
-      report.solidOrigin.push_back(i);
       if (impl.nameIndex.IsBound(key)) impl.nameIndex.Bind(p.Located(TopLoc_Location()), impl.nameIndex.Find(key));
     }
   }
   addLooseFaces(impl.shape, solids, c);
   impl.shape = c;
-}
-
-std::string rebuiltWarning(const CadModel::Impl& impl, const PrepareReport& report) {
-  if (report.rebuiltSolids.empty()) return {};
-  TopTools_IndexedMapOfShape solids;
-  TopExp::MapShapes(impl.shape, TopAbs_SOLID, solids);
-  std::string list;
-  for (const int r : report.rebuiltSolids) {  // named by the prepared solids it became
-    std::vector<int> now;
-    for (std::size_t k = 0; k < report.solidOrigin.size(); ++k)
-      if (report.solidOrigin[k] == r) now.push_back(static_cast<int>(k) + 1);
-    if (now.empty()) continue;
-    const std::string name = now.front() <= solids.Extent() ? impl.solidName(solids(now.front()), now.front()) : "";
-    std::string ids;
-    for (const int k : now) ids += (ids.empty() ? "" : ", ") + std::to_string(k);
-    list += (list.empty() ? "" : ", ") + ids + " \"" + name + "\"";
-  }
-  if (list.empty()) return {};
-  return "solid(s) " + list + " had faces crossing one another: rebuilt from their faces, split where they cross";
+  report.warnings.push_back("solid(s) " + fixed +
+                            " had faces crossing one another: rebuilt from their faces, split where they cross");
 }
 
 }  // namespace aniso::cad::detail

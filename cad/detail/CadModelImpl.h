@@ -21,9 +21,6 @@ struct CadModel::Impl {
   /// What reading had to give up (a reader path that crashed, parts skipped); logged as
   /// warnings by CadModel::read.
   std::vector<std::string> readWarnings;
-  /// The shape and part keys as read, kept by the first prepare() for the next ones.
-  TopoDS_Shape readShape;
-  TopTools_DataMapOfShapeInteger readNameIndex;
   /// The token of the operation under way (read, prepare): stops the child processes.
   const CancelToken* cancel = nullptr;
 

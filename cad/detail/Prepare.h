@@ -6,7 +6,6 @@
 #include <ShapeBuild_ReShape.hxx>
 #include <TopoDS_Compound.hxx>
 #include <functional>
-#include <string>
 #include <utility>
 #include <vector>
 
@@ -15,21 +14,15 @@
 namespace aniso::cad::detail {
 
 /// ShapeFix_Shape on the whole shape (wires, edges, faces, shells, solids), the internal
-/// faces it dropped put back (restoreInternalFaces), then rebuildSelfIntersecting on the
-/// solids `check` names.
-void fixShape(CadModel::Impl& impl, double diag, const std::vector<int>& check, PrepareReport& report);
+/// faces it dropped put back (restoreInternalFaces), then rebuildSelfIntersecting.
+void fixShape(CadModel::Impl& impl, double diag, PrepareReport& report);
 
-/// The solids `check` names (1-based; ids out of range are ignored) whose faces cross one
-/// another (BOPAlgo_ArgumentAnalyzer's self-interference: BRepCheck calls them valid, the
-/// volume mesher finds their boundary crossing itself) rebuilt from their faces by
-/// BOPAlgo_MakerVolume, faces split where they cross; a solid is replaced, in place, by the
-/// pieces only when they add up to its volume and each is manifold. Records
-/// report.checkedSolids, report.rebuiltSolids and, when one was rebuilt, report.solidOrigin.
-void rebuildSelfIntersecting(CadModel::Impl& impl, const std::vector<int>& check, PrepareReport& report);
-
-/// The warning naming the solids rebuilt (report.rebuiltSolids) by their prepared ids and
-/// part names (report.solidOrigin); empty when none was.
-std::string rebuiltWarning(const CadModel::Impl& impl, const PrepareReport& report);
+/// Solids whose faces cross one another (BOPAlgo_ArgumentAnalyzer's self-interference:
+/// BRepCheck calls them valid, the volume mesher finds their boundary crossing itself)
+/// rebuilt from their faces by BOPAlgo_MakerVolume, faces split where they cross; a solid
+/// is replaced only when the rebuilt pieces add up to its volume. Run at the end of
+/// fixShape. A warning names the solids rebuilt.
+void rebuildSelfIntersecting(CadModel::Impl& impl, PrepareReport& report);
 
 /// The INTERNAL faces of each solid of a shape (faces inside its material: a crack, an
 /// interface; ModelSolid::embedded) and the faces of its sheet shells (SheetShell.h), solid

@@ -126,10 +126,10 @@ class Recovery {
       // Both entities are named, so that splitting (a triangle by its longest edge) refines
       // both sides of the crossing: water_module's solid 3 converged in 8 rounds (196 ... 4
       // split); with every edge of a crossed triangle split it diverged (379 ... 650).
-      r.left.push_back({face, what, {bt_.tets.node[ed[0].index], bt_.tets.node[ed[1].index]}, true});
+      r.left.push_back({face, what, {bt_.tets.node[ed[0].index], bt_.tets.node[ed[1].index]}});
       std::vector<int> crossed;
       for (const VertexId v : x) crossed.push_back(bt_.tets.node[v.index]);
-      r.left.push_back({face, what, crossed, true});
+      r.left.push_back({face, what, crossed});
     }
     return !r.left.empty();
   }

@@ -51,9 +51,6 @@ struct RecoveryFailure {
   int face = -1;  ///< 0-based model face of the entity
   std::string what;
   std::vector<int> nodes;  ///< surface-mesh nodes of the missing edge (2) or triangle (3)
-  /// The boundary mesh intersects itself here (BoundaryCrossing.h): a missing edge and the
-  /// present entity it crosses.
-  bool crossing = false;
 };
 
 struct RecoveryResult {

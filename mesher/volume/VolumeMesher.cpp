@@ -43,9 +43,9 @@ struct SolidPiece {
   std::vector<ThinSpot> thin;
 };
 
-void fail(SolidPiece& p, const EntityRef& entity, const std::string& what, const char* code = "solid-mesh") {
+void fail(SolidPiece& p, const EntityRef& entity, const std::string& what) {
   p.outcome.status = SolidOutcome::Status::Failed;
-  p.outcome.problems.push_back({entity, Severity::Failed, code, what, "volume"});
+  p.outcome.problems.push_back({entity, Severity::Failed, "solid-mesh", what, "volume"});
 }
 
 std::string solidName(int s) { return "solid " + std::to_string(s + 1); }
@@ -71,12 +71,10 @@ void reportLeft(SolidPiece& p, int solid, const SurfaceMesh& surface, const std:
     auto& e = byFace[edge >= 0 ? std::make_pair(0, edge) : std::make_pair(1, f.face)];
     if (e.first++ == 0) e.second = f.what;
   }
-  // a boundary crossing itself is returned alone (BoundaryRecovery.h): one code for all
-  const char* code = !left.empty() && left.front().crossing ? "boundary-self-crossing" : "solid-mesh";
   for (const auto& [key, e] : byFace)
     fail(p, key.first == 0 ? EntityRef::edge(key.second) : EntityRef::face(key.second),
          std::to_string(e.first) + " boundary edges/triangles not recovered in the tetrahedra of " + solidName(solid) +
-             " (e.g. " + e.second + ")", code);
+             " (e.g. " + e.second + ")");
 }
 
 void extract(const SolidTetMesh& s, SolidPiece& p) {

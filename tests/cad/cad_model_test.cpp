@@ -1,7 +1,6 @@
 // CadModel: reading, part names, preparation (conformal assemblies), topology.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -112,35 +111,4 @@ TEST(CadModel, BrepRoundTrip) {
   CadModel back = CadModel::read(out.string());
   EXPECT_NEAR(back.summary().volume, m.summary().volume, 1e-9 * m.summary().volume);
   std::filesystem::remove(out);
-}
-
-// Push_SMD_6.2x6.2mm's solid 1 has faces crossing one another (faces 41 and 49 overlap in
-// z = 3.5). Preparation checks no solid unless asked; asked for solid 1 (as the volume
-// mesher does when that solid's boundary mesh crosses itself), it checks that one only and
-// rebuilds it, from the shape as read (fragmenting then gives 7 solids instead of 11).
-TEST(CadModel, ChecksSelfIntersectionsOnlyOfTheSolidsAsked) {
-  CadModel m = CadModel::read(std::string(ANISOMESH_SHARED_DIR) + "/assemblies/Push_SMD_6.2x6.2mm_h7.0mm.step");
-  const PrepareReport plain = m.prepare({});
-  EXPECT_TRUE(plain.checkedSolids.empty());
-  EXPECT_TRUE(plain.rebuiltSolids.empty());
-  const int plainSolids = m.summary().solids;
-  ASSERT_EQ(static_cast<int>(plain.solidOrigin.size()), plainSolids);
-  EXPECT_EQ(plain.solidOrigin[0], 1);
-  PrepareOptions o;
-  o.checkSelfIntersections = {plain.solidOrigin[0]};
-  const PrepareReport r = m.prepare(o);
-  EXPECT_EQ(r.checkedSolids, std::vector<int>{1});
-  EXPECT_EQ(r.rebuiltSolids, std::vector<int>{1});
-  const ShapeSummary s = m.summary();
-  EXPECT_EQ(s.solids, 7);
-  EXPECT_LT(s.solids, plainSolids);
-  ASSERT_EQ(static_cast<int>(r.solidOrigin.size()), s.solids);
-  EXPECT_EQ(r.solidOrigin[0], 1);
-  EXPECT_NEAR(s.solidList[0].volume, 109.684, 0.005 * 109.684);
-  EXPECT_TRUE(std::any_of(r.warnings.begin(), r.warnings.end(), [](const std::string& w) {
-    return w.find("solid(s) 1 \"") == 0 && w.find("crossing one another") != std::string::npos;
-  }));
-  // a second plain preparation starts from the shape as read again
-  m.prepare({});
-  EXPECT_EQ(m.summary().solids, plainSolids);
 }

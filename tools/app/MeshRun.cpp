@@ -8,7 +8,6 @@
 #include "tools/app/BudgetReport.h"
 #include "tools/app/MeshArgsCheck.h"
 #include "tools/app/RunReport.h"
-#include "tools/app/SelfIntersections.h"
 #include "tools/app/SizingReport.h"
 
 namespace aniso::app {
@@ -58,23 +57,6 @@ MeshRun meshFile(MeshArgs& args, io::Report& report) {
   request.analytic = analytic.get();
 
   run.result = meshModel(in.model, request);
-  // solids left out because their faces cross one another: checked, rebuilt, meshed again (once)
-  if (const std::vector<int> crossing = selfCrossingSolids(run.result); !crossing.empty()) {
-    const bool rebuilt = rebuildSelfIntersecting(in, args.file, crossing);
-    report.times = in.times;
-    report.extra["model"] = in.summary;
-    report.problems = in.problems;
-    if (rebuilt) {
-      double first = 0;  // the mesh given up
-      for (const auto& [phase, sec] : run.result.times) first += sec;
-      report.times.emplace_back("mesh before rebuild", first);
-      run.result = meshModel(in.model, request);
-    }
-    run.result.decisions.push_back(
-        {"self-intersections", rebuilt ? "solids rebuilt, meshed again" : "nothing rebuilt",
-         std::to_string(crossing.size()) + " solid(s) left out with their boundary mesh crossing itself, " +
-             std::to_string(in.prepared.rebuiltSolids.size()) + " of them rebuilt from their faces"});
-  }
   const MeshResult& result = run.result;
   fillRunReport(in.model, result, report);
   report.extra["sizing"] = sizingReport(args.options.sizing, in.model.diagonal(), result.surface.mesh,

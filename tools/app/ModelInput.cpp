@@ -1,6 +1,5 @@
 #include "tools/app/ModelInput.h"
 
-#include <algorithm>
 #include <chrono>
 #include <memory>
 
@@ -10,14 +9,10 @@
 #include "tools/app/ModelJson.h"
 
 namespace aniso::app {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point a) { return std::chrono::duration<double>(Clock::now() - a).count(); }
-
-}  // namespace
 
 ModelInput loadModel(const std::string& file, bool fragment, cad::OverlapPolicy overlaps, const CancelToken* cancel) {
+  using Clock = std::chrono::steady_clock;
+  auto since = [](Clock::time_point a) { return std::chrono::duration<double>(Clock::now() - a).count(); };
   ModelInput in;
   auto t = Clock::now();
   if (io::isAnalyticModelPath(file)) {
@@ -31,34 +26,26 @@ ModelInput loadModel(const std::string& file, bool fragment, cad::OverlapPolicy 
     return in;
   }
   auto phase = std::make_unique<Progress>("read", 0);  // a top-level phase of --progress
-  in.cad = std::make_shared<cad::CadModel>(cad::CadModel::read(file, cancel));
+  cad::CadModel model = cad::CadModel::read(file, cancel);
   phase.reset();  // read ends before prepare begins (else prepare would nest in it)
+  phase = std::make_unique<Progress>("prepare", 0);
   in.times.emplace_back("read", since(t));
-  in.prepareOptions.fragment = fragment;
-  in.prepareOptions.overlaps = overlaps;
-  in.prepareOptions.cancel = cancel;
-  prepareModel(in, file);
-  return in;
-}
-
-void prepareModel(ModelInput& in, const std::string& file, const std::vector<std::string>& logged,
-                  const char* prepareTime, const char* topologyTime) {
-  auto phase = std::make_unique<Progress>(prepareTime, 0);
-  auto t = Clock::now();
-  in.prepared = in.cad->prepare(in.prepareOptions);
-  const cad::PrepareReport& prep = in.prepared;
-  const cad::ShapeSummary summary = in.cad->summary();
-  in.times.emplace_back(prepareTime, since(t));
+  t = Clock::now();
+  cad::PrepareOptions popt;
+  popt.fragment = fragment;
+  popt.overlaps = overlaps;
+  popt.cancel = cancel;
+  const cad::PrepareReport prep = model.prepare(popt);
+  const cad::ShapeSummary summary = model.summary();
+  in.times.emplace_back("prepare", since(t));
   phase.reset();
-  for (const std::string& w : prep.warnings)
-    if (std::find(logged.begin(), logged.end(), w) == logged.end()) logWarning(file + ": " + w);
+  for (const std::string& w : prep.warnings) logWarning(file + ": " + w);
   in.solids = summary.solids;
   in.summary = summaryJson(summary);
   in.summary.update(prepareJson(prep));
   t = Clock::now();
-  in.model = in.cad->topology();
-  in.times.emplace_back(topologyTime, since(t));
-  in.problems.clear();
+  in.model = model.topology();
+  in.times.emplace_back("topology", since(t));
   for (const int id : prep.unfusedSolids) {
     const std::string part =
         id >= 1 && id <= static_cast<int>(in.model.solids.size()) ? in.model.solids[id - 1].name : std::string();
@@ -67,6 +54,7 @@ void prepareModel(ModelInput& in, const std::string& file, const std::vector<std
                            "parts it touches",
                            "prepare"});
   }
+  return in;
 }
 
 std::unique_ptr<ControlSpace2d> analyticControlSpace(const ModelInput& in) {

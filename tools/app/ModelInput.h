@@ -24,11 +24,6 @@ struct ModelInput {
   std::vector<std::pair<std::string, double>> times; ///< read, prepare, topology
   /// Shortcomings of the preparation, graded (a solid left unfragmented: degraded).
   std::vector<Problem> problems;
-  /// CAD files only: the model read, how it was prepared and what that said (kept so that
-  /// it can be prepared again, SelfIntersections.h).
-  std::shared_ptr<cad::CadModel> cad;
-  cad::PrepareOptions prepareOptions;
-  cad::PrepareReport prepared;
 };
 
 /// Reads and prepares `file` (fragmenting the solids if `fragment`, overlapping ones by
@@ -36,13 +31,6 @@ struct ModelInput {
 /// and preparing too (cad::CadModel).
 ModelInput loadModel(const std::string& file, bool fragment,
                      cad::OverlapPolicy overlaps = cad::OverlapPolicy::Merge, const CancelToken* cancel = nullptr);
-
-/// Prepares in.cad with in.prepareOptions (from the shape as read) and sets everything of
-/// `in` that follows from it: prepared, solids, summary, model, problems; the times of the
-/// preparation and of the topology are appended as `prepareTime` and `topologyTime`; the
-/// warnings not in `logged` are logged, prefixed by `file`.
-void prepareModel(ModelInput& in, const std::string& file, const std::vector<std::string>& logged = {},
-                  const char* prepareTime = "prepare", const char* topologyTime = "topology");
 
 /// The analytic sizing of an analytic model as a control space over its (u, v) domain.
 std::unique_ptr<ControlSpace2d> analyticControlSpace(const ModelInput& in);

@@ -37,8 +37,6 @@ nlohmann::ordered_json prepareJson(const cad::PrepareReport& r) {
   }
   j["overlaps"] = ov;
   j["unfused_solids"] = r.unfusedSolids;
-  j["self_intersection_checks"] = r.checkedSolids;  // numbered as after shape fixing
-  j["self_intersections_rebuilt"] = r.rebuiltSolids;
   j["warnings"] = r.warnings;
   return j;
 }

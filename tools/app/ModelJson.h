@@ -11,9 +11,7 @@ namespace aniso::app {
 /// {"solids","shells","faces","edges","vertices","volume","area","bbox":{...},"solid_list":[...]}
 nlohmann::ordered_json summaryJson(const cad::ShapeSummary& s);
 /// {"sewn_faces","shared_faces","fuzzy","overlaps":[{"a","b","name_a","name_b","volume","assigned_to"}],
-///  "unfused_solids","self_intersection_checks","self_intersections_rebuilt","warnings":[...]};
-/// assigned_to is null when the common region stayed in both (--overlaps keep); the solids
-/// checked for and rebuilt from self-intersections are numbered as after shape fixing.
+///  "warnings":[...]}; assigned_to is null when the common region stayed in both (--overlaps keep).
 nlohmann::ordered_json prepareJson(const cad::PrepareReport& r);
 /// Human-readable lines.
 std::string summaryText(const cad::ShapeSummary& s, const std::string& indent);
