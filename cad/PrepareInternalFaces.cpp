@@ -23,9 +23,12 @@ InternalFaces collectInternalFaces(const TopoDS_Shape& shape) {
     TopTools_ListOfShape faces;
     for (TopExp_Explorer f(solids(i), TopAbs_FACE); f.More(); f.Next())
       if (f.Current().Orientation() == TopAbs_INTERNAL) faces.Append(f.Current());
-    // the faces of a sheet stored as a void shell (SheetShell.h): inside the material too
-    const TopoDS_Shape outer = BRepClass3d::OuterShell(TopoDS::Solid(solids(i)));
-    for (TopoDS_Iterator s(solids(i)); s.More(); s.Next())
+    // the faces of a sheet stored as a void shell (SheetShell.h): inside the material too;
+    // a solid of one shell has none to classify
+    int shells = 0;
+    for (TopoDS_Iterator s(solids(i)); s.More(); s.Next()) shells += s.Value().ShapeType() == TopAbs_SHELL;
+    const TopoDS_Shape outer = shells > 1 ? BRepClass3d::OuterShell(TopoDS::Solid(solids(i))) : TopoDS_Shape();
+    for (TopoDS_Iterator s(solids(i)); s.More() && shells > 1; s.Next())
       if (s.Value().ShapeType() == TopAbs_SHELL && !s.Value().IsSame(outer) && isSheetShell(s.Value()))
         for (TopExp_Explorer f(s.Value(), TopAbs_FACE); f.More(); f.Next())
           if (f.Current().Orientation() != TopAbs_INTERNAL && f.Current().Orientation() != TopAbs_EXTERNAL)

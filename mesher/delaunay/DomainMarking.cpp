@@ -56,14 +56,17 @@ DomainMarks markDomain(const Triangulation2d& tri, std::span<const std::pair<Ver
     }
   }
   flood(tri, m.inside, stack, std::uint8_t{1}, std::uint8_t{0});
-  // A slit (an edge in the contour both ways) has the domain on both sides.
+  // A slit (an edge in the contour both ways) has the domain on both sides; the contour's
+  // edges are indexed only when a conflict is possible (faces without slits never do).
   std::unordered_set<std::uint64_t> directed;
   const auto key = [](VertexId a, VertexId b) { return (std::uint64_t{a.index} << 32) | b.index; };
-  for (const auto& [a, b] : contour) directed.insert(key(a, b));
   for (const auto& [a, b] : contour) {
     TriId t;
     int i = 0;
-    if (tri.findEdge(b, a, t, i) && m.inside[t.index] && !directed.count(key(b, a))) ++m.conflicts;
+    if (!tri.findEdge(b, a, t, i) || !m.inside[t.index]) continue;
+    if (directed.empty())
+      for (const auto& [p, q] : contour) directed.insert(key(p, q));
+    if (!directed.count(key(b, a))) ++m.conflicts;
   }
   for (std::uint8_t v : m.inside) m.insideCount += v;
   return m;
