@@ -90,9 +90,8 @@ def run_limited(cmd, limit, folder):
         while p.poll() is None:
             if time.perf_counter() - t0 >= limit:
                 timeout = True
-                if timer:
-                    kill_children(p.pid)
-                else:
+                # The timer may not have started the command yet: then the whole group goes.
+                if not timer or kill_children(p.pid) == 0:
                     os.killpg(p.pid, signal.SIGKILL)
                 try:
                     p.wait(5)
@@ -131,6 +130,7 @@ def kill_children(pid):
             os.kill(c, signal.SIGKILL)
         except ProcessLookupError:
             pass
+    return len(children)
 
 
 def read_text(path):
@@ -316,8 +316,8 @@ def run_anisomesh(args, meshq, entry, dim, workdir):
     r = {"status": run_status(run, (report or {}).get("status")), "wall_s": run["wall_s"], "rss_mb": run["rss_mb"],
          "why": []}
     message = first_message(run["stderr"], report)
-    if run["timeout"]:
-        message = message or f"killed after {args.time_limit:g} s"
+    if run["timeout"]:  # the limit first: a warning printed before the kill is not the reason
+        message = f"killed after {args.time_limit:g} s" + (f"; last: {message}" if message else "")
     if message:
         r["message"] = message[:MESSAGE_CHARS]
     if run["code"] == 0 and not run["timeout"]:
