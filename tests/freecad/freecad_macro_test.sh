@@ -5,10 +5,13 @@
 #     FemMeshObject in the analysis, > 100 tetrahedra, its `Part` link is Plate, groups
 #     Plate and Plate_Face1..7 whose nodes are exactly the nodes FreeCAD's getNodesByFace finds
 #     on Face<n> of Plate, every node inside the plate's bounding box; the summary line printed;
-#  2. several objects: boxes Box and Box001 touching (one interface), a cylinder Pin through
-#     Box001 (overlap): groups named after each object and its own face numbers (again equal
-#     to getNodesByFace on every face of every object), the Part link a Part::Compound of the
-#     three, the CLI's overlap warning printed with the objects' names (not SOLID<k>);
+#  2. several objects: boxes Box and Box001 touching (one interface), a cylinder Fix_pin
+#     through Box001 (overlap): groups named after each object and its own face numbers (again
+#     equal to getNodesByFace on every face of every object), the Part link a Part::Compound
+#     of the three, the CLI's overlap warning printed with the objects' names (not SOLID<k>),
+#     and a warning that group Fix_pin_Face1 starts with the name of the analysis' constraint
+#     Fix (FreeCAD's writers would take it for Fix's node set);
+#     a quadratic surface mesh of a Part::Plane `Sheet`: groups Sheet (its shells), Sheet_Face1;
 #  3. FreeCAD's CalculiX workflow (freecad_ccx.py): no "Not all methods do work" or any other
 #     warning, ccx exits 0, tip displacement of the box in tension within 3% of F L / (E A);
 #  4. the dialog's defaults: read from `anisomesh mesh --help`, an untouched dialog sends no
@@ -35,9 +38,13 @@ cut = doc.addObject("Part::Cut", "Plate"); cut.Base = b; cut.Tool = c
 for name, x in (("Box", 0), ("Box001", 10)):
     o = doc.addObject("Part::Box", name); o.Length = o.Width = o.Height = 10
     o.Placement.Base = FreeCAD.Vector(x, 100, 0)
-pin = doc.addObject("Part::Cylinder", "Pin"); pin.Radius = 2; pin.Height = 14
+pin = doc.addObject("Part::Cylinder", "Fix_pin"); pin.Radius = 2; pin.Height = 14
 pin.Placement.Base = FreeCAD.Vector(15, 105, -2)
-ObjectsFem.makeAnalysis(doc, "Analysis")
+sheet = doc.addObject("Part::Plane", "Sheet"); sheet.Length = sheet.Width = 30
+sheet.Placement.Base = FreeCAD.Vector(0, 200, 0)
+analysis = ObjectsFem.makeAnalysis(doc, "Analysis")
+fix = ObjectsFem.makeConstraintFixed(doc, "Fix"); fix.References = [(doc.Box, "Face1")]
+analysis.addObject(fix)
 doc.recompute()
 doc.saveAs(sys.argv[-1])
 sys.exit(0)
@@ -52,11 +59,14 @@ run() {  # run NAME OBJECTS OPTIONS
   if [ $rc -eq 0 ] && [ -f "$t/$1.FCStd" ]; then ok "$1-runs"; else bad "$1-runs: exit $rc: $(tail -2 "$t/$1.err")"; fi
 }
 run plate Plate "--hmax 3"
-run several Box,Box001,Pin ""
-if grep -q "^anisomesh: AnisoMesh of Plate: [0-9]* nodes, [0-9]* tetrahedra, .*quality min .* groups, .* 0 warnings$" "$t/plate.err"
+run several Box,Box001,Fix_pin ""
+run sheet Sheet "--order 2"
+if grep -q "^anisomesh: AnisoMesh of Plate: [0-9]* nodes, [0-9]* tetrahedra, .*mean ratio min 0\.[0-9]* mean 0\.[0-9]*, .* groups, .* 0 warnings$" "$t/plate.err"
 then ok summary-line; else bad "summary-line: $(cat "$t/plate.err")"; fi
-if grep -q "^anisomesh: warning: .*'Box001' and .*'Pin' share a volume" "$t/several.err" && ! grep -q SOLID "$t/several.err"
+if grep -q "^anisomesh: warning: .*'Box001' and .*'Fix_pin' share a volume" "$t/several.err" && ! grep -q SOLID "$t/several.err"
 then ok overlap-warning-names; else bad "overlap-warning-names: $(cat "$t/several.err")"; fi
+if grep -q "^anisomesh: warning: group Fix_pin_Face1 starts with the name of Fix: " "$t/several.err"
+then ok group-prefix-clash-warned; else bad "group-prefix-clash-warned: $(cat "$t/several.err")"; fi
 
 # (not "inspect.py": freecadcmd would take the standard module of that name)
 cat > "$t/fc_inspect.py" <<PY
@@ -87,7 +97,8 @@ def inspect(path, names):
     FreeCAD.closeDocument(doc.Name)
     return r
 try:
-    r = {"plate": inspect("$t/plate.FCStd", ["Plate"]), "several": inspect("$t/several.FCStd", ["Box", "Box001", "Pin"])}
+    r = {"plate": inspect("$t/plate.FCStd", ["Plate"]), "several": inspect("$t/several.FCStd", ["Box", "Box001", "Fix_pin"]),
+         "sheet": inspect("$t/sheet.FCStd", ["Sheet"])}
 except Exception:
     r = {"error": traceback.format_exc()}
 json.dump(r, open("$t/inspect.json", "w"))
@@ -114,13 +125,22 @@ import json, sys
 s = json.load(open(sys.argv[1]))["several"]
 print(json.dumps({k: v for k, v in s.items() if k not in ("faces_equal", "groups")}))
 assert s["meshes"] == 1, s
-assert s["part_type"] == "Part::Compound" and s["part_links"] == ["Box", "Box001", "Pin"], s
+assert s["part_type"] == "Part::Compound" and s["part_links"] == ["Box", "Box001", "Fix_pin"], s
 bad = [k for k, v in s["faces_equal"].items() if not v]
 assert len(s["faces_equal"]) == 6 + 6 + 3 and not bad, bad
-assert all(s["volumes"][n] > 0 for n in ("Box", "Box001", "Pin")), s["volumes"]
+assert all(s["volumes"][n] > 0 for n in ("Box", "Box001", "Fix_pin")), s["volumes"]
 assert sum(s["volumes"].values()) == s["tets"], s
 PY
 then ok several-objects-names; else bad several-objects-names; fi
+if /usr/bin/python3 - "$t/inspect.json" <<'PY'
+import json, sys
+s = json.load(open(sys.argv[1]))["sheet"]
+print(json.dumps(s))
+assert s["meshes"] == 1 and s["tets"] == 0 and s["part"] == "Sheet", s
+assert s["faces_equal"] == {"Sheet_Face1": True} and s["volumes"]["Sheet"] > 10, s
+assert sorted(s["groups"]) == ["Sheet", "Sheet_Face1", "Sheet_Face1_Faces"], s
+PY
+then ok sheet-surface-names; else bad sheet-surface-names; fi
 
 # 3. FreeCAD's CalculiX workflow on the macro's mesh
 (cd "$t" && timeout 300 freecadcmd "$proj/tests/freecad/freecad_ccx.py" "$t/ccx.json" > ccx.log 2>&1)

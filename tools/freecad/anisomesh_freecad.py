@@ -165,6 +165,23 @@ def add_mesh_object(doc, mesh, objects, options, analysis=None):
     return obj
 
 
+def prefix_clashes(mesh, analysis):
+    """Warnings for groups whose name starts with "<member>_" for a member of the analysis:
+    FreeCAD's FEM tools (meshtools.get_femmesh_groupdata_sets_by_name) take such a group as the
+    member's node or element set instead of its references."""
+    if analysis is None:
+        return []
+    out = []
+    members = [o for o in analysis.Group if not o.isDerivedFrom("Fem::FemMeshObject")]
+    for gid in mesh.Groups:
+        name = mesh.getGroupName(gid)
+        for o in members:
+            if name.startswith(o.Name + "_"):
+                out.append(f"group {name} starts with the name of {o.Name}: FreeCAD's solver writers would take it "
+                           f"for {o.Name}'s set instead of its references; rename {o.Name} or the object")
+    return out
+
+
 def finish_run(doc, objects, shapes, folder, stderr, options, analysis=None):
     """After a successful CLI run in `folder`: reads the mesh, makes the FemMeshObject.
     Returns a Result."""
@@ -174,6 +191,7 @@ def finish_run(doc, objects, shapes, folder, stderr, options, analysis=None):
     names = solid_names(objects, shapes)
     brep = os.path.join(folder, "input.brep") + ": "
     warnings = [translate_solids(w.replace(brep, ""), names) for w in warnings_of(stderr)] + group_warnings
+    warnings += prefix_clashes(mesh, analysis)
     obj = add_mesh_object(doc, mesh, objects, options, analysis)
     summary = summary_line(obj.Label, report, mesh.NodeCount, len(mesh.Groups), len(warnings))
     return Result(obj, report, warnings, summary)

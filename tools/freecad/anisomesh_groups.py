@@ -1,6 +1,7 @@
 # Names the groups of a mesh read back from anisomesh's UNV after the FreeCAD objects it was
 # made from (README, "FreeCAD"):
-#   <Obj>               the volume elements of object Obj (its face elements in a surface mesh)
+#   <Obj>               the volume elements of object Obj (its face elements in a surface
+#                       mesh or when Obj has no solid)
 #   <Obj>_Solid<k>      the volume elements of Obj's k-th solid, only when Obj has several
 #   <Obj>_Face<n>       the nodes on Face<n> of Obj, numbered as FreeCAD numbers Obj's shape
 #   <Obj>_Face<n>_Faces the boundary (or shell) elements on that face
@@ -168,7 +169,7 @@ def name_groups(mesh, names, objects_faces, solid_counts, tolerance):
         mesh.removeGroup(gid)
     for i, name in enumerate(names):
         solids = solid_elems.get(i, [])
-        if not has_volumes:
+        if not has_volumes or not solids:  # a surface mesh, or an object without solid (a sheet)
             _add(mesh, name, "Face", object_elems.get(i, set()))
         elif volumes and solids:
             _add(mesh, name, "Volume", set().union(*solids))

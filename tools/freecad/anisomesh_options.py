@@ -117,16 +117,19 @@ def failure_message(returncode, stderr, report):
 
 
 def summary_line(name, report, node_count, group_count, warning_count):
-    """One line: object, nodes, elements by type, quality (mean ratio min/mean), groups, time,
-    warnings."""
+    """One line: object, nodes, elements by type, quality (the report's measure of the main
+    elements: mean ratio, or scaled jacobian for quads; min/mean), groups, time, warnings."""
     counts = report.get("counts", {})
     parts = [f"{node_count} nodes"]
     for key in ("tetrahedra", "triangles", "quads"):
         if counts.get(key):
             parts.append(f"{counts[key]} {key}")
     q = report.get("quality", {}).get("elements", {})
-    if "min" in q and "mean" in q:
-        parts.append(f"quality min {q['min']:.2f} mean {q['mean']:.2f}")
+    if q.get("count") == 0 and "quads" in q:  # a quad-only surface mesh: the quads' measure
+        q = q["quads"]
+    if q.get("count") and "min" in q and "mean" in q:
+        measure = q.get("measure", "quality").replace("_", " ")
+        parts.append(f"{measure} min {q['min']:.2f} mean {q['mean']:.2f}")
     parts.append(f"{group_count} groups")
     t = report.get("times", {}).get("total")
     if t is not None:
