@@ -30,17 +30,16 @@ def open_for_selection():
         QtGui.QMessageBox.warning(None, "AnisoMesh", "Select one or more Part objects to mesh.")
         return None
     try:
-        cli = core.find_cli()
-        defaults = cli_defaults(cli)
-    except (core.MeshingFailed, OSError, Exception) as e:  # noqa: BLE001 - shown to the user
-        QtGui.QMessageBox.critical(None, "AnisoMesh", f"cannot run anisomesh: {e}")
-        return None
-    try:
         import FemGui
         active = FemGui.getActiveAnalysis()
     except Exception:  # noqa: BLE001 - no FEM GUI: no active analysis
         active = None
-    dialog = MeshDialog(doc, objects, cli, defaults, core.find_analysis(doc, active))
+    try:
+        cli = core.find_cli()
+        dialog = MeshDialog(doc, objects, cli, cli_defaults(cli), core.find_analysis(doc, active))
+    except Exception as e:  # noqa: BLE001 - no CLI, a CLI that does not run, an object without shape
+        QtGui.QMessageBox.critical(None, "AnisoMesh", f"cannot mesh the selection: {e}")
+        return None
     dialog.widget.show()
     return dialog
 
