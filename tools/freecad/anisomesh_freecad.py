@@ -1,17 +1,17 @@
 # anisomesh inside FreeCAD: mesh Part objects with the anisomesh CLI and bring the result
-# back as a Fem::FemMeshObject (issue 8). Used by AnisoMesh.FCMacro, in the GUI (a dialog,
-# the CLI run by QProcess so the interface stays responsive) or headless (environment
-# variables, for scripts and tests). Only FreeCAD's own modules are imported.
+# back as a Fem::FemMeshObject linked to its shape (issues 8, 17). Used by AnisoMesh.FCMacro,
+# in the GUI (anisomesh_dialog.py) or headless (environment variables, for scripts and tests).
+# Only FreeCAD's own modules are imported.
 #
-# Flow: the shapes of the objects, with their global placement (Part.getShape), are
-# written to one BREP file in a temporary folder; `anisomesh --progress mesh in.brep -o
-# out.unv --report report.json OPTIONS` meshes them (one conformal mesh: touching solids
-# share their interfaces); Fem.read reads the UNV with its groups; the groups are renamed
-# after FreeCAD's sub-element names (FACE<n> -> Face<n>, the i-th solid group -> Solid<i>)
-# so they match the shape the user sees; a new FemMeshObject gets the mesh and goes into
-# the FEM analysis (the active one in the GUI, the only one headless). On any failure
-# nothing is created: the CLI's one-line message is shown (GUI) or printed and the macro
-# exits non-zero (headless).
+# Flow: the shapes of the objects, with their global placement (Part.getShape), are written
+# to one BREP file in a temporary folder; `anisomesh --progress mesh in.brep -o out.unv
+# --report report.json OPTIONS` meshes them (one conformal mesh: touching solids share their
+# interfaces); Fem.read reads the UNV with its groups; the groups are renamed after the
+# objects and their faces (anisomesh_groups.py: Box, Box_Face3, ...); a new FemMeshObject
+# gets the mesh, a `Part` link to the meshed object (as FreeCAD's Gmsh mesh object has, so
+# the CalculiX tools know the geometry) and goes into the FEM analysis (the active one in the
+# GUI, the only one headless). On any failure nothing is created: the CLI's one-line message
+# is shown (GUI) or printed and the macro exits non-zero (headless).
 import json
 import os
 import re
@@ -23,13 +23,25 @@ import tempfile
 
 import FreeCAD
 
-# FreeCAD's UNV import splits a group holding nodes and elements into NAME_Nodes and
-# NAME_Faces (NAME_Volumes, ...): the face groups come back as FACE<n>_Nodes, FACE<n>_Faces.
-FACE_GROUP = re.compile(r"^FACE(\d+)(?:_(Nodes|Edges|Faces|Volumes))?$")
+from anisomesh_groups import name_groups
+from anisomesh_options import build_command, failure_message, summary_line, warnings_of
+
+# Relative to the shapes' bounding-box diagonal: the distance under which a mesh face is taken
+# to lie on an object's face (anisomesh_groups.py adds a margin scaled by the mesh).
+FACE_MATCH_TOLERANCE = 1e-6
+# The object that stands for several selected objects in the mesh's Part link.
+COMPOUND_NAME = "AnisoMeshParts"
 
 
 class MeshingFailed(Exception):
     """The CLI failed or its result could not be read: the message says why."""
+
+
+class Result:
+    """A finished run: the new FemMeshObject, the CLI's report, the warnings and a summary line."""
+
+    def __init__(self, obj, report, warnings, summary):
+        self.obj, self.report, self.warnings, self.summary = obj, report, warnings, summary
 
 
 def find_cli():
@@ -43,74 +55,63 @@ def find_cli():
     if found:
         return found
     here = os.path.dirname(os.path.abspath(__file__))
-    for cand in (os.path.join(here, "..", "..", "build", "anisomesh"),):
-        if os.path.isfile(cand) and os.access(cand, os.X_OK):
-            return os.path.normpath(cand)
+    cand = os.path.normpath(os.path.join(here, "..", "..", "build", "anisomesh"))
+    if os.path.isfile(cand) and os.access(cand, os.X_OK):
+        return cand
     raise MeshingFailed("anisomesh not found: set ANISOMESH or put it on PATH")
 
 
-def export_shapes(objects, folder):
-    """Writes the objects' shapes (global placement) to folder/input.brep; returns the path."""
+def shapes_of(objects):
+    """The objects' shapes with their global placement (Part.getShape), in order."""
     import Part
 
+    if not objects:
+        raise MeshingFailed("nothing to mesh: no object selected")
     shapes = []
     for obj in objects:
         shape = Part.getShape(obj)
         if shape.isNull():
             raise MeshingFailed(f"{obj.Name}: the object has no shape")
         shapes.append(shape)
-    if not shapes:
-        raise MeshingFailed("nothing to mesh: no object selected")
+    return shapes
+
+
+def diagonal_of(shapes):
+    """The bounding-box diagonal of all shapes together (model units)."""
+    box = FreeCAD.BoundBox()
+    for s in shapes:
+        box.add(s.BoundBox)
+    return box.DiagonalLength
+
+
+def export_shapes(shapes, folder):
+    """Writes the shapes (one compound when several) to folder/input.brep; returns the path."""
+    import Part
+
     shape = shapes[0] if len(shapes) == 1 else Part.makeCompound(shapes)
     path = os.path.join(folder, "input.brep")
     shape.exportBrep(path)
     return path
 
 
-def build_command(cli, brep, unv, report, options):
-    """The CLI command line; `options` is a list of extra arguments."""
-    return [cli, "--progress", "mesh", brep, "-o", unv, "--report", report] + list(options)
+def solid_names(objects, shapes):
+    """The name of each solid of the exported compound, in order: Obj, or Obj_Solid<k> when
+    the object has several solids."""
+    out = []
+    for obj, shape in zip(objects, shapes):
+        n = len(shape.Solids)
+        out += [obj.Name] if n == 1 else [f"{obj.Name}_Solid{k}" for k in range(1, n + 1)]
+    return out
 
 
-def options_from_settings(s):
-    """CLI arguments from the dialog's settings (a dict; missing or None = CLI default)."""
-    args = []
-    if s.get("hmax"):
-        args += ["--hmax", repr(float(s["hmax"]))]
-    if s.get("size"):
-        args += ["--size", repr(float(s["size"]))]
-    if s.get("order") == 2:
-        args += ["--order", "2"]
-    if s.get("quad"):
-        args += ["--quad", "--dim", "2"]
-    elif s.get("dim"):
-        args += ["--dim", str(int(s["dim"]))]
-    for key, flag in (("anisotropy", "--anisotropy"), ("curvature_ratio", "--curvature-ratio"),
-                      ("elements_per_circle", "--elements-per-circle"), ("gradation", "--gradation")):
-        if s.get(key):
-            args += [flag, repr(float(s[key]))]
-    return args
+def translate_solids(text, names):
+    """Replaces the CLI's solid names (SOLID<k>) in a message by the objects' names."""
+    return re.sub(r"\bSOLID(\d+)\b",
+                  lambda m: names[int(m.group(1)) - 1] if 0 < int(m.group(1)) <= len(names) else m.group(0), text)
 
 
-def failure_message(returncode, stderr, report):
-    """The CLI's own one-line message, else the report's first failure, else the exit code."""
-    lines = [l for l in stderr.splitlines() if l.strip() and not l.startswith("progress:")]
-    if lines:
-        last = lines[-1].strip()
-        return last[len("anisomesh: "):] if last.startswith("anisomesh: ") else last
-    try:
-        with open(report) as f:
-            r = json.load(f)
-        if r.get("failures"):
-            first = r["failures"][0]
-            return f"{first.get('entity', '')}: {first.get('what', '')}"
-    except (OSError, ValueError):
-        pass
-    return f"anisomesh failed with exit code {returncode}"
-
-
-def read_mesh(unv):
-    """Reads the UNV and renames its groups after FreeCAD's Face<n> / Solid<n>."""
+def read_mesh(unv, objects, shapes):
+    """Reads the UNV and names its groups after the objects. Returns (mesh, warnings)."""
     import Fem
 
     if not os.path.isfile(unv):
@@ -118,35 +119,22 @@ def read_mesh(unv):
     mesh = Fem.read(unv)
     if mesh.NodeCount == 0:
         raise MeshingFailed(f"{unv}: the mesh is empty")
-    rename_groups(mesh)
-    return mesh
+    warnings = name_groups(mesh, [o.Name for o in objects], [s.Faces for s in shapes],
+                           [len(s.Solids) for s in shapes], FACE_MATCH_TOLERANCE * diagonal_of(shapes))
+    return mesh, warnings
 
 
-def rename_groups(mesh):
-    """FACE<n>'s node group -> Face<n>, its element group -> Face<n>_Faces; the volume
-    groups, in file order, -> Solid1, Solid2, ...
-
-    FemMesh has no rename: each group is copied under its new name and the old one removed.
-    """
-    solid = 0
-    for gid in list(mesh.Groups):
-        name = mesh.getGroupName(gid)
-        kind = mesh.getGroupElementType(gid)
-        m = FACE_GROUP.match(name)
-        if m:
-            new = f"Face{m.group(1)}" if kind == "Node" else f"Face{m.group(1)}_{kind}s"
-        elif kind == "Volume":
-            solid += 1
-            new = f"Solid{solid}"
-        else:
-            continue
-        if new == name:
-            continue
-        elements = list(mesh.getGroupElements(gid))
-        ng = mesh.addGroup(new, kind)
-        if elements:
-            mesh.addGroupElements(ng, elements)
-        mesh.removeGroup(gid)
+def shape_link(doc, objects):
+    """The object the mesh is made from: the selected object, or for several a Part::Compound
+    of them (an existing one with exactly these links is reused)."""
+    if len(objects) == 1:
+        return objects[0]
+    for o in doc.Objects:
+        if o.TypeId == "Part::Compound" and list(o.Links) == list(objects):
+            return o
+    comp = doc.addObject("Part::Compound", COMPOUND_NAME)
+    comp.Links = list(objects)
+    return comp
 
 
 def find_analysis(doc, active=None):
@@ -157,11 +145,18 @@ def find_analysis(doc, active=None):
     return analyses[0] if len(analyses) == 1 else None
 
 
-def add_mesh_object(doc, mesh, objects, analysis=None):
-    """A new FemMeshObject holding `mesh`, put into `analysis` when there is one."""
+def add_mesh_object(doc, mesh, objects, options, analysis=None):
+    """A new FemMeshObject holding `mesh`, its `Part` link set to the meshed shape and the CLI
+    options recorded in `AnisoMeshOptions`; put into `analysis` when there is one."""
     base = "AnisoMesh"
     obj = doc.addObject("Fem::FemMeshObject", base)
     obj.FemMesh = mesh
+    # FreeCAD's FEM tools look for `Part` (Gmsh mesh objects) or `Shape` (Netgen) to know the
+    # geometry; without either, the CalculiX writer warns "Not all methods do work".
+    obj.addProperty("App::PropertyLink", "Part", "FEM Mesh", "Geometry object the mesh is made from")
+    obj.Part = shape_link(doc, objects)
+    obj.addProperty("App::PropertyString", "AnisoMeshOptions", "FEM Mesh", "anisomesh options of this mesh")
+    obj.AnisoMeshOptions = shlex.join(options)
     label = "+".join(o.Label for o in objects)
     obj.Label = f"{base} of {label}" if label else base
     if analysis is not None:
@@ -170,24 +165,65 @@ def add_mesh_object(doc, mesh, objects, analysis=None):
     return obj
 
 
-def run_blocking(objects, options, workdir=None):
-    """Exports, runs the CLI to completion, reads the mesh. Returns (mesh, report dict)."""
+def prefix_clashes(mesh, analysis):
+    """Warnings for groups whose name starts with "<member>_" for a member of the analysis:
+    FreeCAD's FEM tools (meshtools.get_femmesh_groupdata_sets_by_name) take such a group as the
+    member's node or element set instead of its references."""
+    if analysis is None:
+        return []
+    out = []
+    members = [o for o in analysis.Group if not o.isDerivedFrom("Fem::FemMeshObject")]
+    for gid in mesh.Groups:
+        name = mesh.getGroupName(gid)
+        for o in members:
+            if name.startswith(o.Name + "_"):
+                out.append(f"group {name} starts with the name of {o.Name}: FreeCAD's solver writers would take it "
+                           f"for {o.Name}'s set instead of its references; rename {o.Name} or the object")
+    return out
+
+
+def finish_run(doc, objects, shapes, folder, stderr, options, analysis=None):
+    """After a successful CLI run in `folder`: reads the mesh, makes the FemMeshObject.
+    Returns a Result."""
+    with open(os.path.join(folder, "report.json")) as f:
+        report = json.load(f)
+    mesh, group_warnings = read_mesh(os.path.join(folder, "mesh.unv"), objects, shapes)
+    names = solid_names(objects, shapes)
+    brep = os.path.join(folder, "input.brep") + ": "
+    warnings = [translate_solids(w.replace(brep, ""), names) for w in warnings_of(stderr)] + group_warnings
+    warnings += prefix_clashes(mesh, analysis)
+    obj = add_mesh_object(doc, mesh, objects, options, analysis)
+    summary = summary_line(obj.Label, report, mesh.NodeCount, len(mesh.Groups), len(warnings))
+    return Result(obj, report, warnings, summary)
+
+
+def run_blocking(doc, objects, options, analysis=None):
+    """Exports, runs the CLI to completion, reads the mesh, makes the FemMeshObject.
+    Returns a Result; raises MeshingFailed (nothing created) when the CLI fails."""
     cli = find_cli()
-    folder = workdir or tempfile.mkdtemp(prefix="anisomesh-")
+    shapes = shapes_of(objects)
+    folder = tempfile.mkdtemp(prefix="anisomesh-")
     try:
-        brep = export_shapes(objects, folder)
-        unv = os.path.join(folder, "mesh.unv")
+        brep = export_shapes(shapes, folder)
         report = os.path.join(folder, "report.json")
-        proc = subprocess.run(build_command(cli, brep, unv, report, options), capture_output=True, text=True)
+        cmd = build_command(cli, brep, os.path.join(folder, "mesh.unv"), report, options)
+        proc = subprocess.run(cmd, capture_output=True, text=True)
         if proc.returncode != 0:
             raise MeshingFailed(failure_message(proc.returncode, proc.stderr, report))
-        mesh = read_mesh(unv)
-        with open(report) as f:
-            rep = json.load(f)
-        return mesh, rep
+        return finish_run(doc, objects, shapes, folder, proc.stderr, options, analysis)
     finally:
-        if workdir is None:
-            shutil.rmtree(folder, ignore_errors=True)
+        shutil.rmtree(folder, ignore_errors=True)
+
+
+def objects_by_name(doc, names):
+    """The document's objects of these names; MeshingFailed naming the first missing one."""
+    objects = []
+    for n in names:
+        o = doc.getObject(n)
+        if o is None:
+            raise MeshingFailed(f"{doc.FileName or doc.Name}: no object named {n}")
+        objects.append(o)
+    return objects
 
 
 def run_headless():
@@ -205,20 +241,12 @@ def run_headless():
             doc = FreeCAD.ActiveDocument
         if doc is None:
             raise MeshingFailed("no document: set ANISOMESH_DOCUMENT")
-        if names:
-            objects = []
-            for n in names:
-                o = doc.getObject(n)
-                if o is None:
-                    raise MeshingFailed(f"{doc.FileName or doc.Name}: no object named {n}")
-                objects.append(o)
-        else:
+        if not names:
             raise MeshingFailed("no objects: set ANISOMESH_OBJECTS (comma-separated object names)")
-        mesh, rep = run_blocking(objects, options)
-        obj = add_mesh_object(doc, mesh, objects, find_analysis(doc))
-        counts = rep.get("counts", {})
-        sys.stderr.write(f"anisomesh: {obj.Name}: {mesh.NodeCount} nodes, {counts.get('tetrahedra', 0)} tetrahedra, "
-                         f"{counts.get('triangles', 0)} triangles, {len(mesh.Groups)} groups\n")
+        result = run_blocking(doc, objects_by_name(doc, names), options, find_analysis(doc))
+        for w in result.warnings:
+            sys.stderr.write(f"anisomesh: warning: {w}\n")
+        sys.stderr.write(f"anisomesh: {result.summary}\n")
         if save:
             doc.saveAs(save)
         return 0
@@ -230,136 +258,11 @@ def run_headless():
         return 1
 
 
-def run_gui():
-    """The dialog: options, a progress bar fed by the CLI's progress lines, the result."""
-    import FreeCADGui
-    from PySide import QtCore, QtGui
-
-    doc = FreeCAD.ActiveDocument
-    objects = [o for o in FreeCADGui.Selection.getSelection() if hasattr(o, "Shape")]
-    if doc is None or not objects:
-        QtGui.QMessageBox.warning(None, "AnisoMesh", "Select one or more Part objects to mesh.")
-        return
-    try:
-        cli = find_cli()
-    except MeshingFailed as e:
-        QtGui.QMessageBox.critical(None, "AnisoMesh", str(e))
-        return
-    try:
-        import FemGui
-        active = FemGui.getActiveAnalysis()
-    except Exception:  # noqa: BLE001 - no FEM GUI: no active analysis
-        active = None
-
-    dialog = QtGui.QDialog(FreeCADGui.getMainWindow())
-    dialog.setWindowTitle("AnisoMesh: " + ", ".join(o.Label for o in objects))
-    form = QtGui.QFormLayout(dialog)
-
-    def spin(value, lo, hi, step, decimals=3, special=None):
-        w = QtGui.QDoubleSpinBox()
-        w.setRange(lo, hi)
-        w.setDecimals(decimals)
-        w.setSingleStep(step)
-        w.setValue(value)
-        if special:
-            w.setSpecialValueText(special)
-        return w
-
-    diag = max(o.Shape.BoundBox.DiagonalLength for o in objects)
-    hmax = spin(0.0, 0.0, 1e9, max(diag / 100, 1e-3), special="automatic")
-    order = QtGui.QComboBox()
-    order.addItems(["1 (linear)", "2 (quadratic)"])
-    quad = QtGui.QCheckBox("quad-dominant surface mesh")
-    # the CLI's defaults (README, "Element size"): isotropic tets, 12 elements per circle
-    aniso = spin(1.0, 1.0, 100.0, 0.5, 2)
-    curv = spin(12, 4, 200, 1, 0)
-    grad = spin(4.0, 1.1, 100.0, 0.5, 2)
-    form.addRow("Largest size (hmax)", hmax)
-    form.addRow("Element order", order)
-    form.addRow("", quad)
-    form.addRow("Largest stretch (1 = isotropic)", aniso)
-    form.addRow("Elements per circle", curv)
-    form.addRow("Gradation", grad)
-    bar = QtGui.QProgressBar()
-    bar.setRange(0, 100)
-    status = QtGui.QLabel("")
-    form.addRow(bar)
-    form.addRow(status)
-    buttons = QtGui.QDialogButtonBox(QtGui.QDialogButtonBox.Ok | QtGui.QDialogButtonBox.Cancel)
-    form.addRow(buttons)
-
-    state = {"proc": None, "folder": None, "stderr": ""}
-
-    def finish(ok_message=None, error=None):
-        if state["folder"]:
-            shutil.rmtree(state["folder"], ignore_errors=True)
-            state["folder"] = None
-        state["proc"] = None
-        buttons.button(QtGui.QDialogButtonBox.Ok).setEnabled(True)
-        if error:
-            QtGui.QMessageBox.critical(dialog, "AnisoMesh", error)
-        else:
-            dialog.accept()
-
-    def on_stderr():
-        proc = state["proc"]
-        text = bytes(proc.readAllStandardError()).decode("utf-8", "replace")
-        state["stderr"] += text
-        for line in text.splitlines():
-            m = re.match(r"^progress: (\S+) (\d+)% ?(.*)$", line)
-            if m:
-                bar.setValue(int(m.group(2)))
-                status.setText(f"{m.group(1)} {m.group(3)}")
-
-    def on_finished(code, _status):
-        folder = state["folder"]
-        if code != 0:
-            finish(error=failure_message(code, state["stderr"], os.path.join(folder, "report.json")))
-            return
-        try:
-            mesh = read_mesh(os.path.join(folder, "mesh.unv"))
-            add_mesh_object(doc, mesh, objects, find_analysis(doc, active))
-        except Exception as e:  # noqa: BLE001 - shown to the user, nothing created
-            finish(error=str(e))
-            return
-        finish()
-
-    def start():
-        settings = {"hmax": hmax.value() or None, "order": order.currentIndex() + 1, "quad": quad.isChecked(),
-                    "anisotropy": aniso.value(), "elements_per_circle": curv.value(), "gradation": grad.value()}
-        try:
-            folder = tempfile.mkdtemp(prefix="anisomesh-")
-            state["folder"] = folder
-            brep = export_shapes(objects, folder)
-        except Exception as e:  # noqa: BLE001
-            finish(error=str(e))
-            return
-        cmd = build_command(cli, brep, os.path.join(folder, "mesh.unv"), os.path.join(folder, "report.json"),
-                            options_from_settings(settings))
-        proc = QtCore.QProcess(dialog)
-        state["proc"], state["stderr"] = proc, ""
-        proc.readyReadStandardError.connect(on_stderr)
-        proc.finished.connect(on_finished)
-        buttons.button(QtGui.QDialogButtonBox.Ok).setEnabled(False)
-        status.setText("meshing...")
-        proc.start(cmd[0], cmd[1:])
-
-    def cancel():
-        if state["proc"] is not None:
-            state["proc"].kill()
-            state["proc"].waitForFinished(3000)
-        if state["folder"]:
-            shutil.rmtree(state["folder"], ignore_errors=True)
-        dialog.reject()
-
-    buttons.accepted.connect(start)
-    buttons.rejected.connect(cancel)
-    dialog.show()
-
-
 def main():
     """Headless when FreeCAD has no GUI or ANISOMESH_OBJECTS is set; else the dialog."""
     if not FreeCAD.GuiUp or os.environ.get("ANISOMESH_OBJECTS"):
         return run_headless()
-    run_gui()
+    import anisomesh_dialog
+
+    anisomesh_dialog.open_for_selection()
     return 0
