@@ -9,6 +9,7 @@
 #include "mesher/core/Log.h"
 #include "mesher/pipeline/SurfaceStage.h"
 #include "mesher/volume/CoarseSolids.h"
+#include "mesher/volume/SolidMeshCache.h"
 #include "mesher/volume/ThinBoundary.h"
 
 namespace aniso {
@@ -51,6 +52,7 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
     vin.surface = &r.surface.mesh;
     vin.stopWhenThin = true;
     const auto tr = Clock::now();
+    r.volume = {};  // the previous round's tetrahedra are not needed while meshing again (peak memory)
     r.volume = meshVolumes(vin);
     if (r.volume.thin.empty()) {
       decide(r, "proximity", name + ": not needed", "no solid thinner than its boundary triangles");
@@ -148,6 +150,8 @@ void runVolumeStages(const VolumeStagesInput& in, MeshResult& r) {
   vin.model = in.model;
   vin.options = in.options;
   vin.user = in.user;  // the volume follows the finer surface (eq. 3.3) without box sources
+  SolidMeshCache cache(in.model->solids.size());  // solids whose boundary a round left unchanged
+  vin.cache = &cache;
   UserSizing sizing = *in.user;  // the user's and the proximity sources, for the surface
   std::optional<FirstSurface> first;
   if (!proximityRounds(in, vin, sizing, first, r)) {
@@ -155,9 +159,13 @@ void runVolumeStages(const VolumeStagesInput& in, MeshResult& r) {
     vin.surface = &r.surface.mesh;
     vin.stopWhenThin = false;
     const auto tr = Clock::now();
+    r.volume = {};
     r.volume = meshVolumes(vin);
     decide(r, "volume", r.volume.ok() ? "meshed" : "failed",
-           r.proximity.rounds ? "the surface of round " + std::to_string(r.proximity.rounds) : "the first surface");
+           (r.proximity.rounds ? "the surface of round " + std::to_string(r.proximity.rounds) : "the first surface") +
+               (r.volume.solidsReused ? "; " + std::to_string(r.volume.solidsReused) +
+                                            " solids with an unchanged boundary kept as meshed in the round"
+                                      : ""));
     // stage 3: a finer surface whose volume failed gives way to the first surface
     if (r.proximity.rounds > 0 && !r.volume.ok()) {
       r.proximity.rounds = 0;

@@ -164,28 +164,48 @@ bool VolumeMetricSpace::onBoundary(const Vec3& x) const {
 }
 
 std::shared_ptr<ControlSpace3d> buildVolumeControlSpace(const Model& model, const SurfaceMesh& surface, int solid,
-                                                        const SizingParameters& sizing, const UserSizing* user) {
+                                                        const SizingParameters& sizing, const UserSizing* user,
+                                                        const std::vector<std::vector<int>>* faceTriangles) {
   const std::vector<char> faces = solidFaces(model, solid);
   const double diag = model.diagonal();
   const double hmax = sizing.hmaxFor(diag), hmin = sizing.hminFor(diag);
   const double gammaA = std::max(1.0, sizing.anisotropy);
 
   // 4 (gathered first for the box): per boundary node, the blend of its triangles' metrics.
-  std::vector<MetricBlend<3>> blend(surface.nodes.size());
+  // The solid's triangles in ascending surface order and its nodes in ascending index: the
+  // same sums and insertions as a pass over the whole surface, in time and memory
+  // proportional to the solid's own boundary (an assembly has many solids).
+  std::vector<int> solidTriangles;
+  if (faceTriangles) {
+    for (std::size_t f = 0; f < faces.size() && f < faceTriangles->size(); ++f)
+      if (faces[f]) solidTriangles.insert(solidTriangles.end(), (*faceTriangles)[f].begin(), (*faceTriangles)[f].end());
+    std::sort(solidTriangles.begin(), solidTriangles.end());
+  } else {
+    for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
+      const int f = surface.triangleFace[t];
+      if (f >= 0 && static_cast<std::size_t>(f) < faces.size() && faces[f]) solidTriangles.push_back(static_cast<int>(t));
+    }
+  }
+  if (solidTriangles.empty())
+    throw MeshingError("solid " + std::to_string(solid + 1) + ": no boundary triangle for the volume control space");
+  std::vector<int> nodes;
+  nodes.reserve(3 * solidTriangles.size());
+  for (const int t : solidTriangles)
+    for (const int v : surface.triangles[static_cast<std::size_t>(t)]) nodes.push_back(v);
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  const auto local = [&nodes](int v) {
+    return static_cast<std::size_t>(std::lower_bound(nodes.begin(), nodes.end(), v) - nodes.begin());
+  };
+  std::vector<MetricBlend<3>> blend(nodes.size());
   Box3 box;
-  std::size_t triangles = 0;
-  for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
-    const int f = surface.triangleFace[t];
-    if (f < 0 || static_cast<std::size_t>(f) >= faces.size() || !faces[f]) continue;
-    const std::array<int, 3>& tri = surface.triangles[t];
-    ++triangles;
+  for (const int t : solidTriangles) {
+    const std::array<int, 3>& tri = surface.triangles[static_cast<std::size_t>(t)];
     for (const int v : tri) box.add(surface.nodes[v]);
     Metric3d m;
     if (!triangleMetric(surface.nodes[tri[0]], surface.nodes[tri[1]], surface.nodes[tri[2]], gammaA, hmin, m)) continue;
-    for (const int v : tri) blend[v].add(m, 1.0);
+    for (const int v : tri) blend[local(v)].add(m, 1.0);
   }
-  if (triangles == 0)
-    throw MeshingError("solid " + std::to_string(solid + 1) + ": no boundary triangle for the volume control space");
 
   // 1–2
   const double margin = kVolumeBoxMargin * std::max(box.diagonal(), 1e-300);
@@ -193,8 +213,8 @@ std::shared_ptr<ControlSpace3d> buildVolumeControlSpace(const Model& model, cons
   box.hi.array() += margin;
   auto cs = std::make_shared<CSOctree3d>(box, sizing);
 
-  for (std::size_t v = 0; v < blend.size(); ++v)
-    if (!blend[v].empty()) cs->insertDiscreteSource(surface.nodes[v], blend[v].result());
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    if (!blend[i].empty()) cs->insertDiscreteSource(surface.nodes[nodes[i]], blend[i].result());
 
   // h_max everywhere (and the user's global metric): folds in the point sources above. The
   // user's metrics are bounded to [h_min, h_max] (SizingParameters: hard bounds).

@@ -143,7 +143,11 @@ double volumeGradation(double gamma, double factor);
 /// Relative enlargement of the control space's box around the solid's boundary nodes.
 inline constexpr double kVolumeBoxMargin = 0.01;
 
+/// faceTriangles (optional): the surface's triangle indices per model face
+/// (trianglesByFace); given, the solid's triangles are taken from it instead of a pass over
+/// the whole surface. The result does not depend on it.
 std::shared_ptr<ControlSpace3d> buildVolumeControlSpace(const Model& model, const SurfaceMesh& surface, int solid,
-                                                        const SizingParameters& sizing, const UserSizing* user);
+                                                        const SizingParameters& sizing, const UserSizing* user,
+                                                        const std::vector<std::vector<int>>* faceTriangles = nullptr);
 
 }  // namespace aniso

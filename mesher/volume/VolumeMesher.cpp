@@ -9,6 +9,7 @@
 #include <map>
 #include <set>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include <Eigen/Geometry>
@@ -20,6 +21,7 @@
 #include "mesher/volume/BoundaryTriangulation.h"
 #include "mesher/volume/CarveSolid.h"
 #include "mesher/volume/CrackSplit.h"
+#include "mesher/volume/SolidMeshCache.h"
 #include "mesher/volume/SolidTetMesh.h"
 #include "mesher/volume/SplitSurfaceEdges.h"
 #include "mesher/volume/VolumeControlSpace.h"
@@ -32,16 +34,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-/// The tetrahedra of one solid before assembly: fixed vertices as surface node ids (>= 0),
-/// free ones as -(k + 1) for inner[k].
-struct SolidPiece {
-  SolidOutcome outcome;
-  std::vector<std::array<int, 4>> tets;
-  std::vector<Vec3> inner;
-  std::vector<std::vector<int>> missing;  ///< surface nodes of the boundary edges/triangles not recovered
-  std::vector<ThinSpot> thin;
-};
 
 void fail(SolidPiece& p, const EntityRef& entity, const std::string& what) {
   p.outcome.status = SolidOutcome::Status::Failed;
@@ -194,7 +186,7 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
     std::vector<std::array<int, 3>> constraints = b.triangles;  // the transition layers follow the embedded faces too
     constraints.insert(constraints.end(), b.embedded.begin(), b.embedded.end());
     cs = std::make_shared<VolumeMetricSpace>(
-        buildVolumeControlSpace(*in.model, *in.surface, solid, in.options.sizing, in.user), boundaryNodes,
+        buildVolumeControlSpace(*in.model, *in.surface, solid, in.options.sizing, in.user, &faceTriangles), boundaryNodes,
         kVolumeLengthFactor,
         std::make_shared<TriangleTree>(in.surface->nodes, constraints,
                                        kVolumeTransitionLayers * in.options.sizing.hmaxFor(in.model->diagonal())));
@@ -234,6 +226,7 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
     p.outcome.times.emplace_back("volume quality", since(t0));
   }
   extract(bt.tets, p);
+  p.complete = true;
   return p;
 }
 
@@ -318,6 +311,7 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
   std::map<std::string, double> timeSum;
   std::vector<std::string> timeOrder;
   std::vector<SolidPiece> pieces(static_cast<std::size_t>(ns));
+  std::vector<char> reused(static_cast<std::size_t>(ns), 0);  // taken from in.cache
   std::vector<int> todo(static_cast<std::size_t>(ns));
   for (int s = 0; s < ns; ++s) todo[s] = s;
   // A crack triangle with every node on the crack's front could not open: split first.
@@ -329,13 +323,26 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
   for (int round = 0;; ++round) {  // bounded by maxSplitRounds
     checkCancel(in.options.cancel.get(), "volume meshing");
     const std::vector<std::vector<int>> faceTriangles = trianglesByFace(surface, nf);
-    parallelFor(static_cast<int>(todo.size()), in.options.threads,
-                [&](int i) { pieces[todo[i]] = meshSolid(in, faceTriangles, todo[i]); }, "volume");
+    parallelFor(
+        static_cast<int>(todo.size()), in.options.threads,
+        [&](int i) {
+          const int s = todo[i];
+          reused[s] = 0;
+          if (in.cache)
+            if (std::optional<SolidPiece> hit = in.cache->find(s, solidBoundaryKey(model, surface, faceTriangles, s))) {
+              pieces[s] = std::move(*hit);
+              reused[s] = 1;
+              return;
+            }
+          pieces[s] = meshSolid(in, faceTriangles, s);
+        },
+        "volume");
     for (const int s : todo)
-      for (const auto& [phase, sec] : pieces[s].outcome.times) {
-        if (!timeSum.count(phase)) timeOrder.push_back(phase);
-        timeSum[phase] += sec;
-      }
+      if (!reused[s])
+        for (const auto& [phase, sec] : pieces[s].outcome.times) {
+          if (!timeSum.count(phase)) timeOrder.push_back(phase);
+          timeSum[phase] += sec;
+        }
     // Boundary entities no interior point could recover: split them in the surface mesh
     // (an unrecovered triangle by its longest edge) and mesh again every solid using a
     // face that changed, so shared faces stay conformal.
@@ -360,6 +367,12 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
              std::to_string(todo.size()) + " solids again");
   }
 
+  if (in.cache) {  // the solids meshed by this call, keyed by the surface they were meshed on
+    const std::vector<std::vector<int>> faceTriangles = trianglesByFace(surface, nf);
+    for (int s = 0; s < ns; ++s)
+      if (!reused[s]) in.cache->store(s, solidBoundaryKey(model, surface, faceTriangles, s), pieces[s]);
+    r.solidsReused = static_cast<int>(std::count(reused.begin(), reused.end(), 1));
+  }
   r.mesh.surface = std::move(surface);
   std::size_t totalTets = 0, totalInner = 0;
   for (const SolidPiece& p : pieces) totalTets += p.tets.size(), totalInner += p.inner.size();

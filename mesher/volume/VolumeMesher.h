@@ -52,6 +52,8 @@
 
 namespace aniso {
 
+class SolidMeshCache;
+
 struct VolumeMesherInput {
   const Model* model = nullptr;
   const SurfaceMesh* surface = nullptr;
@@ -73,6 +75,10 @@ struct VolumeMesherInput {
   /// after carving stops there (no refinement, no tetrahedra in the result) and reports
   /// them in VolumeMeshResult::thin, for the caller to mesh the surface finer and call again.
   bool stopWhenThin = false;
+  /// Optional (SolidMeshCache.h): solids whose boundary is unchanged since an earlier call
+  /// with this cache take their tetrahedra from it (the result is the same); every solid
+  /// meshed to the end is stored in it.
+  SolidMeshCache* cache = nullptr;
 };
 
 /// Geometric tolerance of the surface sliver mending (SurfaceSlivers.h), times h_min.
@@ -114,6 +120,7 @@ struct VolumeMeshResult {
   TetQualitySummary quality;                          ///< over all solids
   std::vector<std::pair<std::string, double>> times;  ///< phase -> seconds summed over the solids
   CrackSplitStats cracks;  ///< the two-sided embedded faces separated (CrackSplit.h)
+  int solidsReused = 0;    ///< solids taken from VolumeMesherInput::cache (not meshed again)
   /// Every solid meshed, or left out only because the surface left out one of its faces.
   bool ok() const;
 };

@@ -8,6 +8,7 @@
 #include <Eigen/Geometry>
 
 #include "mesher/volume/BoundaryMesh.h"
+#include "mesher/volume/SolidMeshCache.h"
 #include "mesher/volume/VolumeMesher.h"
 #include "volume_test_models.h"
 
@@ -153,4 +154,52 @@ TEST(VolumeMesher, SameOutputForAnyThreadCount) {
   EXPECT_EQ(r1.mesh.tets, r2.mesh.tets);
   EXPECT_EQ(r1.mesh.tetSolid, r2.mesh.tetSolid);
   EXPECT_EQ(r1.mesh.nodes(), r2.mesh.nodes());
+}
+
+namespace {
+
+voltest::SolidModel twoBoxes(double xB) {
+  voltest::SolidBuilder b;
+  const int s1 = b.addShell();
+  b.box(s1, Vec3(0, 0, 0), 1.0, 3, false, true);
+  const int s2 = b.addShell();
+  b.box(s2, Vec3(xB, 0, 0), 1.0, 2, false, false);
+  b.model().solids.push_back({"A", s1, {}});
+  b.model().solids.push_back({"B", s2, {}});
+  return b.done(2.0);  // the volume of the two unit boxes
+}
+
+VolumeMeshResult boundaryOnlyCached(const voltest::SolidModel& m, SolidMeshCache& cache) {
+  VolumeMesherInput in;
+  in.model = &m.model;
+  in.surface = &m.surface;
+  in.refine = in.improve = in.quality = false;
+  in.validate = true;
+  in.cache = &cache;
+  return meshVolumes(in);
+}
+
+}  // namespace
+
+// SolidMeshCache.h: a solid whose boundary did not change is taken from the cache, one that
+// changed is meshed again, and the result is the mesh made without the cache.
+TEST(VolumeMesher, SolidMeshCacheKeepsUnchangedSolidsOnly) {
+  const voltest::SolidModel m = twoBoxes(2.0);
+  SolidMeshCache cache(m.model.solids.size());
+  const VolumeMeshResult first = boundaryOnlyCached(m, cache);
+  expectMeshed(m, first);
+  EXPECT_EQ(first.solidsReused, 0);
+  const VolumeMeshResult again = boundaryOnlyCached(m, cache);
+  EXPECT_EQ(again.solidsReused, 2);
+  EXPECT_EQ(again.mesh.tets, first.mesh.tets);
+  EXPECT_EQ(again.mesh.nodes(), first.mesh.nodes());
+
+  const voltest::SolidModel moved = twoBoxes(2.5);  // box B elsewhere, box A the same
+  const VolumeMeshResult cached = boundaryOnlyCached(moved, cache);
+  EXPECT_EQ(cached.solidsReused, 1);
+  const VolumeMeshResult fresh = boundaryOnly(moved);
+  expectMeshed(moved, cached);
+  EXPECT_EQ(cached.mesh.tets, fresh.mesh.tets);
+  EXPECT_EQ(cached.mesh.nodes(), fresh.mesh.nodes());
+  EXPECT_NE(cached.mesh.nodes(), first.mesh.nodes());
 }
