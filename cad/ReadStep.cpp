@@ -22,6 +22,7 @@
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
 
+#include <algorithm>
 #include <cctype>
 #include <fstream>
 #include <sstream>
@@ -54,8 +55,18 @@ std::string labelColor(const Handle(XCAFDoc_ColorTool)& colors, const TDF_Label&
   return hex;
 }
 
+/// A face name that says nothing: "NONE", or a STEP entity reference ("#441": some
+/// exporters name every face after its own entity, as in as1-tu-203.stp, where the
+/// faces of every nut would otherwise share the groups "#197", "#209", ...).
+bool placeholderFaceName(const std::string& name) {
+  if (name == "NONE") return true;
+  return name.size() > 1 && name[0] == '#' &&
+         std::all_of(name.begin() + 1, name.end(), [](unsigned char c) { return std::isdigit(c); });
+}
+
 /// Records the name and colour of every face sub-shape label of a part: what the file
-/// says of the face itself (a sub-shape that is a shell or a solid names no face).
+/// says of the face itself (a sub-shape that is a shell or a solid names no face; a
+/// placeholder name is no name).
 void collectFaceTags(const TDF_Label& part, const Handle(XCAFDoc_ColorTool)& colors, CadModel::Impl& impl) {
   TDF_LabelSequence subs;
   XCAFDoc_ShapeTool::GetSubShapes(part, subs);
@@ -63,6 +74,7 @@ void collectFaceTags(const TDF_Label& part, const Handle(XCAFDoc_ColorTool)& col
     const TopoDS_Shape face = XCAFDoc_ShapeTool::GetShape(subs.Value(i));
     if (face.IsNull() || face.ShapeType() != TopAbs_FACE) continue;
     FaceTag tag{labelName(subs.Value(i)), labelColor(colors, subs.Value(i))};
+    if (placeholderFaceName(tag.name)) tag.name.clear();
     const TopoDS_Shape key = face.Located(TopLoc_Location());
     if ((tag.name.empty() && tag.color.empty()) || impl.faceTagIndex.IsBound(key)) continue;
     impl.faceTags.push_back(std::move(tag));

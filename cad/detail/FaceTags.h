@@ -3,8 +3,9 @@
 // preparation. A step that replaces faces (fixing, sewing, fragmenting) passes each tagged
 // face's tag to the faces that replace it, as the step's own history names them; a face
 // the step splits gives its tag to every piece, a face it deletes loses it. Where two
-// tagged faces become one (the interface two parts share after fragmenting), the face
-// first in the old shape's TopExp::MapShapes order gives its tag.
+// tagged faces become one (the interface two parts share after fragmenting), one tag is
+// kept: the resulting face's own when it is one of the two (unchanged), else the first in
+// the old shape's TopExp::MapShapes order.
 #include <BRepTools_History.hxx>
 #include <TopTools_ListOfShape.hxx>
 
