@@ -40,8 +40,21 @@ const char* overlapPolicyName(OverlapPolicy p) {
 
 std::string CadModel::Impl::solidName(const TopoDS_Shape& solid, int id) const {
   const TopoDS_Shape key = solid.Located(TopLoc_Location());
-  if (nameIndex.IsBound(key)) return names[static_cast<size_t>(nameIndex.Find(key))];
+  if (nameIndex.IsBound(key) && !names[static_cast<size_t>(nameIndex.Find(key))].empty())
+    return names[static_cast<size_t>(nameIndex.Find(key))];
   return "SOLID" + std::to_string(id);
+}
+
+std::string CadModel::Impl::solidColor(const TopoDS_Shape& solid) const {
+  const TopoDS_Shape key = solid.Located(TopLoc_Location());
+  if (!nameIndex.IsBound(key)) return {};
+  const auto k = static_cast<size_t>(nameIndex.Find(key));
+  return k < partColors.size() ? partColors[k] : std::string();
+}
+
+const FaceTag* CadModel::Impl::faceTag(const TopoDS_Shape& face) const {
+  const TopoDS_Shape key = face.Located(TopLoc_Location());
+  return faceTagIndex.IsBound(key) ? &faceTags[static_cast<size_t>(faceTagIndex.Find(key))] : nullptr;
 }
 
 CadModel::CadModel(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -131,7 +144,14 @@ PrepareReport CadModel::prepare(const PrepareOptions& options) {
 
 Model CadModel::topology() const {
   const Impl& impl = *impl_;
-  return buildTopology(impl.shape, [&impl](const TopoDS_Shape& s, int id) { return impl.solidName(s, id); });
+  Model model = buildTopology(impl.shape, [&impl](const TopoDS_Shape& s, int id) { return impl.solidName(s, id); });
+  if (!impl.faceTagIndex.IsEmpty()) {  // face ids: MapShapes order, as buildTopology's
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(impl.shape, TopAbs_FACE, faces);
+    for (int i = 1; i <= faces.Extent() && i <= static_cast<int>(model.faces.size()); ++i)
+      if (const FaceTag* tag = impl.faceTag(faces(i))) model.faces[static_cast<size_t>(i - 1)].name = tag->name;
+  }
+  return model;
 }
 
 void CadModel::writeBrep(const std::string& path) const {

@@ -30,6 +30,7 @@ struct SolidSummary {
   int id = 0;           ///< 1-based, MapShapes order
   std::string name;     ///< part name from STEP, else "SOLID<id>"
   double volume = 0;
+  std::string color;    ///< the part's colour in STEP ("#rrggbb"), "" when the file gives none
 };
 
 /// Counts and measures of a shape, entities counted once each (TopExp::MapShapes).
@@ -93,7 +94,7 @@ class CadModel {
   /// (STEP "ISO-10303-21", IGES's 80-column S/G/D/P/T records, BREP's "DBRep_DrawableShape"
   /// or "CASCADE Topology"), by extension second. Throws InputError with a one-line message
   /// naming the file for a missing, unreadable, empty, non-CAD or shapeless file. STEP is
-  /// read through XCAF (part names), else the plain reader, else root by root skipping the
+  /// read through XCAF (part names and colours, face names and colours: FaceCatalog.h), else the plain reader, else root by root skipping the
   /// roots that fail; what was given up is logged as a warning. When every path crashes
   /// or fails: InputError "...: OpenCASCADE could not read this STEP file (...)".
   /// With `cancel`, a read still running when the token stops is killed: Cancelled

@@ -55,8 +55,9 @@ struct Exchange {
   fs::path shape() const { return dir / "shape.bin"; }
 };
 
-/// Writes impl's shape and, after it in one compound, the key solid of every part name
-/// (the same TShapes: BREP keeps the sharing, so the keys find their solids on reading).
+/// Writes impl's shape and, after it in one compound, the key solid of every part name and
+/// the key face of every face tag (the same TShapes: BREP keeps the sharing, so the keys
+/// find their solids and faces on reading).
 void writeShape(const CadModel::Impl& impl, const Exchange& x, std::ostream& meta) {
   BRep_Builder b;
   TopoDS_Compound all;
@@ -64,11 +65,21 @@ void writeShape(const CadModel::Impl& impl, const Exchange& x, std::ostream& met
   putInt(meta, impl.shape.IsNull() ? 0 : 1);
   if (!impl.shape.IsNull()) b.Add(all, impl.shape);
   putInt(meta, static_cast<std::int64_t>(impl.names.size()));
-  for (const std::string& n : impl.names) putString(meta, n);
-  putInt(meta, impl.nameIndex.Extent());
-  for (TopTools_DataMapIteratorOfDataMapOfShapeInteger it(impl.nameIndex); it.More(); it.Next()) {
-    b.Add(all, it.Key());
-    putInt(meta, it.Value());
+  for (size_t i = 0; i < impl.names.size(); ++i) {
+    putString(meta, impl.names[i]);
+    putString(meta, i < impl.partColors.size() ? impl.partColors[i] : std::string());
+  }
+  putInt(meta, static_cast<std::int64_t>(impl.faceTags.size()));
+  for (const FaceTag& t : impl.faceTags) {
+    putString(meta, t.name);
+    putString(meta, t.color);
+  }
+  for (const TopTools_DataMapOfShapeInteger* index : {&impl.nameIndex, &impl.faceTagIndex}) {
+    putInt(meta, index->Extent());
+    for (TopTools_DataMapIteratorOfDataMapOfShapeInteger it(*index); it.More(); it.Next()) {
+      b.Add(all, it.Key());
+      putInt(meta, it.Value());
+    }
   }
   std::ofstream out(x.shape(), std::ios::binary);
   BinTools::Write(all, out);
@@ -77,10 +88,20 @@ void writeShape(const CadModel::Impl& impl, const Exchange& x, std::ostream& met
 
 void readShape(CadModel::Impl& impl, const Exchange& x, std::istream& meta) {
   const bool hasShape = getInt(meta) != 0;
-  std::vector<std::string> names(static_cast<size_t>(getInt(meta)));
-  for (std::string& n : names) n = getString(meta);
+  std::vector<std::string> names(static_cast<size_t>(getInt(meta))), colors(names.size());
+  for (size_t i = 0; i < names.size(); ++i) {
+    names[i] = getString(meta);
+    colors[i] = getString(meta);
+  }
+  std::vector<FaceTag> tags(static_cast<size_t>(getInt(meta)));
+  for (FaceTag& t : tags) {
+    t.name = getString(meta);
+    t.color = getString(meta);
+  }
   std::vector<int> keyName(static_cast<size_t>(getInt(meta)));
   for (int& k : keyName) k = static_cast<int>(getInt(meta));
+  std::vector<int> keyTag(static_cast<size_t>(getInt(meta)));
+  for (int& k : keyTag) k = static_cast<int>(getInt(meta));
   TopoDS_Shape all;
   std::ifstream in(x.shape(), std::ios::binary);
   BinTools::Read(all, in);
@@ -92,12 +113,18 @@ void readShape(CadModel::Impl& impl, const Exchange& x, std::istream& meta) {
     it.Next();
   }
   impl.names = std::move(names);
-  impl.nameIndex.Clear();
-  for (const int k : keyName) {
-    if (!it.More()) throw MeshingError("child process result is corrupt");
-    impl.nameIndex.Bind(it.Value(), k);
-    it.Next();
-  }
+  impl.partColors = std::move(colors);
+  impl.faceTags = std::move(tags);
+  const auto bind = [&it](TopTools_DataMapOfShapeInteger& index, const std::vector<int>& values) {
+    index.Clear();
+    for (const int k : values) {
+      if (!it.More()) throw MeshingError("child process result is corrupt");
+      index.Bind(it.Value(), k);
+      it.Next();
+    }
+  };
+  bind(impl.nameIndex, keyName);
+  bind(impl.faceTagIndex, keyTag);
 }
 
 /// Runs body, every exception an outcome (InputError: Input, anything else: Failed).
@@ -126,11 +153,12 @@ ChildOutcome guarded(const std::function<std::string()>& body) {
   std::ofstream meta(x.meta(), std::ios::binary);
   std::ostringstream shapeMeta;
   const TopoDS_Shape before = impl.shape;
-  const int namedBefore = impl.nameIndex.Extent();
+  const int namedBefore = impl.nameIndex.Extent(), taggedBefore = impl.faceTagIndex.Extent();
   const ChildOutcome o = guarded([&] {
     std::string payload = work(impl);
     // an unchanged shape is not sent back (the parent's copy is the same)
-    const bool unchanged = !before.IsNull() && impl.shape.IsEqual(before) && impl.nameIndex.Extent() == namedBefore;
+    const bool unchanged = !before.IsNull() && impl.shape.IsEqual(before) && impl.nameIndex.Extent() == namedBefore &&
+                           impl.faceTagIndex.Extent() == taggedBefore;
     putInt(shapeMeta, unchanged ? 0 : 1);
     if (!unchanged) writeShape(impl, x, shapeMeta);
     return payload;

@@ -105,6 +105,10 @@ FaceCatalog faceCatalog(const CadModel& model) {
     e.bbox = detail::exactBoundingBox(faces(i));
     e.solids = ancestorIds(faceSolids, faces(i), solids);
     e.part = partOf(e.solids);
+    if (const FaceTag* tag = impl.faceTag(faces(i))) {
+      e.name = tag->name;
+      e.color = tag->color;
+    }
     c.faces.push_back(std::move(e));
   }
   for (int i = 1; i <= edges.Extent(); ++i) {

@@ -3,8 +3,10 @@
 // mesh (`anisomesh info --faces`): the 1-based id (TopExp::MapShapes order of the current
 // shape: after prepare(), the ids of the mesh's FACE<n> / EDGE<n> groups, FreeCAD's Face<n>),
 // the geometry type, area or length, centroid and bounding box, the solids it bounds and
-// its part name. (STEP face names and colours are not read yet: XCAF's sub-shape labels
-// would have to cross the reader's child process and follow the preparation's history.)
+// its part name, and for a face what the STEP file says of it: its name and its own colour
+// (XCAF sub-shape labels; a colour the face only inherits from its part or solid is not
+// given here: the part's is in ShapeSummary's solid list). Names and colours follow the
+// preparation's history to the faces that replace a face (cad/detail/FaceTags.h).
 // OCCT-free header; measures in model units (mm for STEP and IGES).
 #include <string>
 #include <vector>
@@ -24,6 +26,8 @@ struct CatalogEntry {
   std::vector<int> solids;  ///< 1-based, ascending; empty for a face of no solid
   std::vector<int> faces;   ///< edges only: the faces it bounds, 1-based, ascending
   std::string part;         ///< name of the first solid (solids.front()), "" when none
+  std::string name;         ///< faces: the STEP face name, "" when none
+  std::string color;        ///< faces: the face's own STEP colour "#rrggbb", "" when none
 };
 
 struct FaceCatalog {

@@ -4,6 +4,7 @@
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 
+#include "cad/detail/FaceTags.h"
 #include "cad/detail/Prepare.h"
 
 namespace aniso::cad::detail {
@@ -45,8 +46,12 @@ void fixShape(CadModel::Impl& impl, double diag, PrepareReport& report) {
         const TopoDS_Shape fk = fixedSolids(i).Located(TopLoc_Location());
         if (impl.nameIndex.IsBound(key) && !impl.nameIndex.IsBound(fk)) impl.nameIndex.Bind(fk, impl.nameIndex.Find(key));
       }
+    const TopoDS_Shape before = impl.shape;
     impl.shape = fixed;
     restoreInternalFaces(impl, internal, fixer->Context());
+    const Handle(ShapeBuild_ReShape) context = fixer->Context();
+    carryFaceTags(impl, before, [&context](const TopoDS_Shape& f) { return imageList(context->Apply(f)); });
+    dropStaleFaceTags(impl);
     rebuildSelfIntersecting(impl, report);
   } catch (const Standard_Failure& e) {
     report.warnings.push_back(std::string("shape fixing failed (") + e.GetMessageString() +

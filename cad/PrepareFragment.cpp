@@ -7,6 +7,7 @@
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
+#include <ShapeBuild_ReShape.hxx>
 #include <ShapeFix_Wireframe.hxx>
 #include <TopoDS_Compound.hxx>
 
@@ -16,6 +17,7 @@
 #include <memory>
 
 #include "cad/OverlapRule.h"
+#include "cad/detail/FaceTags.h"
 #include "cad/detail/Prepare.h"
 #include "mesher/core/Error.h"
 
@@ -201,6 +203,12 @@ void assembleParts(CadModel::Impl& impl, const Arguments& args, const Fuse& f,
   }
   addLooseFaces(impl.shape, args.originals, c);
   impl.shape = c;
+  // face tags: from the arguments of the fuse (a solid mended for it already carries them)
+  TopoDS_Compound fused;
+  b.MakeCompound(fused);
+  for (int i = 1; i <= args.solids.Extent(); ++i) b.Add(fused, args.solids(i));
+  carryFaceTags(impl, fused, [&f](const TopoDS_Shape& face) { return historyImages(f.gf->History(), face); });
+  dropStaleFaceTags(impl);
 }
 
 int countSharedFaces(const TopoDS_Shape& shape) {
@@ -216,8 +224,8 @@ int countSharedFaces(const TopoDS_Shape& shape) {
 }
 
 /// Argument i with its wires mended (kWireFixVolumeRel); false when the fix changes
-/// nothing, fails, or changes the volume too much.
-bool mendWires(Arguments& args, int i, double precision) {
+/// nothing, fails, or changes the volume too much. The mended faces take the face tags.
+bool mendWires(CadModel::Impl& impl, Arguments& args, int i, double precision) {
   try {
     Handle(ShapeFix_Wireframe) fix = new ShapeFix_Wireframe(args.solids(i));
     fix->SetPrecision(precision);
@@ -228,6 +236,8 @@ bool mendWires(Arguments& args, int i, double precision) {
     if (fixed.IsNull() || fixed.ShapeType() != TopAbs_SOLID) return false;
     const double v = solidVolume(fixed);
     if (std::abs(v - args.volume[i]) > kWireFixVolumeRel * std::abs(args.volume[i])) return false;
+    const Handle(ShapeBuild_ReShape) context = fix->Context();
+    carryFaceTags(impl, args.solids(i), [&context](const TopoDS_Shape& f) { return imageList(context->Apply(f)); });
     args.solids.Substitute(i, fixed);
     args.total += std::abs(v) - std::abs(args.volume[i]);
     args.volume[i] = v;
@@ -280,7 +290,7 @@ void fragmentSolids(CadModel::Impl& impl, double diag, OverlapPolicy policy, Pre
     const int bad = f.failedSolid;
     if (!tried[static_cast<size_t>(bad)]) {
       tried[static_cast<size_t>(bad)] = 1;
-      if (mendWires(args, bad, fuzzies.front())) {
+      if (mendWires(impl, args, bad, fuzzies.front())) {
         ++repaired;
         f = runFuse(args, fuzzies.front(), excluded);
         if (f.failure.empty()) report.fuzzyValue = fuzzies.front();

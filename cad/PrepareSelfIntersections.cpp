@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "cad/detail/FaceTags.h"
 #include "cad/detail/Prepare.h"
 
 namespace aniso::cad::detail {
@@ -72,8 +73,8 @@ TopoDS_Shape withoutFlatShells(const TopoDS_Shape& piece, double pieceVolume) {
 
 /// The solids with positive volume MakerVolume builds from the solid's faces (without
 /// their flat shells); empty when they do not add up to its volume or one of them is not
-/// manifold.
-std::vector<TopoDS_Shape> rebuilt(const TopoDS_Shape& solid) {
+/// manifold. `history`: what became of the faces.
+std::vector<TopoDS_Shape> rebuilt(const TopoDS_Shape& solid, Handle(BRepTools_History)& history) {
   BOPAlgo_MakerVolume mv;
   TopTools_ListOfShape faces;
   for (TopExp_Explorer f(solid, TopAbs_FACE); f.More(); f.Next()) faces.Append(f.Current());
@@ -82,6 +83,7 @@ std::vector<TopoDS_Shape> rebuilt(const TopoDS_Shape& solid) {
   mv.SetIntersect(true);
   mv.Perform();
   if (mv.HasErrors()) return {};
+  history = mv.History();
   TopTools_IndexedMapOfShape out;
   TopExp::MapShapes(mv.Shape(), TopAbs_SOLID, out);
   std::vector<TopoDS_Shape> pieces;
@@ -104,11 +106,12 @@ void rebuildSelfIntersecting(CadModel::Impl& impl, PrepareReport& report) {
   TopTools_IndexedMapOfShape solids;
   TopExp::MapShapes(impl.shape, TopAbs_SOLID, solids);
   std::vector<std::vector<TopoDS_Shape>> replacement(static_cast<std::size_t>(solids.Extent()) + 1);
+  std::vector<Handle(BRepTools_History)> history(replacement.size());
   std::string fixed;
   for (int i = 1; i <= solids.Extent(); ++i) {
     try {
       if (!selfInterfering(solids(i))) continue;
-      replacement[static_cast<std::size_t>(i)] = rebuilt(solids(i));
+      replacement[static_cast<std::size_t>(i)] = rebuilt(solids(i), history[static_cast<std::size_t>(i)]);
     } catch (const Standard_Failure&) {
       continue;  // left as it is
     }
@@ -135,6 +138,12 @@ void rebuildSelfIntersecting(CadModel::Impl& impl, PrepareReport& report) {
   }
   addLooseFaces(impl.shape, solids, c);
   impl.shape = c;
+  for (int i = 1; i <= solids.Extent(); ++i)
+    if (!replacement[static_cast<std::size_t>(i)].empty())
+      carryFaceTags(impl, solids(i), [&h = history[static_cast<std::size_t>(i)]](const TopoDS_Shape& f) {
+        return historyImages(h, f);
+      });
+  dropStaleFaceTags(impl);
   report.warnings.push_back("solid(s) " + fixed +
                             " had faces crossing one another: rebuilt from their faces, split where they cross");
 }

@@ -9,6 +9,7 @@
 #include <TopoDS.hxx>
 #include <TopoDS_Compound.hxx>
 
+#include "cad/detail/FaceTags.h"
 #include "cad/detail/Prepare.h"
 
 namespace aniso::cad::detail {
@@ -57,7 +58,12 @@ void sewLooseFaces(CadModel::Impl& impl, double tol, PrepareReport& report) {
     if (sewn.IsNull() || countFreeEdges(sewn) >= freeBefore) return;
     for (TopExp_Explorer s(impl.shape, TopAbs_SOLID); s.More(); s.Next()) b.Add(solids, s.Current());
     b.Add(solids, sewn);
+    const TopoDS_Shape before = impl.shape;
     impl.shape = solids;
+    carryFaceTags(impl, before, [&sewing](const TopoDS_Shape& f) {
+      return imageList(sewing.IsModifiedSubShape(f) ? sewing.ModifiedSubShape(f) : f);
+    });
+    dropStaleFaceTags(impl);
     report.facesSewn = nLoose;
   } catch (const Standard_Failure& e) {
     report.warnings.push_back(std::string("sewing failed (") + e.GetMessageString() +

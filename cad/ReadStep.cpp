@@ -1,5 +1,5 @@
-// STEP AP203/214/242 through XCAF, so that each solid keeps the name of its part, in a
-// child process (detail/ChildProcess.h); when OCCT crashes or fails there, the plain reader
+// STEP AP203/214/242 through XCAF, so that each solid keeps the name and colour of its part
+// and each face its own name and colour (sub-shape labels), in a child process (detail/ChildProcess.h); when OCCT crashes or fails there, the plain reader
 // and then the root-by-root reader (ReadStepFallback.cpp) are tried.
 #include <IFSelect_ReturnStatus.hxx>
 #include <Interface_Static.hxx>
@@ -17,9 +17,13 @@
 #include <TopoDS_Compound.hxx>
 #include <BRep_Builder.hxx>
 #include <XCAFApp_Application.hxx>
+#include <Quantity_Color.hxx>
+#include <XCAFDoc_ColorTool.hxx>
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
 
+#include <algorithm>
+#include <cctype>
 #include <fstream>
 #include <sstream>
 
@@ -41,17 +45,56 @@ std::string labelName(const TDF_Label& label) {
   return name.substr(b, name.find_last_not_of(" \t") - b + 1);
 }
 
-/// Records the part name of every solid of every simple-shape label (parts, not
-/// assemblies), keyed by the solid without its location so that every instance of a part
-/// finds the name.
-void collectPartNames(const Handle(XCAFDoc_ShapeTool)& tool, CadModel::Impl& impl) {
+/// The colour XCAF attaches to the label itself (surface colour first, then the generic
+/// one) as "#rrggbb", "" when none: never one inherited from a parent label.
+std::string labelColor(const Handle(XCAFDoc_ColorTool)& colors, const TDF_Label& label) {
+  Quantity_Color c;
+  if (!colors->GetColor(label, XCAFDoc_ColorSurf, c) && !colors->GetColor(label, XCAFDoc_ColorGen, c)) return {};
+  std::string hex = Quantity_Color::ColorToHex(c).ToCString();
+  for (char& ch : hex) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  return hex;
+}
+
+/// A face name that says nothing: "NONE", or a STEP entity reference ("#441": some
+/// exporters name every face after its own entity, as in as1-tu-203.stp, where the
+/// faces of every nut would otherwise share the groups "#197", "#209", ...).
+bool placeholderFaceName(const std::string& name) {
+  if (name == "NONE") return true;
+  return name.size() > 1 && name[0] == '#' &&
+         std::all_of(name.begin() + 1, name.end(), [](unsigned char c) { return std::isdigit(c); });
+}
+
+/// Records the name and colour of every face sub-shape label of a part: what the file
+/// says of the face itself (a sub-shape that is a shell or a solid names no face; a
+/// placeholder name is no name).
+void collectFaceTags(const TDF_Label& part, const Handle(XCAFDoc_ColorTool)& colors, CadModel::Impl& impl) {
+  TDF_LabelSequence subs;
+  XCAFDoc_ShapeTool::GetSubShapes(part, subs);
+  for (int i = 1; i <= subs.Length(); ++i) {
+    const TopoDS_Shape face = XCAFDoc_ShapeTool::GetShape(subs.Value(i));
+    if (face.IsNull() || face.ShapeType() != TopAbs_FACE) continue;
+    FaceTag tag{labelName(subs.Value(i)), labelColor(colors, subs.Value(i))};
+    if (placeholderFaceName(tag.name)) tag.name.clear();
+    const TopoDS_Shape key = face.Located(TopLoc_Location());
+    if ((tag.name.empty() && tag.color.empty()) || impl.faceTagIndex.IsBound(key)) continue;
+    impl.faceTags.push_back(std::move(tag));
+    impl.faceTagIndex.Bind(key, static_cast<int>(impl.faceTags.size()) - 1);
+  }
+}
+
+/// Records the part name and colour of every solid of every simple-shape label (parts,
+/// not assemblies), keyed by the solid without its location so that every instance of a
+/// part finds them, and the tags of the parts' faces.
+void collectPartNames(const Handle(XCAFDoc_ShapeTool)& tool, const Handle(XCAFDoc_ColorTool)& colors,
+                      CadModel::Impl& impl) {
   TDF_LabelSequence labels;
   tool->GetShapes(labels);
   for (int i = 1; i <= labels.Length(); ++i) {
     const TDF_Label& label = labels.Value(i);
     if (XCAFDoc_ShapeTool::IsAssembly(label)) continue;
-    const std::string name = labelName(label);
-    if (name.empty()) continue;
+    collectFaceTags(label, colors, impl);
+    const std::string name = labelName(label), color = labelColor(colors, label);
+    if (name.empty() && color.empty()) continue;
     TopoDS_Shape shape = XCAFDoc_ShapeTool::GetShape(label);
     TopTools_IndexedMapOfShape solids;
     TopExp::MapShapes(shape, TopAbs_SOLID, solids);
@@ -59,6 +102,7 @@ void collectPartNames(const Handle(XCAFDoc_ShapeTool)& tool, CadModel::Impl& imp
       TopoDS_Shape key = solids(k).Located(TopLoc_Location());
       if (impl.nameIndex.IsBound(key)) continue;
       impl.names.push_back(name);
+      impl.partColors.push_back(color);
       impl.nameIndex.Bind(key, static_cast<int>(impl.names.size()) - 1);
     }
   }
@@ -86,7 +130,9 @@ void readStepXcaf(CadModel::Impl& impl) {
     app->NewDocument("MDTV-XCAF", doc);
     STEPCAFControl_Reader reader;
     reader.SetNameMode(true);
-    reader.SetColorMode(false);
+    reader.SetColorMode(true);
+    // named faces become sub-shape labels (STEP representation items' names)
+    Interface_Static::SetIVal("read.stepcaf.subshapes.name", 1);
     reader.SetLayerMode(false);
     const IFSelect_ReturnStatus st = reader.ReadFile(impl.path.c_str());
     testCrashPoint("reader-xcaf");
@@ -110,7 +156,7 @@ void readStepXcaf(CadModel::Impl& impl) {
       for (int i = 1; i <= free.Length(); ++i) b.Add(c, XCAFDoc_ShapeTool::GetShape(free.Value(i)));
       impl.shape = c;
     }
-    collectPartNames(tool, impl);
+    collectPartNames(tool, XCAFDoc_DocumentTool::ColorTool(doc->Main()), impl);
     app->Close(doc);
   } catch (const Standard_Failure& e) {  // for the next rung: the child reports it as failed
     throw MeshingError(std::string("OpenCASCADE failed in the XCAF reader: ") + e.GetMessageString());

@@ -54,7 +54,7 @@ ShapeSummary summarize(const CadModel::Impl& impl) {
       v = 0;
     }
     s.volume += v;
-    s.solidList.push_back({i, impl.solidName(solids(i), i), v});
+    s.solidList.push_back({i, impl.solidName(solids(i), i), v, impl.solidColor(solids(i))});
   }
   // area: every face occurrence, as OCCT's GProp integrates a shape (a face shared by two
   // solids counts twice); uniqueFaceArea: every face once.

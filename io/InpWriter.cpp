@@ -46,8 +46,8 @@ void writeElementBlock(std::ostream& o, const OutputMesh& m, Shape s, const std:
   }
 }
 
-/// *NSET FACE<n> for every meshed face: the nodes of its triangles and quads.
-void writeFaceNodeSets(std::ostream& o, const OutputMesh& m) {
+/// The nodes (1-based, ascending, each once) of every face's triangles and quads.
+std::vector<std::vector<long long>> faceNodeIds(const OutputMesh& m) {
   std::vector<std::vector<long long>> faceNodes(m.model.faces.size());
   std::array<int, 10> nodes{};
   for (Shape s : {Shape::Triangle, Shape::Quad})
@@ -55,13 +55,41 @@ void writeFaceNodeSets(std::ostream& o, const OutputMesh& m) {
       const int k = m.elementNodes(s, i, nodes);
       for (int j = 0; j < k; ++j) faceNodes[m.entityOf(s, i)].push_back(nodes[j] + 1);
     }
-  for (size_t f = 0; f < faceNodes.size(); ++f) {
-    std::vector<long long>& ids = faceNodes[f];
-    if (ids.empty()) continue;
+  for (std::vector<long long>& ids : faceNodes) {
     std::sort(ids.begin(), ids.end());
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  }
+  return faceNodes;
+}
+
+/// *NSET FACE<n> for every meshed face: the nodes of its triangles and quads.
+void writeFaceNodeSets(std::ostream& o, const std::vector<std::vector<long long>>& faceNodes) {
+  for (size_t f = 0; f < faceNodes.size(); ++f) {
+    if (faceNodes[f].empty()) continue;
     o << "*NSET, NSET=FACE" << f + 1 << '\n';
-    writeIdList(o, ids);
+    writeIdList(o, faceNodes[f]);
+  }
+}
+
+/// Per named face group (groupNames), after everything else: *NSET <name> of its faces'
+/// nodes and the union of its faces' `perFace` lists written by `write` (nothing when
+/// they are all empty).
+template <class T, class Write>
+void writeFaceGroups(std::ostream& o, const OutputMesh& m, const std::vector<std::vector<long long>>& faceNodes,
+                     const std::vector<std::vector<T>>& perFace, const Write& write) {
+  for (const FaceGroup& g : groupNames(m.model).faces) {
+    std::vector<long long> nodes;
+    std::vector<T> items;
+    for (const int f : g.faces) {
+      nodes.insert(nodes.end(), faceNodes[f].begin(), faceNodes[f].end());
+      items.insert(items.end(), perFace[f].begin(), perFace[f].end());
+    }
+    if (nodes.empty()) continue;
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    o << "*NSET, NSET=" << g.name << '\n';
+    writeIdList(o, nodes);
+    if (!items.empty()) write(g.name, items);
   }
 }
 
@@ -109,9 +137,9 @@ std::array<int, 3> sorted(int a, int b, int c) {
   return t;
 }
 
-/// *SURFACE S_FACE<n>: the tetrahedron faces (element, S1..S4) on every boundary triangle
-/// of face n; on a face between two solids, the faces of the tetrahedra on both sides.
-void writeFaceSurfaces(std::ostream& o, const OutputMesh& m, const std::vector<long long>& tetIds) {
+/// The tetrahedron faces (element, S1..S4) on every boundary triangle of each face; on a
+/// face between two solids, the faces of the tetrahedra on both sides.
+std::vector<std::vector<std::pair<long long, int>>> faceSides(const OutputMesh& m, const std::vector<long long>& tetIds) {
   const SurfaceMesh& sm = m.surface;
   std::unordered_map<std::array<int, 3>, int, TripleHash> triangleOf;
   triangleOf.reserve(sm.triangles.size() * 2);
@@ -128,13 +156,16 @@ void writeFaceSurfaces(std::ostream& o, const OutputMesh& m, const std::vector<l
       if (it != triangleOf.end()) sides[it->second].push_back({tetIds[e], k + 1});
     }
   std::vector<std::vector<int>> faceTris = m.byEntity(Shape::Triangle);
-  for (size_t f = 0; f < faceTris.size(); ++f) {
-    std::vector<std::pair<long long, int>> entries;
-    for (int t : faceTris[f]) entries.insert(entries.end(), sides[t].begin(), sides[t].end());
-    if (entries.empty()) continue;
-    o << "*SURFACE, NAME=S_FACE" << f + 1 << ", TYPE=ELEMENT\n";
-    for (const auto& [id, k] : entries) o << id << ", S" << k << '\n';
-  }
+  std::vector<std::vector<std::pair<long long, int>>> out(faceTris.size());
+  for (size_t f = 0; f < faceTris.size(); ++f)
+    for (int t : faceTris[f]) out[f].insert(out[f].end(), sides[t].begin(), sides[t].end());
+  return out;
+}
+
+/// *SURFACE <name>, TYPE=ELEMENT of element faces.
+void writeSurface(std::ostream& o, const std::string& name, const std::vector<std::pair<long long, int>>& entries) {
+  o << "*SURFACE, NAME=" << name << ", TYPE=ELEMENT\n";
+  for (const auto& [id, k] : entries) o << id << ", S" << k << '\n';
 }
 
 }  // namespace
@@ -147,15 +178,21 @@ void writeInp(const OutputMesh& m, const std::string& path) {
   long long next = 1;
   if (m.isVolume()) {
     // Volume mesh: only 3D elements, one block and element set per solid.
-    const std::vector<std::string> names = solidGroupNames(m.model, true);
+    const std::vector<std::string> names = groupNames(m.model).solids;
     const auto tets = m.byEntity(Shape::Tet);
     std::vector<long long> tetIds(static_cast<size_t>(m.count(Shape::Tet)), 0);
     const char* type = m.quadratic(Shape::Tet) ? "C3D10" : "C3D4";
     for (size_t s = 0; s < tets.size(); ++s) writeElementBlock(o, m, Shape::Tet, tets[s], type, names[s], next, tetIds);
     if (next > 1) o << "*ELSET, ELSET=EALL, GENERATE\n1, " << next - 1 << ", 1\n";
-    writeFaceNodeSets(o, m);
+    const auto faceNodes = faceNodeIds(m);
+    writeFaceNodeSets(o, faceNodes);
     writeEdgeNodeSets(o, m);
-    writeFaceSurfaces(o, m, tetIds);
+    const auto sides = faceSides(m, tetIds);
+    for (size_t f = 0; f < sides.size(); ++f)
+      if (!sides[f].empty()) writeSurface(o, "S_FACE" + std::to_string(f + 1), sides[f]);
+    writeFaceGroups(o, m, faceNodes, sides, [&o](const std::string& name, const auto& entries) {
+      writeSurface(o, "S_" + name, entries);
+    });
   } else {
     // Surface mesh: shell elements, an element set per face.
     std::vector<long long> triIds(static_cast<size_t>(m.count(Shape::Triangle)), 0);
@@ -167,8 +204,9 @@ void writeInp(const OutputMesh& m, const std::string& path) {
     for (int i = 0; i < m.count(Shape::Quad); ++i) all.push_back(i);
     writeElementBlock(o, m, Shape::Quad, all, m.quadratic(Shape::Quad) ? "S8" : "S4", "", next, quadIds);
     const auto tris = m.byEntity(Shape::Triangle), quads = m.byEntity(Shape::Quad);
+    std::vector<std::vector<long long>> faceElements(tris.size());
     for (size_t f = 0; f < tris.size(); ++f) {
-      std::vector<long long> ids;
+      std::vector<long long>& ids = faceElements[f];
       for (int t : tris[f]) ids.push_back(triIds[t]);
       for (int q : quads[f]) ids.push_back(quadIds[q]);
       if (ids.empty()) continue;
@@ -176,8 +214,14 @@ void writeInp(const OutputMesh& m, const std::string& path) {
       writeIdList(o, ids);
     }
     if (next > 1) o << "*ELSET, ELSET=EALL, GENERATE\n1, " << next - 1 << ", 1\n";
-    writeFaceNodeSets(o, m);
+    const auto faceNodes = faceNodeIds(m);
+    writeFaceNodeSets(o, faceNodes);
     writeEdgeNodeSets(o, m);
+    writeFaceGroups(o, m, faceNodes, faceElements, [&o](const std::string& name, std::vector<long long> ids) {
+      std::sort(ids.begin(), ids.end());
+      o << "*ELSET, ELSET=" << name << '\n';
+      writeIdList(o, ids);
+    });
   }
   file.commit();
 }

@@ -1,7 +1,10 @@
 // Gmsh MSH 2.2 writer, ASCII or binary (format reference: the Gmsh manual, "MSH file format
 // version 2 (Legacy)"). Every element carries two tags: its physical group (the face id
 // for triangles and quads, the solid id for tetrahedra, as in $PhysicalNames) and its
-// elementary entity (the same ids).
+// elementary entity (the same ids). MSH 2 gives an element one physical group: the
+// triangles and quads of a face in a named face group (groupNames) are written once more
+// after all the others, with new element numbers and the group's tag, as Gmsh itself
+// writes an element of several physical groups in this version.
 #include <ostream>
 #include <vector>
 
@@ -32,18 +35,24 @@ void writeMsh22(const OutputMesh& m, const std::string& path, const WriteOptions
   const auto tris = m.byEntity(Shape::Triangle), quads = m.byEntity(Shape::Quad), tets = m.byEntity(Shape::Tet);
   struct Block {
     Shape shape;
-    int entity;
+    int entity, physical;  // 0-based entity, physical tag
     const std::vector<int>* elements;
   };
   std::vector<Block> blocks;
-  for (size_t f = 0; f < tris.size(); ++f) {
-    if (!tris[f].empty()) blocks.push_back({Shape::Triangle, static_cast<int>(f), &tris[f]});
-    if (!quads[f].empty()) blocks.push_back({Shape::Quad, static_cast<int>(f), &quads[f]});
-  }
+  const auto faceBlocks = [&](int f, int physical) {
+    if (!tris[f].empty()) blocks.push_back({Shape::Triangle, f, physical, &tris[f]});
+    if (!quads[f].empty()) blocks.push_back({Shape::Quad, f, physical, &quads[f]});
+  };
+  for (size_t f = 0; f < tris.size(); ++f) faceBlocks(static_cast<int>(f), static_cast<int>(f) + 1);
   for (size_t s = 0; s < tets.size(); ++s)
-    if (!tets[s].empty()) blocks.push_back({Shape::Tet, static_cast<int>(s), &tets[s]});
+    if (!tets[s].empty()) blocks.push_back({Shape::Tet, static_cast<int>(s), static_cast<int>(s) + 1, &tets[s]});
+  const std::vector<FaceGroup> groups = groupNames(m.model).faces;
+  for (size_t k = 0; k < groups.size(); ++k)
+    for (const int f : groups[k].faces) faceBlocks(f, faceGroupTag(m.model, k));
+  std::size_t count = 0;
+  for (const Block& b : blocks) count += b.elements->size();
   w.text("$Elements\n");
-  w.asciiLine(m.count(Shape::Triangle) + m.count(Shape::Quad) + m.count(Shape::Tet));
+  w.asciiLine(count);
   int tag = 1;
   std::array<int, 10> nodes{};
   for (const Block& b : blocks) {
@@ -62,7 +71,7 @@ void writeMsh22(const OutputMesh& m, const std::string& path, const WriteOptions
         w.value<int>(type);
         w.value<int>(2);
       }
-      w.value<int>(b.entity + 1);
+      w.value<int>(b.physical);
       w.value<int>(b.entity + 1);
       for (int j = 0; j < k; ++j) w.value<int>(nodes[perm[j]] + 1);
       w.endLine();

@@ -99,10 +99,18 @@ class MshOut {
   std::size_t pos_ = 0;
 };
 
+/// The physical tag (dim 2) of face group k of groupNames(): after the FACE<n> tags 1..n.
+inline int faceGroupTag(const Model& m, std::size_t k) { return static_cast<int>(m.faces.size() + k) + 1; }
+
+/// True when face group g holds a meshed face.
+inline bool groupMeshed(const FaceGroup& g, const std::vector<bool>& meshedFaces) {
+  return std::any_of(g.faces.begin(), g.faces.end(), [&](int f) { return meshedFaces[static_cast<std::size_t>(f)]; });
+}
+
 /// $MeshFormat of `version` ("4.1" or "2.2"), ASCII or binary (with the endianness check),
 /// then $PhysicalNames: "FACE<n>" (dim 2, tag n) for every meshed face, the solid's group
-/// name (dim 3, tag = solid id, solidGroupNames) for every meshed solid. Names are quoted:
-/// a '"' in a name becomes '_'.
+/// name (dim 3, tag = solid id, groupNames) for every meshed solid, then each named face
+/// group with a meshed face (dim 2, faceGroupTag). Names are quoted (groupNames has no '"').
 inline void writeMshHeader(std::ostream& o, const char* version, bool binary, const OutputMesh& m) {
   o << "$MeshFormat\n" << version << ' ' << (binary ? 1 : 0) << " 8\n";
   if (binary) {
@@ -112,17 +120,18 @@ inline void writeMshHeader(std::ostream& o, const char* version, bool binary, co
   }
   o << "$EndMeshFormat\n";
   const std::vector<bool> faces = m.meshedFaces(), solids = m.meshedSolids();
-  const std::vector<std::string> solidNames = solidGroupNames(m.model);
-  const auto n = std::count(faces.begin(), faces.end(), true) + std::count(solids.begin(), solids.end(), true);
+  const GroupNames names = groupNames(m.model);
+  const auto groups = std::count_if(names.faces.begin(), names.faces.end(),
+                                    [&](const FaceGroup& g) { return groupMeshed(g, faces); });
+  const auto n = std::count(faces.begin(), faces.end(), true) + std::count(solids.begin(), solids.end(), true) + groups;
   o << "$PhysicalNames\n" << n << '\n';
   for (size_t f = 0; f < faces.size(); ++f)
     if (faces[f]) o << "2 " << f + 1 << " \"FACE" << f + 1 << "\"\n";
-  for (size_t s = 0; s < solids.size(); ++s) {
-    if (!solids[s]) continue;
-    std::string name = solidNames[s];
-    std::replace(name.begin(), name.end(), '"', '_');
-    o << "3 " << s + 1 << " \"" << name << "\"\n";
-  }
+  for (size_t s = 0; s < solids.size(); ++s)
+    if (solids[s]) o << "3 " << s + 1 << " \"" << names.solids[s] << "\"\n";
+  for (size_t k = 0; k < names.faces.size(); ++k)
+    if (groupMeshed(names.faces[k], faces))
+      o << "2 " << faceGroupTag(m.model, k) << " \"" << names.faces[k].name << "\"\n";
   o << "$EndPhysicalNames\n";
 }
 

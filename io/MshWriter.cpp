@@ -65,12 +65,16 @@ void writeEntities(const OutputMesh& m, MshOut& w,
     for (int k = 0; k < 3; ++k) w.value<double>(b.empty() ? 0.0 : b.lo[k]);
     for (int k = 0; k < 3; ++k) w.value<double>(b.empty() ? 0.0 : b.hi[k]);
   };
-  // A surface or volume: its box, its physical group (same tag) if meshed, its bounding entities.
-  auto bounded = [&](size_t index, const Box3& b, bool physical, const std::vector<int>& bounding) {
+  // A surface or volume: its box, its physical group (same tag) if meshed and the named
+  // groups it is in, its bounding entities.
+  auto bounded = [&](size_t index, const Box3& b, bool physical, const std::vector<int>& named,
+                     const std::vector<int>& bounding) {
     w.value<int>(static_cast<int>(index) + 1);
     box(b);
-    w.value<std::size_t>(physical ? 1 : 0);
+    w.value<std::size_t>(physical ? 1 + named.size() : 0);
     if (physical) w.value<int>(static_cast<int>(index) + 1);
+    if (physical)
+      for (const int tag : named) w.value<int>(tag);
     w.value<std::size_t>(bounding.size());
     for (int tag : bounding) w.value<int>(tag);
     w.endLine();
@@ -99,6 +103,10 @@ void writeEntities(const OutputMesh& m, MshOut& w,
     }
   for (size_t f = 0; f < faceBox.size(); ++f)
     for (int n : byEntity[2][f]) faceBox[f].add(p[n]);
+  std::vector<std::vector<int>> faceGroups(model.faces.size());  // the named groups' tags of each face
+  const std::vector<FaceGroup> groups = groupNames(model).faces;
+  for (size_t k = 0; k < groups.size(); ++k)
+    for (const int f : groups[k].faces) faceGroups[static_cast<size_t>(f)].push_back(faceGroupTag(model, k));
   for (size_t f = 0; f < model.faces.size(); ++f) {
     if (!faces[f]) continue;
     std::vector<int> bounding;
@@ -109,7 +117,7 @@ void writeEntities(const OutputMesh& m, MshOut& w,
             std::find(bounding.begin(), bounding.end(), -tag) == bounding.end())
           bounding.push_back(tag);
       }
-    bounded(f, faceBox[f], meshedFaces[f], bounding);
+    bounded(f, faceBox[f], meshedFaces[f], faceGroups[f], bounding);
   }
   std::vector<Box3> solidBox(model.solids.size());
   {
@@ -138,7 +146,7 @@ void writeEntities(const OutputMesh& m, MshOut& w,
       for (const FaceUse& fu : model.shells[sh].faces)
         if (faces[fu.face]) bounding.push_back((fu.face + 1) * (fu.reversed ? -1 : 1));
     }
-    bounded(s, solidBox[s], meshedSolids[s], bounding);
+    bounded(s, solidBox[s], meshedSolids[s], {}, bounding);
   }
   w.endSection("$EndEntities");
 }

@@ -138,10 +138,10 @@ std::string abaqusIdentifier(const std::string& name) {
   return out.substr(0, 64);  // CalculiX reads names of up to 80 characters; room for "_<k>"
 }
 
-/// Names the INP writer defines: NALL, EALL, FACE<n>, S_FACE<n>.
+/// Names the writers define: NALL, EALL, FACE<n>, S_FACE<n>, EDGE<n>.
 bool reservedInAbaqus(const std::string& upperName) {
   if (upperName == "NALL" || upperName == "EALL") return true;
-  for (const char* prefix : {"FACE", "S_FACE"}) {
+  for (const char* prefix : {"FACE", "S_FACE", "EDGE"}) {
     const std::string p(prefix);
     if (upperName.size() > p.size() && upperName.compare(0, p.size(), p) == 0 &&
         std::all_of(upperName.begin() + static_cast<long>(p.size()), upperName.end(),
@@ -153,19 +153,30 @@ bool reservedInAbaqus(const std::string& upperName) {
 
 }  // namespace
 
-std::vector<std::string> solidGroupNames(const Model& model, bool abaqus) {
-  std::vector<std::string> out;
-  std::set<std::string> taken;  // compared case-insensitively for Abaqus, exactly otherwise
-  auto key = [&](const std::string& s) { return abaqus ? upper(s) : s; };
-  for (size_t i = 0; i < model.solids.size(); ++i) {
-    std::string base = model.solids[i].name.empty() ? "SOLID" + std::to_string(i + 1) : model.solids[i].name;
-    if (abaqus) base = abaqusIdentifier(base);
+GroupNames groupNames(const Model& model) {
+  GroupNames out;
+  std::set<std::string> taken;  // upper case
+  const auto claim = [&taken](const std::string& raw) {
+    const std::string base = abaqusIdentifier(raw);
     std::string name = base;
-    for (int k = 2; taken.count(key(name)) || (abaqus && reservedInAbaqus(upper(name))); ++k)
-      name = base + "_" + std::to_string(k);
-    taken.insert(key(name));
-    out.push_back(name);
+    for (int k = 2; taken.count(upper(name)) || reservedInAbaqus(upper(name)); ++k) name = base + "_" + std::to_string(k);
+    taken.insert(upper(name));
+    return name;
+  };
+  for (size_t i = 0; i < model.solids.size(); ++i)
+    out.solids.push_back(claim(model.solids[i].name.empty() ? "SOLID" + std::to_string(i + 1) : model.solids[i].name));
+  std::vector<std::string> raw;  // the STEP name of each group
+  for (size_t f = 0; f < model.faces.size(); ++f) {
+    const std::string& name = model.faces[f].name;
+    if (name.empty()) continue;
+    const auto k = static_cast<size_t>(std::find(raw.begin(), raw.end(), name) - raw.begin());
+    if (k == raw.size()) {
+      raw.push_back(name);
+      out.faces.push_back({{}, {}});
+    }
+    out.faces[k].faces.push_back(static_cast<int>(f));
   }
+  for (size_t k = 0; k < raw.size(); ++k) out.faces[k].name = claim(raw[k]);
   return out;
 }
 

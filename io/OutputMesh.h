@@ -47,13 +47,28 @@ struct OutputMesh {
   void check(const std::string& path) const;
 };
 
-/// The physical-group name of every solid: its part name (or "SOLID<n>" without one),
-/// made unique when parts repeat ("nut", "nut_2", "nut_3"). With `abaqus`, names are
-/// first made valid Abaqus/CalculiX identifiers (letters, digits and '_', starting with a
-/// letter, "P_" put before one that does not; other characters become '_'; at most 64
-/// characters before the suffix) and never collide with the sets the INP writer defines
-/// itself (NALL, EALL, FACE<n>, S_FACE<n>), compared case-insensitively as CalculiX does.
-std::vector<std::string> solidGroupNames(const Model& model, bool abaqus = false);
+/// The CAD faces that share one STEP face name (ModelFace::name): one group of the output.
+struct FaceGroup {
+  std::string name;        ///< the group's name (see groupNames)
+  std::vector<int> faces;  ///< 0-based, ascending
+};
+
+/// The names every writer gives its groups, the same in every format (MSH, INP, VTU, UNV):
+///  - `solids`: one per solid, its part name ("SOLID<n>" without one);
+///  - `faces`: one per distinct STEP face name, in the order of its first face (named faces
+///    are grouped beside their FACE<n> groups; a model without face names has none).
+/// Every name is made a valid Abaqus/CalculiX identifier, since INP needs one: letters,
+/// digits and '_' (any other character, also non-ASCII bytes, becomes '_'), starting with a
+/// letter ("P_" put before one that does not), at most 64 characters ("l-bracket" becomes
+/// "l_bracket", "load face" "load_face"). Names are then made unique across solids and face
+/// groups together, compared case-insensitively as CalculiX does, by a suffix "_2", "_3"
+/// (solids first, so a part keeps its name), and never equal a name the writers define
+/// themselves (NALL, EALL, FACE<n>, S_FACE<n>, EDGE<n>).
+struct GroupNames {
+  std::vector<std::string> solids;
+  std::vector<FaceGroup> faces;
+};
+GroupNames groupNames(const Model& model);
 
 /// Mean ratio of a triangle in 3D (1 equilateral, 0 degenerate), of a tetrahedron
 /// (negative when inverted), scaled Jacobian of a quad (min over the corners of the

@@ -4,7 +4,8 @@
 // 91/92, 94/95) numbered first, then the tetrahedra (111/118); fields 3 and 4 of each
 // element record (physical and material property tables) hold its face or solid id, which
 // Gmsh reads as its elementary and physical tags. Groups: per meshed face "FACE<n>" (its
-// nodes, then its elements), then per solid its part name (its tetrahedra).
+// nodes, then its elements), then per solid its part name (its tetrahedra), then per named
+// face group (groupNames) its faces' nodes and elements.
 #include <algorithm>
 #include <cstdio>
 #include <ostream>
@@ -119,9 +120,21 @@ void writeUnv(const OutputMesh& m, const std::string& path) {
     fn.erase(std::unique(fn.begin(), fn.end()), fn.end());
     writeGroup(o, group++, "FACE" + std::to_string(f + 1), fn, faceElements[f]);
   }
-  const std::vector<std::string> names = solidGroupNames(m.model);
+  const GroupNames names = groupNames(m.model);
   for (size_t s = 0; s < solidElements.size(); ++s)
-    if (!solidElements[s].empty()) writeGroup(o, group++, names[s], {}, solidElements[s]);
+    if (!solidElements[s].empty()) writeGroup(o, group++, names.solids[s], {}, solidElements[s]);
+  for (const FaceGroup& g : names.faces) {  // after the others: a model without them is unchanged
+    std::vector<long long> gn, ge;
+    for (const int f : g.faces) {
+      gn.insert(gn.end(), faceNodes[f].begin(), faceNodes[f].end());
+      ge.insert(ge.end(), faceElements[f].begin(), faceElements[f].end());
+    }
+    if (ge.empty()) continue;
+    std::sort(gn.begin(), gn.end());
+    gn.erase(std::unique(gn.begin(), gn.end()), gn.end());
+    std::sort(ge.begin(), ge.end());
+    writeGroup(o, group++, g.name, gn, ge);
+  }
   o << "    -1\n";
   file.commit();
 }

@@ -1,7 +1,11 @@
 // VTK XML unstructured grid (.vtu) writer: ASCII, or with `binary` inline base64 data
 // arrays (format="binary", header_type="UInt64": each array is base64 of its byte count
 // followed by its bytes). Cells: the triangles, the quads, then the tetrahedra. Node data
-// (WriteOptions::nodeData) as PointData arrays.
+// (WriteOptions::nodeData) as PointData arrays. The group names (groupNames) as FieldData,
+// one Int32 array per group named after it, so that the bare integers of "region" and
+// "face" can be decoded: "region:<part>" holds its region id (for every meshed solid),
+// "face:<name>" the face ids of a named face group. Plain numeric arrays, since meshio
+// (5.x) refuses VTK's String arrays; ParaView lists them in its Information panel.
 #include <bit>
 #include <cstdint>
 #include <cstring>
@@ -88,6 +92,30 @@ std::uint8_t vtkType(Shape s, bool quadratic) {
   return 0;
 }
 
+/// The FieldData of the group names (see the top of this file); nothing without groups.
+void writeGroupNames(std::ostream& o, const OutputMesh& m) {
+  const GroupNames names = groupNames(m.model);
+  const std::vector<bool> solids = m.meshedSolids(), faces = m.meshedFaces();
+  std::vector<std::pair<std::string, std::vector<int>>> arrays;
+  for (size_t s = 0; s < solids.size(); ++s)
+    if (solids[s]) arrays.push_back({"region:" + names.solids[s], {static_cast<int>(s) + 1}});
+  for (const FaceGroup& g : names.faces) {
+    std::vector<int> ids;
+    for (const int f : g.faces)
+      if (faces[static_cast<size_t>(f)]) ids.push_back(f + 1);
+    if (!ids.empty()) arrays.push_back({"face:" + g.name, ids});
+  }
+  if (arrays.empty()) return;
+  o << "    <FieldData>\n";
+  for (const auto& [name, ids] : arrays) {
+    o << "      <DataArray type=\"Int32\" Name=\"" << xmlEscaped(name) << "\" NumberOfTuples=\"" << ids.size()
+      << "\" format=\"ascii\">\n        ";
+    for (size_t i = 0; i < ids.size(); ++i) o << ids[i] << (i + 1 == ids.size() ? "\n" : " ");
+    o << "      </DataArray>\n";
+  }
+  o << "    </FieldData>\n";
+}
+
 }  // namespace
 
 void writeVtu(const OutputMesh& m, const std::string& path, const WriteOptions& opt) {
@@ -118,8 +146,9 @@ void writeVtu(const OutputMesh& m, const std::string& path, const WriteOptions& 
   VtuOut w(o, opt.binary);
   o << "<?xml version=\"1.0\"?>\n"
     << "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
-    << "  <UnstructuredGrid>\n"
-    << "    <Piece NumberOfPoints=\"" << m.nodes().size() << "\" NumberOfCells=\"" << types.size() << "\">\n"
+    << "  <UnstructuredGrid>\n";
+  writeGroupNames(o, m);
+  o << "    <Piece NumberOfPoints=\"" << m.nodes().size() << "\" NumberOfCells=\"" << types.size() << "\">\n"
     << "      <Points>\n";
   w.array("Float64", "Points", 3, points);
   o << "      </Points>\n      <Cells>\n";

@@ -3,7 +3,8 @@
 // SIGSEGV in a reader, in ShapeFix, in the general fuse) ends the child, never us.
 //
 // runInChild(impl, work) forks; the child runs work(impl) on its copy of impl and writes
-// the resulting shape (binary BREP, exact) with its part names and work's returned payload
+// the resulting shape (binary BREP, exact) with its part names and colours, its face tags
+// (STEP face names and colours) and work's returned payload
 // to a private temporary folder; the parent reads them back into impl. Turning the signal
 // into an exception in-process (OSD::SetSignal, OCC_CATCH_SIGNALS: a longjmp out of the
 // middle of OCCT) could leave the heap inconsistent for the rest of the run, which is why

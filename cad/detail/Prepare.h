@@ -1,6 +1,7 @@
 #pragma once
 // Internal: the preparation steps run by CadModel::prepare(), each its own operator.
-// Every step keeps the part names of solids: it rebinds impl.nameIndex for the images.
+// Every step keeps the part names of solids: it rebinds impl.nameIndex for the images; and
+// the STEP face names and colours: it passes impl.faceTagIndex on by its history (FaceTags.h).
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
 #include <ShapeBuild_ReShape.hxx>

@@ -50,7 +50,7 @@ Model namedSolids(const std::vector<std::string>& names) {
 }  // namespace
 
 TEST(IoWriters, SolidNamesAreMadeUnique) {
-  const auto n = solidGroupNames(namedSolids({"nut", "bolt", "nut", "", "nut_2", "nut"}));
+  const auto n = groupNames(namedSolids({"nut", "bolt", "nut", "", "nut_2", "nut"})).solids;
   const std::vector<std::string> want = {"nut", "bolt", "nut_2", "SOLID4", "nut_2_2", "nut_3"};
   EXPECT_EQ(n, want);
 }
@@ -59,21 +59,36 @@ TEST(IoWriters, As1AssemblyGetsEighteenDistinctNames) {
   // the part names of ../shared/models/as1-tu-203.stp in solid order (anisomesh info)
   const std::vector<std::string> parts = {"nut", "nut", "rod", "bolt", "nut", "bolt", "nut", "bolt", "nut",
                                           "l-bracket", "plate", "bolt", "nut", "bolt", "nut", "bolt", "nut", "l-bracket"};
-  const auto names = solidGroupNames(namedSolids(parts));
+  const auto names = groupNames(namedSolids(parts)).solids;
   EXPECT_EQ(std::set<std::string>(names.begin(), names.end()).size(), 18u);
   EXPECT_EQ(names[0], "nut");
   EXPECT_EQ(names[1], "nut_2");
   EXPECT_EQ(names[16], "nut_8");  // the eighth nut
-  EXPECT_EQ(names[17], "l-bracket_2");
-  const auto abaqus = solidGroupNames(namedSolids(parts), true);
-  EXPECT_EQ(abaqus[9], "l_bracket");
-  EXPECT_EQ(std::set<std::string>(abaqus.begin(), abaqus.end()).size(), 18u);
+  EXPECT_EQ(names[9], "l_bracket");  // the same name in every format (MSH had l-bracket)
+  EXPECT_EQ(names[17], "l_bracket_2");
 }
 
 TEST(IoWriters, AbaqusNamesAreIdentifiersAvoidingOurSets) {
-  const auto n = solidGroupNames(namedSolids({"my part", "2x", "EALL", "face3", "Nut", "nut", "S_FACE12", "FACEPLATE"}), true);
-  const std::vector<std::string> want = {"my_part", "P_2x", "EALL_2", "face3_2", "Nut", "nut_2", "S_FACE12_2", "FACEPLATE"};
+  const auto n = groupNames(namedSolids({"my part", "2x", "EALL", "face3", "Nut", "nut", "S_FACE12", "FACEPLATE", "Edge7"})).solids;
+  const std::vector<std::string> want = {"my_part", "P_2x", "EALL_2", "face3_2", "Nut", "nut_2", "S_FACE12_2", "FACEPLATE", "Edge7_2"};
   EXPECT_EQ(n, want);
+}
+
+TEST(IoWriters, NamedFacesShareOneGroupNamedLikeTheParts) {
+  Model m = namedSolids({"box"});
+  for (const char* name : {"top", "", "load face", "top", "BOX", "FACE2"}) {
+    m.faces.emplace_back();
+    m.faces.back().name = name;
+  }
+  const GroupNames g = groupNames(m);
+  ASSERT_EQ(g.faces.size(), 4u);
+  EXPECT_EQ(g.faces[0].name, "top");
+  EXPECT_EQ(g.faces[0].faces, (std::vector<int>{0, 3}));
+  EXPECT_EQ(g.faces[1].name, "load_face");
+  EXPECT_EQ(g.faces[1].faces, (std::vector<int>{2}));
+  EXPECT_EQ(g.faces[2].name, "BOX_2");  // the part keeps its name
+  EXPECT_EQ(g.faces[3].name, "FACE2_2");  // never one of the FACE<n> sets
+  EXPECT_EQ(groupNames(namedSolids({"box"})).faces.size(), 0u);
 }
 
 TEST(IoWriters, InpSurfacesLieOnTheirCadFaces) {

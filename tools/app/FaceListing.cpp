@@ -19,6 +19,8 @@ json entryJson(const cad::CatalogEntry& e, const char* measure, bool edge) {
   if (edge) j["faces"] = e.faces;
   j["solids"] = e.solids;
   j["part"] = e.part;
+  if (!e.name.empty()) j["name"] = e.name;
+  if (!e.color.empty()) j["color"] = e.color;
   return j;
 }
 
@@ -39,10 +41,13 @@ std::string line(const cad::CatalogEntry& e, const std::vector<int>& neighbours)
   const double zero = kPrintZero * (e.bbox.empty() ? 1.0 : e.bbox.diagonal());
   const auto snap = [zero](double v) { return std::abs(v) < zero ? 0.0 : v; };
   char buf[512];
-  std::snprintf(buf, sizeof buf, "%6d  %-11s %12.6g  %10.6g %10.6g %10.6g  %-8s %s\n", e.id, e.type.c_str(),
+  std::snprintf(buf, sizeof buf, "%6d  %-11s %12.6g  %10.6g %10.6g %10.6g  %-8s %s", e.id, e.type.c_str(),
                 e.measure, snap(e.centroid.x()), snap(e.centroid.y()), snap(e.centroid.z()), ids(neighbours).c_str(),
                 e.part.empty() ? "-" : e.part.c_str());
-  return buf;
+  std::string s = buf;
+  if (!e.name.empty()) s += "  name \"" + e.name + "\"";
+  if (!e.color.empty()) s += "  colour " + e.color;
+  return s + "\n";
 }
 
 }  // namespace

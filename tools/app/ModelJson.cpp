@@ -19,7 +19,10 @@ nlohmann::ordered_json summaryJson(const cad::ShapeSummary& s) {
                {"max", {s.bbox.hi.x(), s.bbox.hi.y(), s.bbox.hi.z()}},
                {"diagonal", s.bbox.diagonal()}};
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
-  for (const auto& so : s.solidList) list.push_back({{"id", so.id}, {"name", so.name}, {"volume", so.volume}});
+  for (const auto& so : s.solidList) {
+    list.push_back({{"id", so.id}, {"name", so.name}, {"volume", so.volume}});
+    if (!so.color.empty()) list.back()["color"] = so.color;
+  }
   j["solid_list"] = list;
   return j;
 }
@@ -50,7 +53,8 @@ std::string summaryText(const cad::ShapeSummary& s, const std::string& in) {
   o << in << "bounding box [" << s.bbox.lo.x() << ", " << s.bbox.lo.y() << ", " << s.bbox.lo.z() << "] - ["
     << s.bbox.hi.x() << ", " << s.bbox.hi.y() << ", " << s.bbox.hi.z() << "], diagonal " << s.bbox.diagonal() << "\n";
   for (const auto& so : s.solidList)
-    o << in << "  solid " << so.id << " \"" << so.name << "\" volume " << so.volume << "\n";
+    o << in << "  solid " << so.id << " \"" << so.name << "\" volume " << so.volume
+      << (so.color.empty() ? "" : " colour " + so.color) << "\n";
   return o.str();
 }
 

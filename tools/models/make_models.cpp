@@ -1,6 +1,6 @@
 // make_models: writes anisomesh's own sample models as STEP AP214 through XCAF.
 //
-//   make_models OUTDIR        build the models and write OUTDIR/{bracket,assembly2,plate,cylinder,cantilever,blocks2,passage,overlap2,cube,holeplate}.step and
+//   make_models OUTDIR        build the models and write OUTDIR/{bracket,assembly2,plate,cylinder,cantilever,blocks2,passage,overlap2,cube,holeplate,named_faces}.step and
 //                             OUTDIR/{crack,crack_edge}.brep
 //   make_models --check FILE  read FILE with STEPCAFControl_Reader and print solids, volume, part names
 //
@@ -62,6 +62,8 @@
 #include <TopoDS_Shape.hxx>
 #include <TopoDS_Vertex.hxx>
 #include <XCAFApp_Application.hxx>
+#include <Quantity_Color.hxx>
+#include <XCAFDoc_ColorTool.hxx>
 #include <XCAFDoc_DocumentTool.hxx>
 #include <XCAFDoc_ShapeTool.hxx>
 #include <gp_Ax2.hxx>
@@ -225,10 +227,14 @@ void setName(const TDF_Label& l, const char* name) {
   TDataStd_Name::Set(l, TCollection_ExtendedString(name));
 }
 
-void writeStep(const Handle(TDocStd_Document)& doc, const std::filesystem::path& path) {
+// `colors`: the document's colours are written too (STYLED_ITEMs), and the names of
+// sub-shape labels (faces) as the names of their STEP representation items.
+void writeStep(const Handle(TDocStd_Document)& doc, const std::filesystem::path& path, bool colors = false) {
+  if (!Interface_Static::SetIVal("write.stepcaf.subshapes.name", colors ? 1 : 0))
+    fail("cannot set write.stepcaf.subshapes.name");
   STEPCAFControl_Writer writer;
   writer.SetNameMode(Standard_True);
-  writer.SetColorMode(Standard_False);
+  writer.SetColorMode(colors ? Standard_True : Standard_False);
   writer.SetLayerMode(Standard_False);
   writer.SetPropsMode(Standard_False);
   if (!writer.Transfer(doc, STEPControl_AsIs)) fail(path.string() + ": XCAF transfer failed");
@@ -323,6 +329,55 @@ void writeBlocks2(const std::filesystem::path& path) {
   gp_Trsf shift;
   shift.SetTranslation(gp_Vec(10, 0, 0));
   writeTwoParts(path, "BLOCKS2", left, "LEFT", TopLoc_Location(), right, "RIGHT", TopLoc_Location(shift));
+}
+
+// Two cubes 10 x 10 x 10 side by side along x, as blocks2 (LEFT x 0..10, RIGHT x 10..20,
+// sharing the face x = 10), whose faces carry STEP names and colours (issue 17): LEFT's
+// x = 0 face "fixed" (red), RIGHT's x = 20 face "load face" (blue), both tops z = 10
+// "top" (one name, two parts), LEFT's bottom z = 0 a colour only (grey); RIGHT the part
+// colour green (not a face colour of its faces). OCCT's box order: FACE1 x = 0, FACE2
+// x = 10, FACE3/4 y = 0/10, FACE5/6 z = 0/10.
+void writeNamedFaces(const std::filesystem::path& path) {
+  TopoDS_Shape left = box(0, 0, 0, 10, 10, 10), right = box(0, 0, 0, 10, 10, 10);
+  checkShape(left, "LEFT", 1);
+  checkShape(right, "RIGHT", 1);
+  Handle(TDocStd_Document) doc = newDoc();
+  Handle(XCAFDoc_ShapeTool) st = XCAFDoc_DocumentTool::ShapeTool(doc->Main());
+  Handle(XCAFDoc_ColorTool) ct = XCAFDoc_DocumentTool::ColorTool(doc->Main());
+  TDF_Label assy = st->NewShape();
+  setName(assy, "NAMED_FACES");
+  TDF_Label lL = st->AddShape(left, Standard_False), lR = st->AddShape(right, Standard_False);
+  setName(lL, "LEFT");
+  setName(lR, "RIGHT");
+  const auto tagFace = [&](const TDF_Label& part, const TopoDS_Shape& solid, int face, const char* name,
+                           const char* hex) {
+    TopTools_IndexedMapOfShape faces;
+    TopExp::MapShapes(solid, TopAbs_FACE, faces);
+    const TDF_Label sub = st->AddSubShape(part, faces(face));
+    if (sub.IsNull()) fail(std::string("named_faces: cannot add face ") + std::to_string(face));
+    if (name) setName(sub, name);
+    Quantity_Color c;
+    if (hex && !Quantity_Color::ColorFromHex(hex, c)) fail(std::string("named_faces: bad colour ") + hex);
+    if (hex) ct->SetColor(sub, c, XCAFDoc_ColorSurf);
+  };
+  tagFace(lL, left, 1, "fixed", "#FF0000");
+  tagFace(lL, left, 6, "top", nullptr);
+  tagFace(lL, left, 5, nullptr, "#808080");
+  tagFace(lR, right, 2, "load face", "#0000FF");
+  tagFace(lR, right, 6, "top", nullptr);
+  Quantity_Color green;
+  Quantity_Color::ColorFromHex("#00FF00", green);
+  ct->SetColor(lR, green, XCAFDoc_ColorSurf);
+  gp_Trsf shift;
+  shift.SetTranslation(gp_Vec(10, 0, 0));
+  const TDF_Label cL = st->AddComponent(assy, lL, TopLoc_Location());
+  const TDF_Label cR = st->AddComponent(assy, lR, TopLoc_Location(shift));
+  if (cL.IsNull() || cR.IsNull()) fail("named_faces: cannot add components");
+  setName(cL, "LEFT");
+  setName(cR, "RIGHT");
+  st->UpdateAssemblies();
+  checkShape(st->GetShape(assy), "NAMED_FACES", 2);
+  writeStep(doc, path, /*colors*/ true);
 }
 
 // A turbine-passage-like surface model (no solid): the closed shell of a B-spline patch
@@ -529,6 +584,7 @@ int main(int argc, char** argv) {
     writeOverlap2(out / "overlap2.step");
     writeSinglePart(makeCube(), "CUBE", out / "cube.step");
     writeSinglePart(makeHolePlate(), "HOLEPLATE", out / "holeplate.step");
+    writeNamedFaces(out / "named_faces.step");
     // STEP (OCCT's writer) drops a solid's INTERNAL faces: the cracked cubes are BREP.
     writeBrep(makeCrackedCube(2, 8), "cracked cube", out / "crack.brep");  // a crack inside
     writeBrep(makeCrackedCube(-1, 5), "edge crack", out / "crack_edge.brep");  // open at two sides
