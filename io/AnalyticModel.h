@@ -1,5 +1,5 @@
 #pragma once
-// Analytic models: a surface patch described in JSON, meshed like a CAD face (README,
+// Analytic models: a surface patch described in JSON, meshed like a CAD face (docs/import.md,
 // "Analytic models"). Used for the thesis examples (appendix A: RECT1, AN1, SURF0-2).
 //
 //   {"name": "AN1",

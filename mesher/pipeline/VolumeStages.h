@@ -35,7 +35,7 @@ inline constexpr int kMaxProximityRounds = 2;
 inline constexpr double kMaxProximityGrowth = 10.0;
 /// A part thin as a whole — at least this share of the surface's triangles thin — is
 /// refined as far as the budget allows when its sources ask for more (sourcesWithinBudget);
-/// a part thin in places (an assembly's skins) keeps its surface (docs: README, Volume meshes).
+/// a part thin in places (an assembly's skins) keeps its surface (docs/volume.md).
 inline constexpr double kThinWholeShare = 0.5;
 /// A round whose sources would add less than this share of triangles is not run.
 inline constexpr double kMinProximityGrowth = 1.05;

@@ -14,7 +14,7 @@
 //     reduction first;
 //   - when even h_c = h_max does not fit, fits = false: the caller stops with the
 //     prediction (InputError, exit 2).
-// The default N (defaultElementBudget) is the memory available over the bytes one element
+// The default N (defaultElementBudget) is the machine's memory over the bytes one element
 // costs while meshing (kBytesPerTriangle, kBytesPerTet).
 #include <vector>
 

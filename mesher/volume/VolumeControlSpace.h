@@ -22,7 +22,7 @@
 // Only the triangles of faces of the solid's shells (outer and voids) are used.
 // Throws MeshingError when the solid has no boundary triangle.
 //
-// The sizing convention of the volume (README, "Options"): a size h (--size, --hmax, the
+// The sizing convention of the volume (docs/sizing.md, "Sizes in 3D"): a size h (--size, --hmax, the
 // surface's curvature and the user's sources alike) asks for surface triangles of edge
 // length h, as in 2D, and for tetrahedra of edge length f·h inside the solid, f =
 // kVolumeLengthFactor — the meaning Gmsh gives its sizes in 3D (its HXT and Delaunay meshes

@@ -10,20 +10,20 @@
 
 namespace aniso::app {
 
-double availableMemoryBytes() {
+double physicalMemoryBytes() {
   std::ifstream in("/proc/meminfo");
   std::string key;
   double kb = 0;
   std::string unit;
   while (in >> key >> kb >> unit)
-    if (key == "MemAvailable:") return kb * 1024.0;
-  const long pages = sysconf(_SC_AVPHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+    if (key == "MemTotal:") return kb * 1024.0;
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
   return pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : 0.0;
 }
 
 double elementBudget(double given, int dim) {
   if (given > 0) return given;
-  const double bytes = availableMemoryBytes();
+  const double bytes = physicalMemoryBytes();
   return bytes > 0 ? defaultElementBudget(bytes, dim) : 0.0;  // unknown memory: no budget
 }
 

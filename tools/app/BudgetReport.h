@@ -7,10 +7,12 @@
 
 namespace aniso::app {
 
-/// MemAvailable of /proc/meminfo; else the free physical pages (sysconf); 0 when unknown.
-double availableMemoryBytes();
+/// The machine's physical memory: MemTotal of /proc/meminfo, else sysconf's physical pages;
+/// 0 when unknown. Not the memory available now: that changes from run to run, and the
+/// budget it gave would make the same input mesh differently (determinism).
+double physicalMemoryBytes();
 
-/// --max-elements when given (> 0), else defaultElementBudget(availableMemoryBytes(), dim).
+/// --max-elements when given (> 0), else defaultElementBudget(physicalMemoryBytes(), dim).
 double elementBudget(double given, int dim);
 
 /// report.extra["budget"] = {limit, predicted, triangles, tets, floor, predicted_after,

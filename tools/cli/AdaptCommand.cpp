@@ -24,6 +24,7 @@
 #include "mesher/core/Log.h"
 #include "mesher/volume/VolumeControlSpace.h"
 #include "tools/cli/AdaptCommand.h"
+#include "tools/cli/RunSummary.h"
 
 namespace aniso::cli {
 namespace {
@@ -262,8 +263,9 @@ int runAdapt(const AdaptArgs& given) {
   std::vector<CountRound> rounds;
   a.metricTarget = a.mesh.options.order == 2 ? asked / kQuadraticNodesPerVertex[p.dim] : asked;
   std::string stop;
+  io::Report last;  // the summary printed is the last mesh's (the one written)
   for (;;) {
-    const int rc = runMesh(m, nodeData);
+    const int rc = runMesh(m, nodeData, &last);
     if (rc != 0) return rc;
     rounds.push_back(readRound(m.report, a.metricTarget, asked));
     const CountRound& r = rounds.back();
@@ -307,12 +309,13 @@ int runAdapt(const AdaptArgs& given) {
   if (best != rounds.end() - 1) {
     logInfo("adapt: meshing again the closest of the " + std::to_string(meshes) + " meshes (" + count(best->made) + " nodes)");
     a.metricTarget = best->scaled;
-    const int rc = runMesh(m, nodeData);
+    const int rc = runMesh(m, nodeData, &last);
     if (rc != 0) return rc;
     ++meshes;
     made = readRound(m.report, a.metricTarget, asked).made;
   }
   if (!ownReport) recordCount(m.report, asked, made, meshes, stop);
+  printRunSummary(last, m.output);
   return 0;
 }
 

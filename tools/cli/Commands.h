@@ -9,6 +9,7 @@
 
 #include "cad/CadModel.h"
 #include "io/MeshWriter.h"
+#include "io/Report.h"
 #include "mesher/core/MeshOptions.h"
 #include "mesher/sizing/UserSizing.h"
 #include "tools/app/MeshArgs.h"
@@ -28,7 +29,9 @@ using app::MeshArgs;
 /// Called once the mesh is made, before it is written: data arrays at its nodes to write
 /// with it (adapt --transfer); may add to the report's `extra` block.
 using NodeDataHook = std::function<std::vector<io::NodeData>(const std::vector<Vec3>& nodes, nlohmann::ordered_json& extra)>;
-int runMesh(const MeshArgs& args, const NodeDataHook& nodeData = {});
+/// Meshes, writes, and prints the run's summary — or, given `report`, keeps the summary in
+/// it for the caller to print (adapt prints only its last mesh's).
+int runMesh(const MeshArgs& args, const NodeDataHook& nodeData = {}, io::Report* report = nullptr);
 
 struct AdaptArgs {
   MeshArgs mesh;           ///< model, output, report, order, sizing options

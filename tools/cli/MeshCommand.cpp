@@ -87,14 +87,15 @@ static int meshRun(const MeshArgs& given, io::Report& report, const NodeDataHook
 
 /// --time-limit: the token every mesher checks (mesher/core/Cancel.h); when it fires, the
 /// report says failed, no mesh is written, and the one line names the phase (exit 3).
-int runMesh(const MeshArgs& given, const NodeDataHook& nodeData) {
+int runMesh(const MeshArgs& given, const NodeDataHook& nodeData, io::Report* keep) {
   const auto t0 = std::chrono::steady_clock::now();
   MeshArgs args = given;
   if (args.timeLimit > 0) args.options.cancel = std::make_shared<const CancelToken>(args.timeLimit);
   io::Report report;
   try {
     const int rc = meshRun(args, report, nodeData);
-    printRunSummary(report, args.output);
+    if (keep) *keep = std::move(report);
+    else printRunSummary(report, args.output);
     return rc;
   } catch (const Cancelled& e) {
     report.problems.push_back({EntityRef::model(), Severity::Failed, "time-limit", e.what(), "run"});

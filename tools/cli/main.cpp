@@ -109,7 +109,7 @@ int main(int argc, char** argv) {
       ->group(kOutput);
   meshCmd->add_option("--report", mesh.report, "Write the JSON run report here")->option_text("FILE")->group(kOutput);
   cli::SizeOptions meshSize(*meshCmd, mesh.options.sizing, true);
-  meshCmd->add_option("--sizing", mesh.options.sizingFile, "Local sizes: sources in a JSON file (README)")
+  meshCmd->add_option("--sizing", mesh.options.sizingFile, "Local sizes: sources in a JSON file (format: docs/sizing.md)")
       ->option_text("FILE")
       ->group(cli::kSizeGroup);
   meshCmd->add_flag("!--no-fragment", mesh.fragment, "Do not make touching solids conformal")->group(kModel);
@@ -129,7 +129,7 @@ int main(int argc, char** argv) {
       ->group(kPerformance);
   meshCmd->add_option("--max-elements", mesh.options.maxElements,
                       "Element budget (triangles, plus tets in 3D) checked before meshing; over it the finest sizes are "
-                      "coarsened, or the run stops (exit 2). Default: the available memory / bytes per element")
+                      "coarsened, or the run stops (exit 2). Default: the machine's memory / bytes per element")
       ->check(CLI::PositiveNumber)
       ->option_text("N")
       ->group(kPerformance);
@@ -151,7 +151,7 @@ int main(int argc, char** argv) {
       ->option_text("N")
       ->group(kOutput);
   cli::SizeOptions sizingSize(*sizingCmd, sizing.params, false);
-  sizingCmd->add_option("--sizing", sizing.sizingFile, "Local sizes: sources in a JSON file (README)")
+  sizingCmd->add_option("--sizing", sizing.sizingFile, "Local sizes: sources in a JSON file (format: docs/sizing.md)")
       ->option_text("FILE")
       ->group(cli::kSizeGroup);
   sizingCmd->add_flag("!--no-fragment", sizing.fragment, "Do not make touching solids conformal")->group(kModel);
