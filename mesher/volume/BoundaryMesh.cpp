@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <set>
+#include <tuple>
 
 #include <Eigen/Geometry>
 
@@ -173,12 +174,14 @@ std::vector<std::string> checkBoundaryMesh(const BoundaryMesh& b, const SurfaceM
     problems.push_back(solid + ": no boundary triangles (its faces have no surface mesh)");
     return problems;
   }
-  // Directed edge counts per undirected edge (lo, hi): (lo->hi uses, hi->lo uses).
-  struct Count {
-    int forward = 0, backward = 0;
-    std::set<int> faces;
+  // Every directed use of an undirected edge (lo, hi), sorted by edge: forward when lo->hi.
+  struct Use {
+    int lo, hi, face;
+    bool forward;
+    bool operator<(const Use& o) const { return std::tie(lo, hi, face, forward) < std::tie(o.lo, o.hi, o.face, o.forward); }
   };
-  std::map<std::pair<int, int>, Count> edges;
+  std::vector<Use> uses;
+  uses.reserve(3 * b.triangles.size());
   const int n = static_cast<int>(mesh.nodes.size());
   std::set<int> badIndexFaces;
   for (std::size_t t = 0; t < b.triangles.size(); ++t) {
@@ -189,28 +192,27 @@ std::vector<std::string> checkBoundaryMesh(const BoundaryMesh& b, const SurfaceM
     }
     for (int k = 0; k < 3; ++k) {
       const int p = tri[k], q = tri[(k + 1) % 3];
-      Count& c = edges[{std::min(p, q), std::max(p, q)}];
-      (p < q ? c.forward : c.backward) += 1;
-      c.faces.insert(b.triangleFace[t]);
+      uses.push_back({std::min(p, q), std::max(p, q), b.triangleFace[t], p < q});
     }
   }
+  std::sort(uses.begin(), uses.end());
   if (!badIndexFaces.empty())
     problems.push_back(solid + ": triangles with node indices out of range on faces " + faceList(badIndexFaces));
   std::set<int> openFaces, misFaces;
   long long open = 0, mis = 0;
-  for (const auto& [e, c] : edges) {
-    if (c.forward == 0 || c.backward == 0) {
-      if (c.forward + c.backward == 1) {
-        ++open;
-        openFaces.insert(c.faces.begin(), c.faces.end());
-      } else {
-        ++mis;
-        misFaces.insert(c.faces.begin(), c.faces.end());
-      }
-    } else if (c.forward != c.backward) {
-      ++open;
-      openFaces.insert(c.faces.begin(), c.faces.end());
+  for (std::size_t i = 0, j = 0; i < uses.size(); i = j) {
+    int forward = 0, backward = 0;
+    for (j = i; j < uses.size() && uses[j].lo == uses[i].lo && uses[j].hi == uses[i].hi; ++j)
+      (uses[j].forward ? forward : backward) += 1;
+    std::set<int>* faces = nullptr;
+    if (forward == 0 || backward == 0) {
+      if (forward + backward == 1) ++open, faces = &openFaces;
+      else ++mis, faces = &misFaces;
+    } else if (forward != backward) {
+      ++open, faces = &openFaces;
     }
+    if (faces)
+      for (std::size_t k = i; k < j; ++k) faces->insert(uses[k].face);
   }
   if (open)
     problems.push_back(solid + ": boundary mesh not closed: " + std::to_string(open) +

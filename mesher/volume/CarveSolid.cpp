@@ -1,7 +1,6 @@
 #include "mesher/volume/CarveSolid.h"
 
 #include <algorithm>
-#include <map>
 
 #include "mesher/delaunay3d/RemoveTets.h"
 #include "mesher/predicates/Predicates.h"
@@ -18,8 +17,8 @@ std::vector<std::string> carveSolid(SolidTetMesh& s, const SolidBoundary& bounda
   const std::string solid = "solid " + std::to_string(s.solid + 1);
   std::vector<std::string> problems;
   std::vector<TetId> star;
-  using Key = std::array<std::uint32_t, 3>;
-  std::map<Key, int> triangleOf;  // sorted kernel triple -> boundary triangle
+  // (tet, face) -> boundary triangle, on both tets of the face.
+  std::vector<int> faceTriangle(4 * static_cast<std::size_t>(m.tetSlots()), -1);
   for (std::size_t t = 0; t < boundary.triangles.size(); ++t) {
     const auto& tri = boundary.triangles[t];
     const volume::FaceHandle h = volume::findFace(m, tri[0], tri[1], tri[2], star);
@@ -29,9 +28,10 @@ std::vector<std::string> carveSolid(SolidTetMesh& s, const SolidBoundary& bounda
       continue;
     }
     if (!m.isConstrained(h.tet, h.face)) m.setConstrained(h.tet, h.face, true);
-    Key k = {tri[0].index, tri[1].index, tri[2].index};
-    std::sort(k.begin(), k.end());
-    triangleOf[k] = static_cast<int>(t);
+    faceTriangle[4 * static_cast<std::size_t>(h.tet.index) + h.face] = static_cast<int>(t);
+    if (const TetId n = m.neighbour(h.tet, h.face); n.valid())
+      for (int j = 0; j < 4; ++j)
+        if (m.neighbour(n, j) == h.tet) faceTriangle[4 * static_cast<std::size_t>(n.index) + j] = static_cast<int>(t);
   }
   if (!problems.empty()) return problems;
   // Components across non-constrained faces (and embedded ones).
@@ -57,26 +57,23 @@ std::vector<std::string> carveSolid(SolidTetMesh& s, const SolidBoundary& bounda
           outside = true;
           continue;
         }
-        auto it = triangleOf.end();
+        int triangle = -1;
         if (m.isConstrained(t, i)) {
-          const auto& fv = del3d::kFaceVertex[i];
-          Key key = {m.vertex(t, fv[0]).index, m.vertex(t, fv[1]).index, m.vertex(t, fv[2]).index};
-          std::sort(key.begin(), key.end());
-          it = triangleOf.find(key);
-          if (it == triangleOf.end()) {
+          triangle = faceTriangle[4 * static_cast<std::size_t>(t.index) + i];
+          if (triangle < 0) {
             ++strayConstraints;
             continue;
           }
         }
         // Across a free face, and across an embedded one (the solid on both sides).
-        if (!m.isConstrained(t, i) || boundary.isEmbedded(static_cast<std::size_t>(it->second))) {
+        if (triangle < 0 || boundary.isEmbedded(static_cast<std::size_t>(triangle))) {
           if (comp[n.index] < 0) {
             comp[n.index] = c;
             queue.push_back(n);
           }
           continue;
         }
-        const auto& tri = boundary.triangles[it->second];
+        const auto& tri = boundary.triangles[static_cast<std::size_t>(triangle)];
         const double o = predicates::orient3d(m.coords(tri[0]), m.coords(tri[1]), m.coords(tri[2]), m.coords(m.vertex(t, i)));
         const int v = o < 0 ? 1 : 0;
         if (verdict[c] < 0) verdict[c] = v;
