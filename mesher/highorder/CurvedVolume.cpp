@@ -7,7 +7,7 @@
 #include <limits>
 #include <unordered_map>
 
-#include "mesher/highorder/MidEdgeGeometry.h"
+#include "mesher/surface/MidEdgeGeometry.h"
 
 namespace aniso {
 namespace {

@@ -2,7 +2,7 @@
 // curvedSolidVolumes — the volume each solid's tetrahedra would enclose with their boundary
 // triangles bent onto the CAD: the straight volume plus, for every boundary triangle, the
 // volume between it and the quadratic triangle through its corners and its mid-edge nodes
-// placed as --order 2 places them (MidEdgeGeometry.h). That bulge is A/3 · Σ d_k over the
+// placed as --order 2 places them (surface/MidEdgeGeometry.h). That bulge is A/3 · Σ d_k over the
 // three edges, d_k the mid node's offset from the chord midpoint along the triangle's
 // outward unit normal (the edge-midpoint rule, exact for a quadratic). It removes the
 // chordal deficit of a coarse mesh of curved faces (12 segments per circle: −4.5 % of a

@@ -9,7 +9,7 @@
 #include <utility>
 
 #include "mesher/core/Error.h"
-#include "mesher/highorder/MidEdgeGeometry.h"
+#include "mesher/surface/MidEdgeGeometry.h"
 #include "mesher/highorder/QuadraticJacobian.h"
 
 namespace aniso {

@@ -2,7 +2,7 @@
 // Quadratic elements (--order 2): one mid-edge node per mesh edge, shared by every element
 // using the edge, placed on the geometry the edge lies on, then checked for validity.
 //
-// Placement (MidEdgeGeometry.h):
+// Placement (surface/MidEdgeGeometry.h):
 //   - an edge along a model edge (its two nodes consecutive on that edge's discretization):
 //     on the 3D curve, at the projection of the chord midpoint started from the parameter
 //     midpoint of the two nodes' t (near the arc-length midpoint; a closed edge's vertex

@@ -10,7 +10,7 @@
 
 #include "mesher/core/Problem.h"
 #include "mesher/highorder/Order2.h"
-#include "mesher/surface/SurfaceMesher.h"
+#include "mesher/pipeline/SurfaceMesher.h"
 #include "mesher/volume/SurfaceGeometry.h"
 #include "mesher/volume/SurfaceRepair.h"
 #include "mesher/volume/VolumeMesher.h"

@@ -7,7 +7,7 @@
 
 #include "mesher/core/Problem.h"
 #include "mesher/model/Model.h"
-#include "mesher/surface/SurfaceMesher.h"
+#include "mesher/pipeline/SurfaceMesher.h"
 #include "mesher/volume/VolumeMesher.h"
 
 namespace aniso {

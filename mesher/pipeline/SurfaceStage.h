@@ -3,7 +3,7 @@
 // (SurfaceMesher.h), then the repair stage (mesher/volume/SurfaceRepair.h) within
 // kSurfaceSliverTolerance times h_min. Every surface the pipeline makes — the first, a
 // proximity round's, the coarse-solid retry's — goes through it.
-#include "mesher/surface/SurfaceMesher.h"
+#include "mesher/pipeline/SurfaceMesher.h"
 #include "mesher/volume/SurfaceRepair.h"
 
 namespace aniso {

@@ -19,7 +19,7 @@
 #include "mesher/model/Model.h"
 #include "mesher/pipeline/MeshResult.h"
 #include "mesher/sizing/UserSizing.h"
-#include "mesher/surface/SurfaceMesher.h"
+#include "mesher/pipeline/SurfaceMesher.h"
 
 namespace aniso {
 

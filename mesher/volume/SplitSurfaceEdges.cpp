@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "mesher/core/Error.h"
-#include "mesher/highorder/MidEdgeGeometry.h"
+#include "mesher/surface/MidEdgeGeometry.h"
 
 namespace aniso {
 namespace {

@@ -11,7 +11,7 @@
 #include <Eigen/Geometry>
 
 #include "mesher/core/Error.h"
-#include "mesher/highorder/MidEdgeGeometry.h"
+#include "mesher/surface/MidEdgeGeometry.h"
 #include "mesher/volume/FoldRegion.h"
 
 namespace aniso {

@@ -8,7 +8,7 @@
 
 #include "mesher/core/Cancel.h"
 #include "mesher/core/ParallelFor.h"
-#include "mesher/surface/SurfaceMesher.h"
+#include "mesher/pipeline/SurfaceMesher.h"
 #include "mesher/volume/VolumeMesher.h"
 #include "contour_test_models.h"
 #include "volume_test_models.h"

@@ -13,7 +13,7 @@
 #include "mesher/geometry/ExpressionSurface.h"
 #include "mesher/highorder/Order2.h"
 #include "mesher/highorder/QuadraticJacobian.h"
-#include "mesher/surface/SurfaceMesher.h"
+#include "mesher/pipeline/SurfaceMesher.h"
 #include "tests/unit/mesh_model_fixture.h"
 
 using namespace aniso;

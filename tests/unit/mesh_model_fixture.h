@@ -2,7 +2,7 @@
 // The surface mesh of a test model at a given h_max (one thread), checked to be made.
 #include <gtest/gtest.h>
 
-#include "mesher/surface/SurfaceMesher.h"
+#include "mesher/pipeline/SurfaceMesher.h"
 
 namespace aniso::test {
 

@@ -1,4 +1,4 @@
-#include "mesher/surface/SurfaceMesher.h"
+#include "mesher/pipeline/SurfaceMesher.h"
 
 #include <algorithm>
 #include <atomic>

@@ -1,7 +1,7 @@
 #pragma once
 // MidEdgeGeometry — where the mid node of a surface mesh edge goes: on the model edge's
 // curve when the edge runs along a model edge, else on the face's surface (the rules are in
-// Order2.h). Reads the model and the mesh's nodes and NodeOn; the mesh may grow between
+// highorder/Order2.h). Reads the model and the mesh's nodes and NodeOn; the mesh may grow between
 // calls (nodes are read through the reference).
 #include <cstdint>
 #include <unordered_map>

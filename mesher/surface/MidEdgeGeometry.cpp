@@ -1,5 +1,5 @@
 // MidEdgeGeometry — placement of mid-edge nodes on model curves and surfaces (Order2.h).
-#include "mesher/highorder/MidEdgeGeometry.h"
+#include "mesher/surface/MidEdgeGeometry.h"
 
 #include <algorithm>
 #include <cmath>

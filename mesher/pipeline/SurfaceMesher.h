@@ -1,11 +1,11 @@
 #pragma once
 // SurfaceMesher — the whole surface meshing process of a model (thesis 3.5.1, ch. 4):
-//   1 the initial control space of every face (alg. 3.2, FaceControlSpace.h), in parallel
+//   1 the initial control space of every face (alg. 3.2, sizing/FaceControlSpace.h), in parallel
 //   2 the discretization of every edge, shared by its faces (alg. 4.1)
-//   2b the element budget (thesis 6.5, SurfaceBudget.h): the count the control spaces ask
+//   2b the element budget (thesis 6.5, sizing/SurfaceBudget.h): the count the control spaces ask
 //     for, against options.maxElements; over it the sizes are floored (and step 2 redone),
 //     or, when even h_max cannot fit, InputError with the prediction
-//   3 the anisotropic Delaunay mesh of every face (FaceMesher.h), in parallel
+//   3 the anisotropic Delaunay mesh of every face (surface/FaceMesher.h), in parallel
 //   4 the assembly into one conforming SurfaceMesh, faces in id order
 // Faces are independent once their edges are discretized, so steps 1 and 3 run on
 // `threads` threads; every result is stored by face index and assembled in order, so the
@@ -37,7 +37,7 @@ struct SurfaceMesherInput {
 };
 
 /// Quality in metric space (thesis 2.5) of one face or of the whole mesh: η_M, μ_M and
-/// E_K as FaceQuality (improve/FaceQuality.h) measures them.
+/// E_K as FaceQuality (surface/improve/FaceQuality.h) measures them.
 struct MetricQuality {
   QualityStats eta, mu, ek;
   void merge(const MetricQuality& o) {
