@@ -78,15 +78,10 @@ template <class T, class Write>
 void writeFaceGroups(std::ostream& o, const OutputMesh& m, const std::vector<std::vector<long long>>& faceNodes,
                      const std::vector<std::vector<T>>& perFace, const Write& write) {
   for (const FaceGroup& g : groupNames(m.model).faces) {
-    std::vector<long long> nodes;
-    std::vector<T> items;
-    for (const int f : g.faces) {
-      nodes.insert(nodes.end(), faceNodes[f].begin(), faceNodes[f].end());
-      items.insert(items.end(), perFace[f].begin(), perFace[f].end());
-    }
+    const std::vector<long long> nodes = groupIds(g, faceNodes);
     if (nodes.empty()) continue;
-    std::sort(nodes.begin(), nodes.end());
-    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    std::vector<T> items;
+    for (const int f : g.faces) items.insert(items.end(), perFace[f].begin(), perFace[f].end());
     o << "*NSET, NSET=" << g.name << '\n';
     writeIdList(o, nodes);
     if (!items.empty()) write(g.name, items);

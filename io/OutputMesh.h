@@ -4,6 +4,7 @@
 // linear or quadratic. Element nodes come in our canonical order: the corners, then the
 // mid-edge nodes in the data contracts' edge order (SurfaceMesh::triangleMid / quadMid,
 // VolumeMesh::kTetEdges); io/ElementOrder.h permutes them to each format's order.
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -69,6 +70,17 @@ struct GroupNames {
   std::vector<FaceGroup> faces;
 };
 GroupNames groupNames(const Model& model);
+
+/// The ids of a face group: the concatenation of perFace[f] over group.faces, sorted and
+/// without repeats (node and element ids of a named face group in the INP and UNV writers).
+template <class T>
+std::vector<T> groupIds(const FaceGroup& group, const std::vector<std::vector<T>>& perFace) {
+  std::vector<T> ids;
+  for (const int f : group.faces) ids.insert(ids.end(), perFace[f].begin(), perFace[f].end());
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  return ids;
+}
 
 /// Mean ratio of a triangle in 3D (1 equilateral, 0 degenerate), of a tetrahedron
 /// (negative when inverted), scaled Jacobian of a quad (min over the corners of the

@@ -124,16 +124,8 @@ void writeUnv(const OutputMesh& m, const std::string& path) {
   for (size_t s = 0; s < solidElements.size(); ++s)
     if (!solidElements[s].empty()) writeGroup(o, group++, names.solids[s], {}, solidElements[s]);
   for (const FaceGroup& g : names.faces) {  // after the others: a model without them is unchanged
-    std::vector<long long> gn, ge;
-    for (const int f : g.faces) {
-      gn.insert(gn.end(), faceNodes[f].begin(), faceNodes[f].end());
-      ge.insert(ge.end(), faceElements[f].begin(), faceElements[f].end());
-    }
-    if (ge.empty()) continue;
-    std::sort(gn.begin(), gn.end());
-    gn.erase(std::unique(gn.begin(), gn.end()), gn.end());
-    std::sort(ge.begin(), ge.end());
-    writeGroup(o, group++, g.name, gn, ge);
+    const std::vector<long long> ge = groupIds(g, faceElements);
+    if (!ge.empty()) writeGroup(o, group++, g.name, groupIds(g, faceNodes), ge);
   }
   o << "    -1\n";
   file.commit();

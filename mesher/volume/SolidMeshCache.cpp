@@ -30,15 +30,8 @@ class Hasher {
 
 /// The faces of the solid's outer and void shells and its embedded faces, ascending.
 std::vector<int> boundaryFaces(const Model& model, int solid) {
-  const ModelSolid& s = model.solids.at(static_cast<std::size_t>(solid));
-  std::vector<int> faces;
-  auto addShell = [&](int shell) {
-    if (shell < 0) return;
-    for (const FaceUse& u : model.shells.at(static_cast<std::size_t>(shell)).faces) faces.push_back(u.face);
-  };
-  addShell(s.outerShell);
-  for (const int v : s.voidShells) addShell(v);
-  for (const EmbeddedFace& e : s.embedded) faces.push_back(e.face);
+  std::vector<int> faces = model.solidFaces(solid);
+  for (const EmbeddedFace& e : model.solids.at(static_cast<std::size_t>(solid)).embedded) faces.push_back(e.face);
   std::sort(faces.begin(), faces.end());
   faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
   return faces;

@@ -1,4 +1,5 @@
 #include "mesher/volume/VolumeControlSpace.h"
+
 #include "mesher/sizing/PointSizing.h"
 
 #include <Eigen/Geometry>
@@ -17,6 +18,7 @@
 #include "mesher/metric/MetricInterpolation.h"
 #include "mesher/metric/MetricIntersection.h"
 #include "mesher/metric/SimplexMetric.h"
+#include "mesher/volume/BoundaryMesh.h"
 
 namespace aniso {
 namespace {
@@ -175,17 +177,15 @@ std::shared_ptr<ControlSpace3d> buildVolumeControlSpace(const Model& model, cons
   // The solid's triangles in ascending surface order and its nodes in ascending index: the
   // same sums and insertions as a pass over the whole surface, in time and memory
   // proportional to the solid's own boundary (an assembly has many solids).
-  std::vector<int> solidTriangles;
-  if (faceTriangles) {
-    for (std::size_t f = 0; f < faces.size() && f < faceTriangles->size(); ++f)
-      if (faces[f]) solidTriangles.insert(solidTriangles.end(), (*faceTriangles)[f].begin(), (*faceTriangles)[f].end());
-    std::sort(solidTriangles.begin(), solidTriangles.end());
-  } else {
-    for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
-      const int f = surface.triangleFace[t];
-      if (f >= 0 && static_cast<std::size_t>(f) < faces.size() && faces[f]) solidTriangles.push_back(static_cast<int>(t));
-    }
+  std::vector<std::vector<int>> byFace;
+  if (!faceTriangles) {
+    byFace = trianglesByFace(surface, static_cast<int>(model.faces.size()));
+    faceTriangles = &byFace;
   }
+  std::vector<int> solidTriangles;
+  for (std::size_t f = 0; f < faces.size() && f < faceTriangles->size(); ++f)
+    if (faces[f]) solidTriangles.insert(solidTriangles.end(), (*faceTriangles)[f].begin(), (*faceTriangles)[f].end());
+  std::sort(solidTriangles.begin(), solidTriangles.end());
   if (solidTriangles.empty())
     throw MeshingError("solid " + std::to_string(solid + 1) + ": no boundary triangle for the volume control space");
   std::vector<int> nodes;

@@ -144,8 +144,8 @@ double volumeGradation(double gamma, double factor);
 inline constexpr double kVolumeBoxMargin = 0.01;
 
 /// faceTriangles (optional): the surface's triangle indices per model face
-/// (trianglesByFace); given, the solid's triangles are taken from it instead of a pass over
-/// the whole surface. The result does not depend on it.
+/// (trianglesByFace), built here when not given; a caller meshing many solids passes the one
+/// it built. The result does not depend on it.
 std::shared_ptr<ControlSpace3d> buildVolumeControlSpace(const Model& model, const SurfaceMesh& surface, int solid,
                                                         const SizingParameters& sizing, const UserSizing* user,
                                                         const std::vector<std::vector<int>>* faceTriangles = nullptr);

@@ -19,6 +19,8 @@ import subprocess
 import sys
 import tempfile
 
+from clitest import check, failures
+
 import meshio
 import numpy as np
 
@@ -27,15 +29,6 @@ MESHQ = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..
 MODEL = os.path.join(models, "holeplate.step")
 TIMEOUT = 120  # seconds per adapt run; the runs take ~3-10 s
 MAX_MESHES = 4
-failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
-
-
 with tempfile.TemporaryDirectory() as d:
     first = os.path.join(d, "first.msh")
     subprocess.run([cli, "mesh", MODEL, "-o", first, "--order", "2", "--size", "5", "--no-curvature", "-q"],

@@ -14,6 +14,8 @@ import os
 import sys
 import tempfile
 
+from clitest import check, failures
+
 cli, models, src = sys.argv[1], sys.argv[2], sys.argv[3]
 sys.path.insert(0, os.path.join(src, "tools", "bench"))
 import adaptlib  # noqa: E402
@@ -23,15 +25,6 @@ MIN_RATE = 0.8
 UNIFORM_FACTOR = {"tanh": 5, "layer": 5}
 ISO_FACTOR = {"tanh": 2, "layer": 2}
 MU_TOL, ETA_MIN = 0.1, 0.8
-failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
-
-
 with tempfile.TemporaryDirectory() as t:
     case = adaptlib.Case(cli, t, 2, models)
     for field in adaptlib.FIELDS:

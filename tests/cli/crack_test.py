@@ -17,22 +17,17 @@ of the cube (area 25), imprinted on them.
   meshed as the same crack.
 usage: crack_test.py CLI MODELS_DIR SHARED_DIR"""
 import json, os, subprocess, sys, tempfile
+import functools
+
+import clitest
+from clitest import check, failures as fails
 
 import meshio
 import numpy as np
 
 cli, models, shared = sys.argv[1], sys.argv[2], sys.argv[3]
 t = tempfile.mkdtemp()
-fails = []
-
-
-def check(cond, what):
-    print(("ok   " if cond else "FAIL ") + what)
-    if not cond: fails.append(what)
-
-
-def run(*args):
-    return subprocess.run([cli, *args], capture_output=True, text=True, timeout=120)
+run = functools.partial(clitest.run, cli)
 
 
 def tets_of(path):

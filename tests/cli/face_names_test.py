@@ -15,20 +15,17 @@ tops z = 10; LEFT's bottom grey without a name; RIGHT's part green):
 - UNV: a group per name holding the elements of its faces;
 - bracket.step (no face names): no group beyond FACE<n> and the part.
 usage: face_names_test.py CLI MODELS_DIR"""
-import json, os, re, subprocess, sys, tempfile
+import json, os, re, sys, tempfile
+
+import clitest
+from clitest import check, failures as fails
 
 cli, models = sys.argv[1], sys.argv[2]
 named = os.path.join(models, "named_faces.step")
-fails = []
-
-
-def check(cond, what):
-    print(("ok   " if cond else "FAIL ") + what)
-    if not cond: fails.append(what)
 
 
 def run(*args):
-    r = subprocess.run([cli, *args], capture_output=True, text=True, timeout=300)
+    r = clitest.run(cli, *args, timeout=300)
     assert r.returncode == 0, r.stderr
     return r.stdout
 

@@ -10,7 +10,11 @@ the origin and BOX_B at (5, 0, 0), overlapping in a 5 x 10 x 10 region (volume 5
 - --overlaps error: exit 2 naming both parts and the volume.
 - --overlaps keep: exit 0 and the same mesh as --no-fragment (the behaviour before merge).
 usage: overlaps_test.py CLI MODELS_DIR SHARED_DIR"""
-import json, os, subprocess, sys, tempfile
+import json, os, sys, tempfile
+import functools
+
+import clitest
+from clitest import check, failures as fails
 
 import meshio
 import numpy as np
@@ -21,16 +25,7 @@ import meshq  # the referee
 
 model = os.path.join(models, "overlap2.step")
 t = tempfile.mkdtemp()
-fails = []
-
-
-def check(cond, what):
-    print(("ok   " if cond else "FAIL ") + what)
-    if not cond: fails.append(what)
-
-
-def run(*args):
-    return subprocess.run([cli, *args], capture_output=True, text=True, timeout=120)
+run = functools.partial(clitest.run, cli)
 
 
 def exposed_area_and_regions(path):
