@@ -47,6 +47,8 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
                      std::optional<FirstSurface>& first, MeshResult& r) {
   ProximityOutcome& px = r.proximity;
   const double hmin = in.options.sizing.hminFor(in.model->diagonal());
+  // one budget for all rounds, from the first surface: rounds must not compound
+  const double budget = kMaxProximityGrowth * static_cast<double>(r.surface.mesh.triangles.size());
   for (int round = 1; round <= kMaxProximityRounds; ++round) {
     const std::string name = "round " + std::to_string(round);
     vin.surface = &r.surface.mesh;
@@ -54,17 +56,21 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
     const auto tr = Clock::now();
     r.volume = {};  // the previous round's tetrahedra are not needed while meshing again (peak memory)
     r.volume = meshVolumes(vin);
-    if (r.volume.thin.empty()) {
+    const std::vector<SizingSource> failed = failedSolidSources(*in.model, r.surface.mesh, r.volume.solids);
+    if (r.volume.thin.empty() && failed.empty()) {
       decide(r, "proximity", name + ": not needed", "no solid thinner than its boundary triangles");
       return true;
     }
     const double triangles = static_cast<double>(r.surface.mesh.triangles.size());
-    const double budget = kMaxProximityGrowth * triangles;
     std::vector<std::pair<int, double>> faceSizes;
     double roundFactor = 1;  // this round's budget scaling of the sizes
-    std::vector<SizingSource> sources = thinSources(r.volume.thin, hmin, &faceSizes);
+    std::vector<SizingSource> sources = thinSources(r.volume.thin, hmin, &faceSizes, in.model);
+    if (!failed.empty())
+      decide(r, "proximity", name + ": failed solids refined", std::to_string(failed.size()) + " solids, at " +
+                                                                  num(kFailedRefine) + " of their mean edge");
+    sources.insert(sources.end(), failed.begin(), failed.end());
     px.predictedTriangles = predictedTriangles(r.surface.mesh, sources);
-    if (px.predictedTriangles > budget && static_cast<double>(r.volume.thin.size()) >= kThinWholeShare * triangles) {
+    if (px.predictedTriangles > budget && kMinProximityGrowth * triangles < budget) {  // room left to scale into
       sources = sourcesWithinBudget(r.surface.mesh, sources, budget, &px.budgetFactor);
       roundFactor = px.budgetFactor;
       px.predictedTriangles = predictedTriangles(r.surface.mesh, sources);

@@ -90,8 +90,9 @@ void insertContourCurvature(CSQuadtree2d& cs, const Model& model, int face, cons
 /// continuous source. A local source usually covers a small part of a face, which the
 /// continuous adaptation (it compares at a few points per control element) would miss: the
 /// face is sampled on a (u, v) grid fine enough for the source's size and every sample inside
-/// the source becomes a point source, which refines the control space around it.
-void insertUserSizing(CSQuadtree2d& cs, const UserSizing& user, const ParametricSurface& surface,
+/// the source becomes a point source, which refines the control space around it. Sources of
+/// other faces (SizingSource::faces) are skipped.
+void insertUserSizing(CSQuadtree2d& cs, const UserSizing& user, int face, const ParametricSurface& surface,
                       const Box2& bounds, double gMin, double hMax) {
   auto restricted = [&](const Vec2& uv, const Metric3d& m3) {
     const SurfaceD1 d = surface.d1(uv);
@@ -111,6 +112,7 @@ void insertUserSizing(CSQuadtree2d& cs, const UserSizing& user, const Parametric
   near.lo.array() -= 0.25 * extent;
   near.hi.array() += 0.25 * extent;
   for (const SizingSource& src : user.sources) {
+    if (!src.sizesFace(face)) continue;
     Box3 region;
     const double r = src.kind == SizingSource::Kind::Box ? 0.0 : src.radius;
     region.add(src.a);
@@ -167,7 +169,7 @@ std::unique_ptr<CSQuadtree2d> buildFaceControlSpace(const FaceSizingInput& in) {
     // 4: the user's control spaces.
     if (in.analytic) cs->superpose(*in.analytic);
     if (in.user && !in.user->empty())
-      insertUserSizing(*cs, in.user->bounded(sizing.hMin, sizing.hMax), *surface, bounds, gMin, sizing.hMax);
+      insertUserSizing(*cs, in.user->bounded(sizing.hMin, sizing.hMax), face, *surface, bounds, gMin, sizing.hMax);
     // 6: contour curvature.
     if (in.params.curvature) insertContourCurvature(*cs, model, face, *surface, gMin, sizing);
     // 7, 8.

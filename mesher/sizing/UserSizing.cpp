@@ -17,10 +17,12 @@ bool SizingSource::contains(const Vec3& x) const {
   return false;
 }
 
+bool SizingSource::sizesFace(int f) const { return faces.empty() || std::binary_search(faces.begin(), faces.end(), f); }
+
 std::optional<Metric3d> UserSizing::metricAt(const Vec3& x) const {
   std::optional<Metric3d> m = global;
   for (const SizingSource& s : sources) {
-    if (!s.contains(x)) continue;
+    if (!s.faces.empty() || !s.contains(x)) continue;
     m = m ? intersect(*m, s.metric) : s.metric;
   }
   return m;

@@ -17,6 +17,14 @@ struct SizingSource {
   Vec3 b = Vec3::Zero();  ///< segment end, box max
   double radius = 0;      ///< ball / capsule radius (point, segment)
   Metric3d metric;
+  /// The model faces (0-based, sorted) the source sizes; empty: every face and solid
+  /// meeting its region. A source with faces leaves the other faces in its region, and the
+  /// volume, alone (the proximity loop's: the faces of the thin part, not of every part in
+  /// its box).
+  std::vector<int> faces;
+
+  /// Does the source size model face f?
+  bool sizesFace(int f) const;
 
   /// Is x inside the region of the source (ball, capsule, box)?
   bool contains(const Vec3& x) const;
@@ -37,7 +45,7 @@ struct UserSizing {
 
   bool empty() const { return !global && sources.empty() && points.empty(); }
   /// The intersection of the global metric and of every source containing x (points are
-  /// not regions: left out); nothing when none applies at x.
+  /// not regions, face sources not everywhere: both left out); nothing when none applies.
   std::optional<Metric3d> metricAt(const Vec3& x) const;
   /// The same sizing with every length of every metric bounded to [hmin, hmax] (directions
   /// kept): h_min and h_max are hard bounds every source respects. 0 < hmin ≤ hmax.

@@ -1,6 +1,54 @@
 #include "mesher/volume/CoarseSolids.h"
 
+#include <algorithm>
+
 namespace aniso {
+namespace {
+
+/// Solid s's boundary as meshed: its faces (sorted, embedded ones included), the box of
+/// its triangles and their mean edge length.
+struct MeshedBoundary {
+  std::vector<int> faces;
+  Box3 box;
+  double meanEdge = 0;
+  std::size_t triangles = 0;
+};
+
+MeshedBoundary boundaryOf(const Model& model, const SurfaceMesh& surface, int s) {
+  MeshedBoundary b;
+  b.faces = model.solidFaces(s);
+  for (const EmbeddedFace& e : model.solids[static_cast<std::size_t>(s)].embedded) b.faces.push_back(e.face);
+  std::sort(b.faces.begin(), b.faces.end());
+  b.faces.erase(std::unique(b.faces.begin(), b.faces.end()), b.faces.end());
+  std::vector<std::uint8_t> ofSolid(model.faces.size(), 0);
+  for (const int f : b.faces)
+    if (f >= 0 && f < static_cast<int>(ofSolid.size())) ofSolid[static_cast<std::size_t>(f)] = 1;
+  double length = 0;
+  for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
+    if (!ofSolid[static_cast<std::size_t>(surface.triangleFace[t])]) continue;
+    ++b.triangles;
+    const auto& tri = surface.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      b.box.add(surface.nodes[tri[k]]);
+      length += (surface.nodes[tri[(k + 1) % 3]] - surface.nodes[tri[k]]).norm();
+    }
+  }
+  if (b.triangles > 0) b.meanEdge = length / static_cast<double>(3 * b.triangles);
+  return b;
+}
+
+/// A box over the boundary grown by its mean edge, sizing the solid's faces only.
+SizingSource sourceOver(MeshedBoundary&& b, double size) {
+  SizingSource src;
+  src.kind = SizingSource::Kind::Box;
+  src.a = b.box.lo - Vec3::Constant(b.meanEdge);
+  src.b = b.box.hi + Vec3::Constant(b.meanEdge);
+  src.metric = Metric3d::isotropic(size);
+  src.faces = std::move(b.faces);
+  return src;
+}
+
+}  // namespace
 
 std::vector<SizingSource> coarseSolidSources(const Model& model, const SurfaceMesh& surface,
                                              const std::vector<SolidOutcome>& solids) {
@@ -10,34 +58,24 @@ std::vector<SizingSource> coarseSolidSources(const Model& model, const SurfaceMe
     if (o.status != SolidOutcome::Status::Ok || o.quality.meanRatio.count() == 0 ||
         !(o.quality.meanRatio.mean() < kCoarseMeanRatio))
       continue;
-    std::vector<std::uint8_t> ofSolid(model.faces.size(), 0);
-    std::vector<int> shells{model.solids[s].outerShell};
-    shells.insert(shells.end(), model.solids[s].voidShells.begin(), model.solids[s].voidShells.end());
-    for (const int sh : shells)
-      if (sh >= 0 && sh < static_cast<int>(model.shells.size()))
-        for (const FaceUse& u : model.shells[sh].faces)
-          if (u.face >= 0 && u.face < static_cast<int>(ofSolid.size())) ofSolid[u.face] = 1;
-    Box3 box;
-    double length = 0;
-    std::size_t faces = 0, triangles = 0;
-    for (const std::uint8_t f : ofSolid) faces += f;
-    for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
-      if (!ofSolid[surface.triangleFace[t]]) continue;
-      ++triangles;
-      const auto& tri = surface.triangles[t];
-      for (int k = 0; k < 3; ++k) {
-        box.add(surface.nodes[tri[k]]);
-        length += (surface.nodes[tri[(k + 1) % 3]] - surface.nodes[tri[k]]).norm();
-      }
-    }
-    if (triangles == 0 || static_cast<double>(triangles) > kCoarseTrianglesPerFace * static_cast<double>(faces)) continue;
-    length /= static_cast<double>(3 * triangles);
-    SizingSource src;
-    src.kind = SizingSource::Kind::Box;
-    src.a = box.lo - Vec3::Constant(length);
-    src.b = box.hi + Vec3::Constant(length);
-    src.metric = Metric3d::isotropic(kCoarseRefine * length);
-    out.push_back(src);
+    MeshedBoundary b = boundaryOf(model, surface, static_cast<int>(s));
+    if (b.triangles == 0 || static_cast<double>(b.triangles) > kCoarseTrianglesPerFace * static_cast<double>(b.faces.size()))
+      continue;
+    const double size = kCoarseRefine * b.meanEdge;
+    out.push_back(sourceOver(std::move(b), size));
+  }
+  return out;
+}
+
+std::vector<SizingSource> failedSolidSources(const Model& model, const SurfaceMesh& surface,
+                                             const std::vector<SolidOutcome>& solids) {
+  std::vector<SizingSource> out;
+  for (std::size_t s = 0; s < solids.size() && s < model.solids.size(); ++s) {
+    if (solids[s].status != SolidOutcome::Status::Failed || solids[s].leftOutBySurface()) continue;
+    MeshedBoundary b = boundaryOf(model, surface, static_cast<int>(s));
+    if (b.triangles == 0) continue;
+    const double size = kFailedRefine * b.meanEdge;
+    out.push_back(sourceOver(std::move(b), size));
   }
   return out;
 }

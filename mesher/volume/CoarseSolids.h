@@ -11,8 +11,14 @@
 // per face on average (a solid meshed finely but still poor, like the thin skins of
 // simple_plane at the defaults, 9 k tets at 0.77, is the proximity loop's: refined here
 // its boxes doubled the whole mesh) —, a box source over its boundary (grown by the mean edge length L of its
-// boundary triangles) asks for the isotropic size kCoarseRefine · L; the caller meshes the
+// boundary triangles) asks for the isotropic size kCoarseRefine · L on the solid's own
+// faces (SizingSource::faces: its neighbours in the box keep theirs); the caller meshes the
 // surface and the volumes again once and keeps the result with the better mean ratio.
+//
+// failedSolidSources — a solid the volume mesher failed on (boundary not recovered: a
+// surface too coarse where the part is thin or curved, its chords crossing, e.g. a helical
+// wire at the defaults) gets the same box over its own faces at kFailedRefine · L; the
+// proximity rounds (pipeline/VolumeStages.h) mesh it again with them, within their budget.
 #include <vector>
 
 #include "mesher/model/Model.h"
@@ -29,8 +35,16 @@ inline constexpr double kCoarseTrianglesPerFace = 16;
 /// Its surface is asked for this times its mean boundary edge length.
 inline constexpr double kCoarseRefine = 0.6;
 
+/// A failed solid's surface is asked for this times its mean boundary edge length.
+inline constexpr double kFailedRefine = 0.5;
+
 /// One box source per coarse solid of `solids` (indexed as model.solids); empty when none.
 std::vector<SizingSource> coarseSolidSources(const Model& model, const SurfaceMesh& surface,
+                                             const std::vector<SolidOutcome>& solids);
+
+/// One box source per solid of `solids` whose volume mesh failed (not left out for an
+/// unmeshed face); empty when none.
+std::vector<SizingSource> failedSolidSources(const Model& model, const SurfaceMesh& surface,
                                              const std::vector<SolidOutcome>& solids);
 
 }  // namespace aniso

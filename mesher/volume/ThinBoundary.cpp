@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <map>
+#include <set>
 
 namespace aniso {
 
@@ -70,10 +71,11 @@ std::vector<ThinSpot> findThinBoundary(const SolidTetMesh& s, const std::vector<
 }
 
 std::vector<SizingSource> thinSources(const std::vector<ThinSpot>& spots, double hmin,
-                                      std::vector<std::pair<int, double>>* faces) {
+                                      std::vector<std::pair<int, double>>* faces, const Model* model) {
   struct Acc {
     Box3 box;
     double grow = 0, size = 1e300;
+    std::set<int> solids;
   };
   std::map<int, Acc> byFace;
   for (const ThinSpot& s : spots) {
@@ -83,6 +85,7 @@ std::vector<SizingSource> thinSources(const std::vector<ThinSpot>& spots, double
     a.box.add(s.centroid);
     a.grow = std::max(a.grow, s.size);
     a.size = std::min(a.size, target);
+    if (s.solid >= 0) a.solids.insert(s.solid);
   }
   std::vector<SizingSource> out;
   for (const auto& [face, a] : byFace) {
@@ -91,6 +94,15 @@ std::vector<SizingSource> thinSources(const std::vector<ThinSpot>& spots, double
     src.a = a.box.lo - Vec3::Constant(a.grow);
     src.b = a.box.hi + Vec3::Constant(a.grow);
     src.metric = Metric3d::isotropic(a.size);
+    if (model && !a.solids.empty()) {
+      for (const int s : a.solids) {
+        const std::vector<int> own = model->solidFaces(s);
+        src.faces.insert(src.faces.end(), own.begin(), own.end());
+        for (const EmbeddedFace& e : model->solids.at(static_cast<std::size_t>(s)).embedded) src.faces.push_back(e.face);
+      }
+      std::sort(src.faces.begin(), src.faces.end());
+      src.faces.erase(std::unique(src.faces.begin(), src.faces.end()), src.faces.end());
+    }
     out.push_back(src);
     if (faces) faces->push_back({face, a.size});
   }
@@ -99,12 +111,14 @@ std::vector<SizingSource> thinSources(const std::vector<ThinSpot>& spots, double
 
 double predictedTriangles(const SurfaceMesh& surface, const std::vector<SizingSource>& sources) {
   double n = 0;
-  for (const auto& t : surface.triangles) {
+  for (std::size_t i = 0; i < surface.triangles.size(); ++i) {
+    const auto& t = surface.triangles[i];
+    const int face = i < surface.triangleFace.size() ? surface.triangleFace[i] : -1;
     const Vec3 p[3] = {surface.nodes[t[0]], surface.nodes[t[1]], surface.nodes[t[2]]};
     const Vec3 c = (p[0] + p[1] + p[2]) / 3;
     double target = 1e300;
     for (const SizingSource& src : sources)
-      if (src.contains(c)) target = std::min(target, src.metric.axes().lengths.minCoeff());
+      if (src.sizesFace(face) && src.contains(c)) target = std::min(target, src.metric.axes().lengths.minCoeff());
     const double size = ((p[1] - p[0]).norm() + (p[2] - p[1]).norm() + (p[0] - p[2]).norm()) / 3;
     n += std::max(1.0, (size / target) * (size / target));
   }

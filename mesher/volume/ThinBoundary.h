@@ -11,13 +11,16 @@
 // edge). Folds and corners of the surface (the apex on a neighbouring patch) have normals
 // that do not oppose, so they are not reported.
 //
-// thinSources() turns the spots into sizing sources for the surface (and volume) control
-// spaces: per CAD face, a box around its thin triangles (grown by the largest of them),
-// with the isotropic size of the smallest thickness found there (not below hmin), so the
+// thinSources() turns the spots into sizing sources for the surface control spaces: per
+// CAD face, a box around its thin triangles (grown by the largest of them) that sizes that
+// face only (SizingSource::face: the other parts in the box, components on a thin board,
+// keep their sizes), with the isotropic size of the smallest thickness found there (not
+// below hmin), so the
 // surface mesher makes triangles about as large as the part is thick; spots whose
 // triangles hmin would not make smaller (the size at most kThinRatio below them) are left.
 #include <vector>
 
+#include "mesher/model/Model.h"
 #include "mesher/sizing/UserSizing.h"
 #include "mesher/surface/SurfaceMesh.h"
 #include "mesher/volume/SolidTetMesh.h"
@@ -40,6 +43,7 @@ struct ThinSpot {
   Vec3 centroid;       ///< of the triangle
   double size = 0;     ///< its mean edge length
   double thickness = 0;  ///< height of the apex across the solid
+  int solid = -1;        ///< 0-based model solid it was found in (set by the volume mesher)
 };
 
 /// The thin boundary triangles of s (after carving: the hull is the boundary); empty when
@@ -51,11 +55,14 @@ std::vector<ThinSpot> findThinBoundary(const SolidTetMesh& s, const std::vector<
 
 /// One box source per face with thin spots (see above), faces in increasing order. With
 /// `faces`, it receives the (0-based face, size asked) of each source, in the same order.
+/// With `model`, each source sizes only the faces of the solids its spots were found in
+/// (SizingSource::faces, embedded faces included); without, every face in its box.
 std::vector<SizingSource> thinSources(const std::vector<ThinSpot>& spots, double hmin,
-                                      std::vector<std::pair<int, double>>* faces = nullptr);
+                                      std::vector<std::pair<int, double>>* faces = nullptr,
+                                      const Model* model = nullptr);
 
 /// Triangles the surface mesh would have with the sources: each triangle whose centroid
-/// lies in a source counts (mean edge / the smallest size of those sources)² when that is
+/// lies in a source (of its face, for a face's source) counts (mean edge / the smallest size of those sources)² when that is
 /// above 1, every other one 1 (for the caller's budget).
 double predictedTriangles(const SurfaceMesh& surface, const std::vector<SizingSource>& sources);
 

@@ -227,6 +227,7 @@ std::shared_ptr<ControlSpace3d> buildVolumeControlSpace(const Model& model, cons
   // 3: the user's sources meeting the solid.
   if (user)
     for (const SizingSource& src : user->sources) {
+      if (!src.faces.empty()) continue;  // a source of faces sizes those faces only
       const std::unique_ptr<ExtendedSource3d> ext = extendedSource(src);
       if (ext && overlaps(ext->bounds(), box)) cs->insertExtendedSource(*ext, src.metric);
     }

@@ -172,6 +172,7 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
   for (const std::string& s : carved) fail(p, solidRef(solid), s);
   if (!carved.empty() || !validated(p, in, bt.tets, b, "boundary recovery")) return p;
   p.thin = findThinBoundary(bt.tets, b.triangles, b.triangleFace);
+  for (ThinSpot& spot : p.thin) spot.solid = solid;
   if (in.stopWhenThin && !p.thin.empty()) return p;
 
   std::shared_ptr<VolumeMetricSpace> cs;

@@ -51,7 +51,7 @@ BothRuns meshBoth(const std::string& path, int dim, bool thesisTable = false) {
   if (thesisTable) request.options.sizing = SizingParameters{};  // the thesis' table 5.2 sizing
   request.options.dim = dim;
   request.options.maxElements = kBudget;
-  if (dim == 3) request.options.sizing.anisotropy = 1;  // the CLI's volume default (MeshArgs::anisotropyGiven)
+  request.options.sizing.anisotropy = 1;  // the CLI's default (MeshArgs::anisotropyGiven)
   BothRuns run{meshModel(model, request), false};
   EXPECT_TRUE(run.result.meshed());
   if (run.result.volumeRan) io::writeVolumeMesh(model, run.result.volume.mesh, libOut.string());

@@ -23,9 +23,10 @@ struct MeshArgs {
   bool fragment = true;
   cad::OverlapPolicy overlaps = cad::OverlapPolicy::Merge;  ///< --overlaps
   MeshOptions options;
-  /// --anisotropy was given. Without it a volume mesh (dim 3) is isotropic (γ_a = 1): the
-  /// tetrahedra on a stretched boundary triangle are stretched too, and FE solvers want
-  /// tetrahedra well shaped in space; surface meshes keep the thesis' default γ_a = 5.
+  /// --anisotropy was given. Without it the mesh is isotropic (γ_a = 1): FE solvers want
+  /// elements well shaped in space (the tetrahedra on a stretched boundary triangle are
+  /// stretched too; shell elements want triangles near equilateral, Gmsh's default), and
+  /// the surface repair stage is Euclidean. The thesis' default γ_a = 5 on request.
   bool anisotropyGiven = false;
   /// --time-limit S: the run stops (status failed, exit 3, no mesh) after S seconds; 0 = none.
   double timeLimit = 0;

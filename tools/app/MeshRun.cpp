@@ -46,7 +46,7 @@ MeshRun meshFile(MeshArgs& args, io::Report& report) {
                                               : ": nothing to mesh in 3D: the model has no solids (use --dim 2)"));
   if (in.model.faces.empty()) throw InputError(args.file + ": nothing to mesh: the model has no faces");
   report.options["dim"] = dim;
-  if (dim == 3 && !args.anisotropyGiven) {  // see MeshArgs::anisotropyGiven
+  if (!args.anisotropyGiven) {  // see MeshArgs::anisotropyGiven
     args.options.sizing.anisotropy = 1;
     report.options["anisotropy"] = 1.0;
   }

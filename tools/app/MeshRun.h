@@ -20,7 +20,7 @@ struct MeshRun {
 
 /// Checks the options that need no model (checkMeshArguments, the sizing's check), reads
 /// args.options.sizingFile and args.file, resolves into `args` what the user left open:
-/// options.dim (defaultDimension), a volume mesh's anisotropy 1 (MeshArgs::anisotropyGiven)
+/// options.dim (defaultDimension), the anisotropy 1 when not given (MeshArgs::anisotropyGiven)
 /// and the element budget (elementBudget); then meshes. `report` is filled as the run goes
 /// (input, options, model, times, problems; after meshing the counts, quality and sizing),
 /// so a caller catching Cancelled still has what was done; its status and total time are

@@ -53,7 +53,7 @@ SizeOptions::SizeOptions(CLI::App& cmd, SizingParameters& s, bool volumeIsotropi
       ->default_str(number(s.gradation))
       ->group(kShape);
   const std::string anisotropyDefault =
-      volumeIsotropic ? "default 1 for volume meshes, " + number(s.anisotropy) + " for surface meshes"
+      volumeIsotropic ? "default 1; " + number(s.anisotropy) + " gives the thesis' stretched surface meshes"
                       : "default " + number(s.anisotropy);
   cmd.add_option("--anisotropy", s.anisotropy,
                  "Largest stretch of an element (1 = isotropic); " + anisotropyDefault + " (thesis γ_a)")

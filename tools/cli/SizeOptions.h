@@ -19,7 +19,7 @@ inline constexpr const char* kSizeGroup =
 /// --no-curvature into `params`. The object must outlive the parse.
 class SizeOptions {
  public:
-  /// volumeIsotropic: the command makes volume meshes isotropic unless --anisotropy is
+  /// volumeIsotropic: the command makes its meshes isotropic unless --anisotropy is
   /// given (mesh), which the help of --anisotropy says.
   SizeOptions(CLI::App& cmd, SizingParameters& params, bool volumeIsotropic);
   /// Throws InputError on conflicting or invalid options (e.g. --size with --hmax, --hmin
