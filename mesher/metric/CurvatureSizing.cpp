@@ -15,6 +15,7 @@ CurvatureSizing CurvatureSizing::from(const SizingParameters& p, double modelDia
   s.hMax = p.hmaxFor(modelDiagonal);
   s.anisotropy = p.anisotropy;
   s.contourAnisotropy = p.contourAnisotropyEff();
+  s.chordDeviation = p.chordDeviationRel * modelDiagonal;
   s.check();
   return s;
 }
@@ -29,13 +30,15 @@ void CurvatureSizing::check() const {
   if (!(std::isfinite(anisotropy) && anisotropy >= 1)) bad("gamma_a", anisotropy, "must be >= 1");
   if (!(std::isfinite(contourAnisotropy) && contourAnisotropy >= 1 && contourAnisotropy <= anisotropy))
     bad("gamma_ac", contourAnisotropy, "must be in [1, gamma_a]");
+  if (!(std::isfinite(chordDeviation) && chordDeviation >= 0)) bad("chord deviation", chordDeviation, "must be >= 0");
 }
 
 double CurvatureSizing::length(double curvature) const {
   if (!std::isfinite(curvature)) throw MeshingError("curvature sizing: curvature is not finite");
   const double k = std::abs(curvature);
-  if (k * hMax <= curvatureRatio) return hMax;  // also k = 0: no division
-  return std::max(curvatureRatio / k, hMin);    // eq. 2.41
+  double h = k * hMax <= curvatureRatio ? hMax : curvatureRatio / k;  // eq. 2.41 (k = 0: no division)
+  if (chordDeviation > 0 && 8 * chordDeviation < k * h * h) h = std::sqrt(8 * chordDeviation / k);
+  return std::max(h, hMin);
 }
 
 }  // namespace aniso

@@ -83,7 +83,7 @@ Metric2d robustCurvatureSizing(const ParametricSurface& surface, const Vec2& uv,
     for (int step = 0; step < kSecantSteps && hr < sizing.hMax; ++step) {
       const double ks = secantCurvature(surface, uv, n, dirs, hr, bounds.uv);
       if (ks < 0) break;  // no sample: the point curvature stands
-      const double asked = ks * sizing.hMax > sizing.curvatureRatio ? sizing.curvatureRatio / ks : sizing.hMax;
+      const double asked = sizing.length(ks);
       if (!(asked > (1 + kSecantSlack) * hr)) break;
       hr = std::min(asked, sizing.hMax);
     }

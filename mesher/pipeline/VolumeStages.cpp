@@ -70,7 +70,14 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
                                                                   num(kFailedRefine) + " of their mean edge");
     sources.insert(sources.end(), failed.begin(), failed.end());
     px.predictedTriangles = predictedTriangles(r.surface.mesh, sources);
-    if (px.predictedTriangles > budget && kMinProximityGrowth * triangles < budget) {  // room left to scale into
+    const bool thinWhole = static_cast<double>(r.volume.thin.size()) >= kThinWholeShare * triangles;
+    if (px.predictedTriangles > budget && !thinWhole && !failed.empty() && sources.size() > failed.size()) {
+      sources = failed;  // a solid without tetrahedra weighs more than thin spots left as they are
+      faceSizes.clear();
+      px.predictedTriangles = predictedTriangles(r.surface.mesh, sources);
+      decide(r, "proximity", name + ": thin spots left", "beyond the budget with them; the failed solids alone");
+    }
+    if (px.predictedTriangles > budget && kMinProximityGrowth * triangles < budget && thinWhole) {
       sources = sourcesWithinBudget(r.surface.mesh, sources, budget, &px.budgetFactor);
       roundFactor = px.budgetFactor;
       px.predictedTriangles = predictedTriangles(r.surface.mesh, sources);

@@ -189,6 +189,28 @@ TEST(MetricCurvature, LengthLaw241) {
   EXPECT_THROW(bad.check(), MeshingError);
 }
 
+TEST(MetricCurvature, ChordDeviationBoundsLargeRadii) {
+  CurvatureSizing s = sizing(0.001, 10.0);
+  s.curvatureRatio = 2 * std::acos(-1.0) / 12;  // 12 per circle
+  s.chordDeviation = 0.002;
+  // radius 100: γ_c R = 52.4 > h_max; the chord bound sqrt(8 δ R) = 1.26 wins; its
+  // sagitta h²/(8R) is δ
+  const double h = s.length(0.01);
+  EXPECT_NEAR(h, std::sqrt(8 * 0.002 * 100), 1e-12);
+  EXPECT_NEAR(h * h / (8 * 100), 0.002, 1e-15);
+  // radius 0.01: γ_c R = 0.00524 is below the chord bound (0.0127): eq. 2.41 stands
+  EXPECT_NEAR(s.length(100.0), s.curvatureRatio / 100.0, 1e-15);
+  EXPECT_EQ(s.length(0.0), 10.0);  // flat: h_max, no division
+  s.chordDeviation = 0;            // off: eq. 2.41 alone (h_max here)
+  EXPECT_EQ(s.length(0.01), 10.0);
+  s.chordDeviation = -1;
+  EXPECT_THROW(s.check(), MeshingError);
+  SizingParameters p;
+  p.chordDeviationRel = 1e-3;
+  EXPECT_DOUBLE_EQ(CurvatureSizing::from(p, 50.0).chordDeviation, 0.05);
+  EXPECT_DOUBLE_EQ(CurvatureSizing::from(SizingParameters{}, 50.0).chordDeviation, 0.0);  // the thesis' table
+}
+
 TEST(MetricCurvature, FromSizingParameters) {
   SizingParameters p;
   p.contourAnisotropy = 9;  // above γ_a = 5: capped

@@ -48,6 +48,12 @@ SizeOptions::SizeOptions(CLI::App& cmd, SizingParameters& s, bool volumeIsotropi
       ->group(kGroup);
   cmd.add_flag("--no-curvature", noCurvature_, "Ignore curvature: the target size (--size or --hmax) on curved faces too")
       ->group(kGroup);
+  cmd.add_option("--chord-deviation-rel", s.chordDeviationRel,
+                 "Curvature: largest distance of an element edge from a curved face or edge, as a fraction of the "
+                 "model's bounding-box diagonal; 0 = elements per circle only")
+      ->option_text("F")
+      ->default_str(number(s.chordDeviationRel))
+      ->group(kGroup);
   cmd.add_option("--gradation", s.gradation, "How fast sizes may grow between neighbours (thesis γ_M; ≥ 1)")
       ->option_text("G")
       ->default_str(number(s.gradation))
