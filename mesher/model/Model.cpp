@@ -241,6 +241,14 @@ std::vector<int> Model::solidFaces(int s) const {
   return out;
 }
 
+std::vector<int> Model::solidBoundaryFaces(int s) const {
+  std::vector<int> out = solidFaces(s);
+  for (const EmbeddedFace& e : solids.at(static_cast<std::size_t>(s)).embedded) out.push_back(e.face);
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
 std::vector<ModelIssue> Model::check() const { return Validator(*this).run(); }
 
 std::vector<std::string> Model::validate() const {

@@ -136,6 +136,9 @@ struct Model {
   /// The faces (0-based) of solid s's shells: its void shells', then its outer shell's, each
   /// in shell order (a face used twice appears twice); shell references out of range skipped.
   std::vector<int> solidFaces(int s) const;
+  /// Every face bounding or inside solid s: solidFaces(s) and its embedded faces,
+  /// ascending, each once.
+  std::vector<int> solidBoundaryFaces(int s) const;
   /// check()'s messages, each naming the entity by its 1-based id.
   std::vector<std::string> validate() const;
 };

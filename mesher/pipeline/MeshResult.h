@@ -28,7 +28,7 @@ struct StageDecision {
 /// Alg. 3.3's proximity rounds (VolumeStages.h) as they ended.
 struct ProximityOutcome {
   int rounds = 0;                 ///< surfaces meshed finer and kept (0 after the fallback)
-  std::size_t facesRefined = 0;   ///< sources (one per face) of the kept rounds
+  std::size_t facesRefined = 0;   ///< thin faces refined by the kept rounds (failed solids not counted)
   std::size_t thinTrianglesLeft = 0;
   double predictedTriangles = 0;  ///< of the last round considered
   double budgetFactor = 1;        ///< sourcesWithinBudget's factor of the last round scaled

@@ -65,9 +65,6 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
     std::vector<std::pair<int, double>> faceSizes;
     double roundFactor = 1;  // this round's budget scaling of the sizes
     std::vector<SizingSource> sources = thinSources(r.volume.thin, hmin, &faceSizes, in.model);
-    if (!failed.empty())
-      decide(r, "proximity", name + ": failed solids refined", std::to_string(failed.size()) + " solids, at " +
-                                                                  num(kFailedRefine) + " of their mean edge");
     sources.insert(sources.end(), failed.begin(), failed.end());
     px.predictedTriangles = predictedTriangles(r.surface.mesh, sources);
     const bool thinWhole = static_cast<double>(r.volume.thin.size()) >= kThinWholeShare * triangles;
@@ -102,12 +99,16 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
              std::to_string(failedFaces(finer)) + " faces unmeshed, " + std::to_string(failedFaces(r.surface)) + " before");
       return false;
     }
-    px.facesRefined += sources.size();
+    px.facesRefined += faceSizes.size();
     for (const auto& [f, h] : faceSizes) px.refined.push_back({f, h * roundFactor});
     if (!first) first = FirstSurface{std::move(r.surface), r.surfaceRepair};
     r.surface = std::move(finer);
     r.surfaceRepair = repair;
-    decide(r, "proximity", name + ": finer surface kept", std::to_string(sources.size()) + " faces refined, " + asked);
+    const std::string failedText = failed.empty() ? std::string()
+                                                  : ", " + std::to_string(failed.size()) + " failed solids at " +
+                                                        num(kFailedRefine) + " of their mean edge";
+    decide(r, "proximity", name + ": finer surface kept",
+           std::to_string(faceSizes.size()) + " faces refined" + failedText + ", " + asked);
   }
   return false;
 }

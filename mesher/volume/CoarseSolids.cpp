@@ -16,10 +16,7 @@ struct MeshedBoundary {
 
 MeshedBoundary boundaryOf(const Model& model, const SurfaceMesh& surface, int s) {
   MeshedBoundary b;
-  b.faces = model.solidFaces(s);
-  for (const EmbeddedFace& e : model.solids[static_cast<std::size_t>(s)].embedded) b.faces.push_back(e.face);
-  std::sort(b.faces.begin(), b.faces.end());
-  b.faces.erase(std::unique(b.faces.begin(), b.faces.end()), b.faces.end());
+  b.faces = model.solidBoundaryFaces(s);
   std::vector<std::uint8_t> ofSolid(model.faces.size(), 0);
   for (const int f : b.faces)
     if (f >= 0 && f < static_cast<int>(ofSolid.size())) ofSolid[static_cast<std::size_t>(f)] = 1;

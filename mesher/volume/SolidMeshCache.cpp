@@ -28,15 +28,6 @@ class Hasher {
   std::uint64_t a_ = 0x243f6a8885a308d3ULL, b_ = 0x13198a2e03707344ULL;
 };
 
-/// The faces of the solid's outer and void shells and its embedded faces, ascending.
-std::vector<int> boundaryFaces(const Model& model, int solid) {
-  std::vector<int> faces = model.solidFaces(solid);
-  for (const EmbeddedFace& e : model.solids.at(static_cast<std::size_t>(solid)).embedded) faces.push_back(e.face);
-  std::sort(faces.begin(), faces.end());
-  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-  return faces;
-}
-
 int rank(const std::vector<int>& nodes, int v) {
   return static_cast<int>(std::lower_bound(nodes.begin(), nodes.end(), v) - nodes.begin());
 }
@@ -46,7 +37,7 @@ int rank(const std::vector<int>& nodes, int v) {
 SolidBoundaryKey solidBoundaryKey(const Model& model, const SurfaceMesh& surface,
                                   const std::vector<std::vector<int>>& faceTriangles, int solid) {
   SolidBoundaryKey key;
-  const std::vector<int> faces = boundaryFaces(model, solid);
+  const std::vector<int> faces = model.solidBoundaryFaces(solid);
   for (const int f : faces)
     if (f >= 0 && static_cast<std::size_t>(f) < faceTriangles.size())
       for (const int t : faceTriangles[static_cast<std::size_t>(f)])

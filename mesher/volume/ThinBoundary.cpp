@@ -87,6 +87,11 @@ std::vector<SizingSource> thinSources(const std::vector<ThinSpot>& spots, double
     a.size = std::min(a.size, target);
     if (s.solid >= 0) a.solids.insert(s.solid);
   }
+  std::map<int, std::vector<int>> solidFaces;  // each thin solid's faces, computed once
+  if (model)
+    for (const auto& [face, a] : byFace)
+      for (const int s : a.solids)
+        if (!solidFaces.count(s)) solidFaces[s] = model->solidBoundaryFaces(s);
   std::vector<SizingSource> out;
   for (const auto& [face, a] : byFace) {
     SizingSource src;
@@ -95,13 +100,11 @@ std::vector<SizingSource> thinSources(const std::vector<ThinSpot>& spots, double
     src.b = a.box.hi + Vec3::Constant(a.grow);
     src.metric = Metric3d::isotropic(a.size);
     if (model && !a.solids.empty()) {
-      for (const int s : a.solids) {
-        const std::vector<int> own = model->solidFaces(s);
-        src.faces.insert(src.faces.end(), own.begin(), own.end());
-        for (const EmbeddedFace& e : model->solids.at(static_cast<std::size_t>(s)).embedded) src.faces.push_back(e.face);
+      for (const int s : a.solids) src.faces.insert(src.faces.end(), solidFaces[s].begin(), solidFaces[s].end());
+      if (a.solids.size() > 1) {  // a face of two thin solids
+        std::sort(src.faces.begin(), src.faces.end());
+        src.faces.erase(std::unique(src.faces.begin(), src.faces.end()), src.faces.end());
       }
-      std::sort(src.faces.begin(), src.faces.end());
-      src.faces.erase(std::unique(src.faces.begin(), src.faces.end()), src.faces.end());
     }
     out.push_back(src);
     if (faces) faces->push_back({face, a.size});

@@ -95,3 +95,40 @@ TEST(ThinBoundary, ACubeIsNotThin) {
 }
 
 }  // namespace
+
+TEST(ThinBoundary, SourcesSizeOnlyTheFacesOfTheThinSolid) {
+  std::set<Triple> boundary;
+  const SolidTetMesh s = slab(8, 0.04, boundary);
+  CubeSurface c = cubeSurface(s, boundary);
+  std::vector<ThinSpot> spots = thinSpots(s, boundary);
+  for (ThinSpot& t : spots) t.solid = 0;
+  // solid 0: the slab's faces 0..5; solid 1: faces 6 and 7, a part lying in the slab's box
+  Model model;
+  model.faces.resize(8);
+  model.shells.push_back({});
+  for (int f = 0; f < 6; ++f) model.shells[0].faces.push_back({f, false});
+  model.shells.push_back({{{6, false}, {7, false}}, true});
+  model.solids.push_back({"slab", 0, {}, {}, 0});
+  model.solids.push_back({"part", 1, {}, {}, 0});
+  const std::vector<SizingSource> sources = thinSources(spots, 1e-3, nullptr, &model);
+  ASSERT_EQ(sources.size(), 2u);
+  for (const SizingSource& src : sources) {
+    EXPECT_EQ(src.faces, (std::vector<int>{0, 1, 2, 3, 4, 5}));
+    EXPECT_TRUE(src.sizesFace(4));
+    EXPECT_FALSE(src.sizesFace(6));
+  }
+  EXPECT_TRUE(thinSources(spots, 1e-3).front().faces.empty());  // without the model: every face
+  // the same triangles given to the other part count once each: nothing asks them finer
+  const double asked = predictedTriangles(c.surface, sources);
+  int moved = 0;
+  for (std::size_t t = 0; t < c.surface.triangles.size(); ++t)
+    if (c.surface.triangleFace[t] == 4) c.surface.triangleFace[t] = 6, ++moved;
+  ASSERT_GT(moved, 0);
+  const double after = predictedTriangles(c.surface, sources);
+  EXPECT_LT(after, asked);
+  EXPECT_GE(after, static_cast<double>(c.surface.triangles.size()));
+  // and none of them gets into the user-sizing sum of a point (face sources are not regions)
+  UserSizing user;
+  user.sources = sources;
+  EXPECT_FALSE(user.metricAt(Vec3(0.5, 0.5, 0.02)).has_value());
+}
