@@ -68,11 +68,39 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
     sources.insert(sources.end(), failed.begin(), failed.end());
     px.predictedTriangles = predictedTriangles(r.surface.mesh, sources);
     const bool thinWhole = static_cast<double>(r.volume.thin.size()) >= kThinWholeShare * triangles;
-    if (px.predictedTriangles > budget && !thinWhole && !failed.empty() && sources.size() > failed.size()) {
-      sources = failed;  // a solid without tetrahedra weighs more than thin spots left as they are
-      faceSizes.clear();
-      px.predictedTriangles = predictedTriangles(r.surface.mesh, sources);
-      decide(r, "proximity", name + ": thin spots left", "beyond the budget with them; the failed solids alone");
+    std::string notRun = "nothing the minimum size would refine";
+    if (px.predictedTriangles > budget && !thinWhole) {
+      // thin in places: sizes up to kMaxThinAspect times the thickness (flat tetrahedra
+      // across, but no slivers) within a smaller budget; when even that does not fit, the
+      // thin solids that do, the failed solids first (a solid without tetrahedra weighs
+      // more than thin spots left as they are)
+      const std::vector<SizingSource> thin(sources.begin(), sources.end() - static_cast<std::ptrdiff_t>(failed.size()));
+      const double failedGrowth = failed.empty() ? 0.0 : predictedTriangles(r.surface.mesh, failed) - triangles;
+      const double thinBudget = std::min(budget, kThinInPlacesGrowth * triangles) - failedGrowth;
+      double factor = 1;
+      std::vector<SizingSource> scaled = thinBudget > triangles
+                                             ? sourcesWithinBudget(r.surface.mesh, thin, thinBudget, &factor, kMaxThinAspect)
+                                             : thin;
+      std::size_t groups = 0, kept = 0;
+      const std::vector<std::size_t> keep =
+          cheapestGroupsWithinBudget(r.surface.mesh, scaled, thinBudget, &groups, &kept);
+      sources.clear();
+      std::vector<std::pair<int, double>> keptSizes;
+      for (const std::size_t i : keep) {
+        sources.push_back(scaled[i]);
+        keptSizes.push_back(faceSizes[i]);
+      }
+      faceSizes = std::move(keptSizes);
+      roundFactor = px.budgetFactor = factor;
+      sources.insert(sources.end(), failed.begin(), failed.end());
+      const std::string left = std::to_string(groups - kept) + " of " + std::to_string(groups) + " thin solids left";
+      notRun = num(px.predictedTriangles) + " triangles predicted for " + num(triangles) + ", beyond the budget; " + left;
+      if (!sources.empty()) {
+        px.predictedTriangles = predictedTriangles(r.surface.mesh, sources);
+        decide(r, "proximity", name + ": thin in places",
+               "sizes " + num(factor) + " x the thickness, " + left +
+                   (failed.empty() ? std::string() : "; the failed solids first"));
+      }
     }
     if (px.predictedTriangles > budget && kMinProximityGrowth * triangles < budget && thinWhole) {
       sources = sourcesWithinBudget(r.surface.mesh, sources, budget, &px.budgetFactor);
@@ -83,7 +111,7 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
     const std::string asked = num(px.predictedTriangles) + " triangles predicted for " + num(triangles);
     if (sources.empty() || px.predictedTriangles > budget || px.predictedTriangles < kMinProximityGrowth * triangles) {
       decide(r, "proximity", name + ": not run",
-             sources.empty() ? std::string("nothing the minimum size would refine")
+             sources.empty() ? notRun
                              : asked + (px.predictedTriangles > budget ? ", beyond the budget" : ", too little growth"));
       return false;
     }
@@ -184,6 +212,7 @@ void runVolumeStages(const VolumeStagesInput& in, MeshResult& r) {
     if (r.proximity.rounds > 0 && !r.volume.ok()) {
       r.proximity.rounds = 0;
       r.proximity.facesRefined = 0;
+      r.proximity.refined.clear();
       if (first) {
         r.surface = std::move(first->surface);
         r.surfaceRepair = first->repair;

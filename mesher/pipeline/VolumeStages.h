@@ -40,6 +40,13 @@ inline constexpr double kMaxProximityGrowth = 10.0;
 /// sources beyond the budget scaled to fit (sourcesWithinBudget); a model thin in places
 /// (an assembly's skins and sheets) keeps its surface then (docs/volume.md).
 inline constexpr double kThinWholeShare = 0.5;
+/// A model thin in places whose sources exceed the budget gets them scaled up to this
+/// factor (elements up to this many times as large as the part is thick: flat tetrahedra
+/// across it, about 20 deg at the base edges, but no slivers) to fit kThinInPlacesGrowth
+/// times its triangles; the thin solids that fit no such scaling keep their surface
+/// (cheapestGroupsWithinBudget).
+inline constexpr double kMaxThinAspect = 8.0;
+inline constexpr double kThinInPlacesGrowth = 2.0;
 /// A round whose sources would add less than this share of triangles is not run.
 inline constexpr double kMinProximityGrowth = 1.05;
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "mesher/control/CSAnalytic2d.h"
 #include "mesher/core/Error.h"
@@ -86,12 +87,61 @@ void insertContourCurvature(CSQuadtree2d& cs, const Model& model, int face, cons
   }
 }
 
+/// Where on the face a source may lie: the (u, v) sub-box of the cells of a coarse grid
+/// whose points lie in the source's region grown by the grid's largest step in space.
+class FaceGrid {
+ public:
+  static constexpr int kCells = 32;
+  FaceGrid(const ParametricSurface& surface, const Box2& bounds) : bounds_(bounds) {
+    p_.resize((kCells + 1) * (kCells + 1));
+    for (int i = 0; i <= kCells; ++i)
+      for (int j = 0; j <= kCells; ++j) at(i, j) = surface.point(uv(i, j));
+    for (int i = 0; i <= kCells; ++i)
+      for (int j = 0; j <= kCells; ++j) {
+        if (i < kCells) step_ = std::max(step_, (at(i + 1, j) - at(i, j)).norm());
+        if (j < kCells) step_ = std::max(step_, (at(i, j + 1) - at(i, j)).norm());
+      }
+    if (!std::isfinite(step_)) step_ = 1e300;
+  }
+  /// The sub-box and its extent in space; nullopt when no grid point is near the region.
+  std::optional<std::pair<Box2, double>> near(Box3 region) const {
+    region.lo.array() -= step_;
+    region.hi.array() += step_;
+    int i0 = kCells + 1, i1 = -1, j0 = kCells + 1, j1 = -1;
+    for (int i = 0; i <= kCells; ++i)
+      for (int j = 0; j <= kCells; ++j) {
+        const Vec3& x = p_[i * (kCells + 1) + j];
+        if ((x.array() < region.lo.array()).any() || (x.array() > region.hi.array()).any()) continue;
+        i0 = std::min(i0, i), i1 = std::max(i1, i), j0 = std::min(j0, j), j1 = std::max(j1, j);
+      }
+    if (i1 < 0) return std::nullopt;
+    i0 = std::max(i0 - 1, 0), j0 = std::max(j0 - 1, 0), i1 = std::min(i1 + 1, kCells), j1 = std::min(j1 + 1, kCells);
+    Box3 space;
+    for (int i = i0; i <= i1; ++i)
+      for (int j = j0; j <= j1; ++j) space.add(p_[i * (kCells + 1) + j]);
+    Box2 sub;
+    sub.lo = uv(i0, j0);
+    sub.hi = uv(i1, j1);
+    return std::make_pair(sub, space.diagonal());
+  }
+
+ private:
+  Vec2 uv(int i, int j) const {
+    return bounds_.lo + Vec2(double(i) / kCells, double(j) / kCells).cwiseProduct(bounds_.size());
+  }
+  Vec3& at(int i, int j) { return p_[i * (kCells + 1) + j]; }
+  Box2 bounds_;
+  std::vector<Vec3> p_;
+  double step_ = 0;
+};
+
 /// The user's 3D sizing restricted to the face (alg. 3.2 step 4). The global metric is a
 /// continuous source. A local source usually covers a small part of a face, which the
 /// continuous adaptation (it compares at a few points per control element) would miss: the
-/// face is sampled on a (u, v) grid fine enough for the source's size and every sample inside
-/// the source becomes a point source, which refines the control space around it. Sources of
-/// other faces (SizingSource::faces) are skipped.
+/// part of the face near the source (FaceGrid) is sampled on a (u, v) grid fine enough for
+/// the source's size and every sample inside the source becomes a point source, which
+/// refines the control space around it. Sources of other faces (SizingSource::faces) are
+/// skipped.
 void insertUserSizing(CSQuadtree2d& cs, const UserSizing& user, int face, const ParametricSurface& surface,
                       const Box2& bounds, double gMin, double hMax) {
   auto restricted = [&](const Vec2& uv, const Metric3d& m3) {
@@ -102,15 +152,7 @@ void insertUserSizing(CSQuadtree2d& cs, const UserSizing& user, int face, const 
     const Metric3d g = *user.global;
     cs.setContinuousSource(CSAnalytic2d(bounds, [&](const Vec2& uv) { return restricted(uv, g); }));
   }
-  if (user.sources.empty()) return;
-  // The face's extent in space, from a coarse sample.
-  const Box3 faceBox = sampleFace(surface, bounds).box;
-  const double extent = std::max(faceBox.diagonal(), 1e-300);
-  // A source whose region misses the face (its sampled box grown by a quarter of its
-  // extent, for what the coarse sample misses) is skipped: its sampling costs up to 513².
-  Box3 near = faceBox;
-  near.lo.array() -= 0.25 * extent;
-  near.hi.array() += 0.25 * extent;
+  std::optional<FaceGrid> grid;  // made for the first source of the face
   for (const SizingSource& src : user.sources) {
     if (!src.sizesFace(face)) continue;
     Box3 region;
@@ -119,12 +161,15 @@ void insertUserSizing(CSQuadtree2d& cs, const UserSizing& user, int face, const 
     if (src.kind != SizingSource::Kind::Point) region.add(src.b);
     region.lo.array() -= r;
     region.hi.array() += r;
-    if ((region.lo.array() > near.hi.array()).any() || (near.lo.array() > region.hi.array()).any()) continue;
+    if (!grid) grid.emplace(surface, bounds);
+    const auto near = grid->near(region);
+    if (!near) continue;
+    const auto& [sub, extent] = *near;
     const double h = src.metric.axes().lengths.minCoeff();
     const int n = std::clamp(static_cast<int>(std::ceil(2 * extent / h)), 8, 512);
     for (int i = 0; i <= n; ++i)
       for (int j = 0; j <= n; ++j) {
-        const Vec2 uv = bounds.lo + Vec2(double(i) / n, double(j) / n).cwiseProduct(bounds.size());
+        const Vec2 uv = sub.lo + Vec2(double(i) / n, double(j) / n).cwiseProduct(sub.size());
         if (!src.contains(surface.point(uv))) continue;
         const Metric2d m = restricted(uv, src.metric);
         if (m.angleLengths().h1 < hMax) cs.insertDiscreteSource(uv, m);

@@ -74,7 +74,8 @@ std::vector<SizingSource> thinSources(const std::vector<ThinSpot>& spots, double
                                       std::vector<std::pair<int, double>>* faces, const Model* model) {
   struct Acc {
     Box3 box;
-    double grow = 0, size = 1e300;
+    double grow = 0;
+    std::vector<double> targets;
     std::set<int> solids;
   };
   std::map<int, Acc> byFace;
@@ -84,7 +85,7 @@ std::vector<SizingSource> thinSources(const std::vector<ThinSpot>& spots, double
     Acc& a = byFace[s.face];
     a.box.add(s.centroid);
     a.grow = std::max(a.grow, s.size);
-    a.size = std::min(a.size, target);
+    a.targets.push_back(target);
     if (s.solid >= 0) a.solids.insert(s.solid);
   }
   std::map<int, std::vector<int>> solidFaces;  // each thin solid's faces, computed once
@@ -93,12 +94,15 @@ std::vector<SizingSource> thinSources(const std::vector<ThinSpot>& spots, double
       for (const int s : a.solids)
         if (!solidFaces.count(s)) solidFaces[s] = model->solidBoundaryFaces(s);
   std::vector<SizingSource> out;
-  for (const auto& [face, a] : byFace) {
+  for (auto& [face, a] : byFace) {
+    // the face's thickness: a low quantile of its spots', not the smallest
+    const auto q = a.targets.begin() + static_cast<std::ptrdiff_t>(kFaceThicknessQuantile * (a.targets.size() - 1));
+    std::nth_element(a.targets.begin(), q, a.targets.end());
     SizingSource src;
     src.kind = SizingSource::Kind::Box;
     src.a = a.box.lo - Vec3::Constant(a.grow);
     src.b = a.box.hi + Vec3::Constant(a.grow);
-    src.metric = Metric3d::isotropic(a.size);
+    src.metric = Metric3d::isotropic(*q);
     if (model && !a.solids.empty()) {
       for (const int s : a.solids) src.faces.insert(src.faces.end(), solidFaces[s].begin(), solidFaces[s].end());
       if (a.solids.size() > 1) {  // a face of two thin solids
@@ -107,7 +111,7 @@ std::vector<SizingSource> thinSources(const std::vector<ThinSpot>& spots, double
       }
     }
     out.push_back(src);
-    if (faces) faces->push_back({face, a.size});
+    if (faces) faces->push_back({face, *q});
   }
   return out;
 }
@@ -121,7 +125,7 @@ double predictedTriangles(const SurfaceMesh& surface, const std::vector<SizingSo
     const Vec3 c = (p[0] + p[1] + p[2]) / 3;
     double target = 1e300;
     for (const SizingSource& src : sources)
-      if (src.sizesFace(face) && src.contains(c)) target = std::min(target, src.metric.axes().lengths.minCoeff());
+      if (src.contains(c) && src.sizesFace(face)) target = std::min(target, src.metric.axes().lengths.minCoeff());
     const double size = ((p[1] - p[0]).norm() + (p[2] - p[1]).norm() + (p[0] - p[2]).norm()) / 3;
     n += std::max(1.0, (size / target) * (size / target));
   }
@@ -129,7 +133,7 @@ double predictedTriangles(const SurfaceMesh& surface, const std::vector<SizingSo
 }
 
 std::vector<SizingSource> sourcesWithinBudget(const SurfaceMesh& surface, const std::vector<SizingSource>& sources,
-                                              double budget, double* factor) {
+                                              double budget, double* factor, double maxFactor) {
   auto scaled = [&](double s) {
     std::vector<SizingSource> out = sources;
     for (SizingSource& src : out) src.metric = Metric3d::isotropic(s * src.metric.axes().lengths.minCoeff());
@@ -140,14 +144,51 @@ std::vector<SizingSource> sourcesWithinBudget(const SurfaceMesh& surface, const 
   // predictedTriangles decreases with s; at the largest source's coarsest triangle no
   // triangle is refined any more (every term 1), so the bisection has a bracket as long
   // as the budget holds the mesh itself.
-  double lo = 1.0, hi = 2.0;
-  while (predictedTriangles(surface, scaled(hi)) > budget && hi < 1e6) lo = hi, hi *= 2;
+  if (predictedTriangles(surface, scaled(maxFactor)) > budget) {
+    if (factor) *factor = maxFactor;
+    return scaled(maxFactor);
+  }
+  double lo = 1.0, hi = std::min(2.0, maxFactor);
+  while (predictedTriangles(surface, scaled(hi)) > budget) lo = hi, hi = std::min(2 * hi, maxFactor);
   while (hi / lo > 1.01) {
     const double mid = std::sqrt(lo * hi);
     (predictedTriangles(surface, scaled(mid)) > budget ? lo : hi) = mid;
   }
   if (factor) *factor = hi;
   return scaled(hi);
+}
+
+std::vector<std::size_t> cheapestGroupsWithinBudget(const SurfaceMesh& surface,
+                                                    const std::vector<SizingSource>& sources, double budget,
+                                                    std::size_t* groups, std::size_t* kept) {
+  std::map<std::vector<int>, std::vector<std::size_t>> byFaces;  // group -> its sources
+  std::vector<const std::vector<std::size_t>*> order;            // groups by first source
+  for (std::size_t i = 0; i < sources.size(); ++i) {
+    auto [it, added] = byFaces.try_emplace(sources[i].faces);
+    it->second.push_back(i);
+    if (added) order.push_back(&it->second);
+  }
+  const double triangles = static_cast<double>(surface.triangles.size());
+  std::vector<std::pair<double, std::size_t>> growth;  // (growth, group in `order`)
+  for (std::size_t g = 0; g < order.size(); ++g) {
+    std::vector<SizingSource> alone;
+    for (const std::size_t i : *order[g]) alone.push_back(sources[i]);
+    growth.push_back({predictedTriangles(surface, alone) - triangles, g});
+  }
+  std::stable_sort(growth.begin(), growth.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<std::size_t> out;
+  double total = triangles;
+  std::size_t taken = 0;
+  for (const auto& [grow, g] : growth) {
+    if (total + grow > budget) break;  // the rest grow as much or more
+    total += grow;
+    ++taken;
+    out.insert(out.end(), order[g]->begin(), order[g]->end());
+  }
+  std::sort(out.begin(), out.end());
+  if (groups) *groups = order.size();
+  if (kept) *kept = taken;
+  return out;
 }
 
 }  // namespace aniso

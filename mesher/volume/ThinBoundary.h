@@ -12,12 +12,12 @@
 // that do not oppose, so they are not reported.
 //
 // thinSources() turns the spots into sizing sources for the surface control spaces: per
-// CAD face, a box around its thin triangles (grown by the largest of them) that sizes that
-// face only (SizingSource::face: the other parts in the box, components on a thin board,
-// keep their sizes), with the isotropic size of the smallest thickness found there (not
-// below hmin), so the
-// surface mesher makes triangles about as large as the part is thick; spots whose
-// triangles hmin would not make smaller (the size at most kThinRatio below them) are left.
+// CAD face, a box around its thin triangles (grown by the largest of them) that sizes the
+// faces of its thin solid only (SizingSource::faces: the other parts in the box, components
+// on a thin board, keep their sizes), with the isotropic size of the face's thickness (a
+// low quantile of its spots', kFaceThicknessQuantile; not below hmin), so the surface mesher makes
+// triangles about as large as the part is thick; spots whose triangles hmin would not make
+// smaller (the size at most kThinRatio below them) are left.
 #include <vector>
 
 #include "mesher/model/Model.h"
@@ -38,6 +38,13 @@ inline constexpr double kOppositeNormalCos = -0.5;
 /// 157 faces of sources and 34 times the tets for no gain).
 inline constexpr double kThinFraction = 0.05;
 
+/// A face's thin source asks for this quantile of its spots' thicknesses, not the smallest:
+/// a thickness is an apex's height over a boundary triangle's plane, which on a coarse
+/// curved sheet dips towards the other side (measured: water_module's sheets, 2.4 mm
+/// thick, 0.06 mm at a few 60 mm triangles). Spots much thinner than the rest are measured
+/// again on the finer surface of the next round.
+inline constexpr double kFaceThicknessQuantile = 0.1;
+
 struct ThinSpot {
   int face = -1;       ///< 0-based model face of the boundary triangle
   Vec3 centroid;       ///< of the triangle
@@ -53,7 +60,7 @@ struct ThinSpot {
 std::vector<ThinSpot> findThinBoundary(const SolidTetMesh& s, const std::vector<std::array<int, 3>>& triangles,
                                        const std::vector<int>& triangleFace);
 
-/// One box source per face with thin spots (see above), faces in increasing order. With
+/// The box sources of the faces with thin spots (see above), faces in increasing order. With
 /// `faces`, it receives the (0-based face, size asked) of each source, in the same order.
 /// With `model`, each source sizes only the faces of the solids its spots were found in
 /// (SizingSource::faces, embedded faces included); without, every face in its box.
@@ -70,8 +77,20 @@ double predictedTriangles(const SurfaceMesh& surface, const std::vector<SizingSo
 /// predictedTriangles stays within `budget`: a part too thin for the budget is refined as
 /// far as the budget allows rather than not at all (the tets across a wall get flatter with
 /// the ratio of triangle size to thickness, so halfway is much better than nothing).
-/// `factor` receives s. The sources themselves when they fit already (s = 1).
+/// `factor` receives s. The sources themselves when they fit already (s = 1); scaled by
+/// `maxFactor` when even that does not fit (the caller checks the prediction).
 std::vector<SizingSource> sourcesWithinBudget(const SurfaceMesh& surface, const std::vector<SizingSource>& sources,
-                                              double budget, double* factor = nullptr);
+                                              double budget, double* factor = nullptr, double maxFactor = 1e6);
+
+/// Indices (ascending) of the sources kept when only part of them fits `budget`: sources
+/// are grouped by the faces they size (one group per thin solid, thinSources with a model),
+/// each group's growth (predictedTriangles with it alone, less the surface's triangles) is
+/// summed in increasing order while the surface plus the sum stays within `budget`; ties
+/// keep the source order. For a model thin in places: the thin solids that fit are refined
+/// fully, the others keep their surface (rather than none refined, or all scaled coarser).
+/// `groups` receives the number of groups, `kept` those taken.
+std::vector<std::size_t> cheapestGroupsWithinBudget(const SurfaceMesh& surface,
+                                                    const std::vector<SizingSource>& sources, double budget,
+                                                    std::size_t* groups = nullptr, std::size_t* kept = nullptr);
 
 }  // namespace aniso

@@ -132,3 +132,64 @@ TEST(ThinBoundary, SourcesSizeOnlyTheFacesOfTheThinSolid) {
   user.sources = sources;
   EXPECT_FALSE(user.metricAt(Vec3(0.5, 0.5, 0.02)).has_value());
 }
+
+TEST(ThinBoundary, AFewThinnerSpotsDoNotSizeTheWholeFace) {
+  std::set<Triple> boundary;
+  const SolidTetMesh s = slab(8, 0.04, boundary);
+  std::vector<ThinSpot> spots = thinSpots(s, boundary);
+  ASSERT_GT(spots.size(), 40u);
+  // fewer than kFaceThicknessQuantile of the spots measured 20x thinner (an apex near a
+  // coarse triangle's chord plane): the face still asks for the slab's thickness
+  std::size_t outliers = 0;
+  for (std::size_t i = 0; i < spots.size(); i += 25, ++outliers) spots[i].thickness = 0.002;
+  ASSERT_LT(static_cast<double>(outliers), 0.5 * kFaceThicknessQuantile * spots.size());
+  for (const SizingSource& src : thinSources(spots, 1e-4))
+    EXPECT_NEAR(src.metric.axes().lengths.minCoeff(), 0.04, 0.04 * 0.5);
+  // every spot that thin: the face asks for it
+  for (ThinSpot& t : spots) t.thickness = 0.002;
+  for (const SizingSource& src : thinSources(spots, 1e-4)) EXPECT_NEAR(src.metric.axes().lengths.minCoeff(), 0.002, 1e-12);
+}
+
+TEST(ThinBoundary, ScalingStopsAtTheLargestFactor) {
+  std::set<Triple> boundary;
+  const SolidTetMesh s = slab(8, 0.04, boundary);
+  const CubeSurface c = cubeSurface(s, boundary);
+  const std::vector<SizingSource> sources = thinSources(thinSpots(s, boundary), 1e-3);
+  const double n = static_cast<double>(c.surface.triangles.size());
+  double factor = 0;
+  // a budget no scaling up to 1.5 meets: scaled by 1.5, the prediction still over it
+  const std::vector<SizingSource> capped = sourcesWithinBudget(c.surface, sources, 1.01 * n, &factor, 1.5);
+  EXPECT_EQ(factor, 1.5);
+  ASSERT_EQ(capped.size(), sources.size());
+  EXPECT_NEAR(capped[0].metric.axes().lengths.minCoeff(), 1.5 * sources[0].metric.axes().lengths.minCoeff(), 1e-12);
+  EXPECT_GT(predictedTriangles(c.surface, capped), 1.01 * n);
+}
+
+TEST(ThinBoundary, TheThinSolidsThatFitTheBudgetAreKept) {
+  std::set<Triple> boundary;
+  const SolidTetMesh s = slab(8, 0.04, boundary);
+  const CubeSurface c = cubeSurface(s, boundary);
+  // two "solids": the slab's top face sized at 0.04 (cheap), its bottom face at 0.01 (16x
+  // the triangles); each source sizes its own face only
+  std::vector<SizingSource> sources = thinSources(thinSpots(s, boundary), 1e-3);
+  ASSERT_EQ(sources.size(), 2u);
+  sources[0].faces = {4};
+  sources[1].faces = {5};
+  sources[0].metric = Metric3d::isotropic(0.01);
+  sources[1].metric = Metric3d::isotropic(0.04);
+  const double n = static_cast<double>(c.surface.triangles.size());
+  const double cheap = predictedTriangles(c.surface, {sources[1]}) - n;
+  const double dear = predictedTriangles(c.surface, {sources[0]}) - n;
+  ASSERT_GT(dear, 4 * cheap);
+  std::size_t groups = 0, kept = 0;
+  // room for the cheap one only: it is kept, whatever its place in the list
+  EXPECT_EQ(cheapestGroupsWithinBudget(c.surface, sources, n + cheap + 0.5 * dear, &groups, &kept),
+            (std::vector<std::size_t>{1}));
+  EXPECT_EQ(groups, 2u);
+  EXPECT_EQ(kept, 1u);
+  // room for both: both, in the list's order
+  EXPECT_EQ(cheapestGroupsWithinBudget(c.surface, sources, n + cheap + dear + 1), (std::vector<std::size_t>{0, 1}));
+  // room for neither
+  EXPECT_TRUE(cheapestGroupsWithinBudget(c.surface, sources, n + 0.5 * cheap, &groups, &kept).empty());
+  EXPECT_EQ(kept, 0u);
+}
