@@ -22,6 +22,11 @@ inline constexpr double kDefaultElementsPerCircle = 12;
 /// (a surface graded from smaller sizes needs fewer tets to reach the quality bar).
 inline constexpr double kDefaultHmaxRel = 0.1;
 
+/// The program's default chord deviation over the model diagonal (chordDeviationRel):
+/// 12 per circle alone lose volume and area on large radii (PRO10363 -3.9 % volume at the
+/// other defaults, -0.7 % with it; docs/census.md, session 13).
+inline constexpr double kDefaultChordDeviationRel = 5e-4;
+
 /// γ_c (edge length / curvature radius) for n elements per full circle: 2π/n. n > 0.
 inline double curvatureRatioForElementsPerCircle(double n) { return 2 * std::numbers::pi / n; }
 /// Elements per full circle for γ_c: 2π/γ_c.
@@ -45,11 +50,9 @@ struct SizingParameters {
   double adaptLengthMax = 2.0;      ///< l_Mmax, metric length threshold for adaptation
   /// δ / model diagonal: the largest distance of an edge's chord from a curved face or
   /// edge (h ≤ sqrt(8 δ / κ) beside eq. 2.41's γ_c / κ: BRepMesh's linear deflection beside
-  /// the angular one); 0: none, the default. 12 per circle alone lose 4.5 % of a cylinder's
-  /// volume and ~6 % of a sphere's; measured at the defaults (docs/sizing.md): PRO10363
-  /// -3.9 % volume, -1.4 % at 1e-3, -0.7 % at 5e-4 (6.1 k -> 15 k tets);
-  /// flange-screw-aligner 1.690 M -> 1.700 M tets at 5e-4. Off until measured on every
-  /// model of the census.
+  /// the angular one); 0: none (the thesis' sizing), the program's default is
+  /// kDefaultChordDeviationRel. 12 per circle alone lose 4.5 % of a cylinder's volume and
+  /// ~6 % of a sphere's.
   double chordDeviationRel = 0;
   std::optional<double> hmax;       ///< absolute h_max (overrides hmaxRel)
   std::optional<double> hmin;       ///< absolute h_min (overrides hminRel)
@@ -65,6 +68,7 @@ struct SizingParameters {
     SizingParameters p;
     p.curvatureRatio = curvatureRatioForElementsPerCircle(kDefaultElementsPerCircle);
     p.hmaxRel = kDefaultHmaxRel;
+    p.chordDeviationRel = kDefaultChordDeviationRel;
     return p;
   }
 

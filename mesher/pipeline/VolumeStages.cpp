@@ -40,6 +40,31 @@ void decide(MeshResult& r, std::string stage, std::string decision, std::string 
   r.decisions.push_back({std::move(stage), std::move(decision), std::move(reason)});
 }
 
+/// Removes the proximity sources (those of `sizing` after the user's) that size only faces
+/// of solids the last volume failed on, and their faces from result.proximity.refined.
+/// Returns how many were removed.
+std::size_t undoRefinementOfFailed(const VolumeStagesInput& in, UserSizing& sizing, MeshResult& r) {
+  std::vector<int> faces;
+  for (const int s : failedSolids(r.volume.solids)) {
+    const std::vector<int> f = in.model->solidBoundaryFaces(s);
+    faces.insert(faces.end(), f.begin(), f.end());
+  }
+  std::sort(faces.begin(), faces.end());
+  const auto ofFailed = [&](const std::vector<int>& fs) {
+    return !fs.empty() && std::all_of(fs.begin(), fs.end(), [&](int f) { return std::binary_search(faces.begin(), faces.end(), f); });
+  };
+  const auto first = sizing.sources.begin() + static_cast<std::ptrdiff_t>(in.user->sources.size());
+  const auto kept = std::stable_partition(first, sizing.sources.end(), [&](const SizingSource& s) { return !ofFailed(s.faces); });
+  const auto undone = static_cast<std::size_t>(sizing.sources.end() - kept);
+  sizing.sources.erase(kept, sizing.sources.end());
+  auto& refined = r.proximity.refined;
+  refined.erase(std::remove_if(refined.begin(), refined.end(),
+                               [&](const auto& fh) { return std::binary_search(faces.begin(), faces.end(), fh.first); }),
+                refined.end());
+  r.proximity.facesRefined = refined.size();
+  return undone;
+}
+
 /// Stage 1. True when result.volume is final (no solid thin); false when the surface kept
 /// needs its final volume. `sizing` collects the sources of the kept rounds; `first`
 /// receives the first surface when a finer one replaces it.
@@ -48,7 +73,8 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
   ProximityOutcome& px = r.proximity;
   const double hmin = in.options.sizing.hminFor(in.model->diagonal());
   // one budget for all rounds, from the first surface: rounds must not compound
-  const double budget = kMaxProximityGrowth * static_cast<double>(r.surface.mesh.triangles.size());
+  const double firstTriangles = static_cast<double>(r.surface.mesh.triangles.size());
+  const double budget = kMaxProximityGrowth * firstTriangles;
   for (int round = 1; round <= kMaxProximityRounds; ++round) {
     const std::string name = "round " + std::to_string(round);
     vin.surface = &r.surface.mesh;
@@ -60,6 +86,27 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
     if (r.volume.thin.empty() && failed.empty()) {
       decide(r, "proximity", name + ": not needed", "no solid thinner than its boundary triangles");
       return true;
+    }
+    if (px.rounds > 0 && !failed.empty()) {
+      // a solid that failed on the finer surface: its refinement is undone, the other
+      // solids keep theirs (rather than all falling back to the first surface)
+      const std::size_t undone = undoRefinementOfFailed(in, sizing, r);
+      if (undone > 0) {
+        SurfaceMesherInput sin = in.surface;
+        sin.user = &sizing;
+        SurfaceRepairStats repair;
+        SurfaceMeshResult coarser = meshRepairedSurface(sin, &repair);
+        px.seconds += since(tr);
+        if (failedFaces(coarser) > failedFaces(r.surface)) {
+          decide(r, "proximity", name + ": undoing dropped", "the surface left more faces unmeshed");
+          return false;
+        }
+        r.surface = std::move(coarser);
+        r.surfaceRepair = repair;
+        decide(r, "proximity", name + ": refinement undone",
+               std::to_string(undone) + " sources of solids that failed on the finer surface");
+        continue;  // the next round (or the final volume) meshes the volumes again
+      }
     }
     const double triangles = static_cast<double>(r.surface.mesh.triangles.size());
     std::vector<std::pair<int, double>> faceSizes;
@@ -76,7 +123,7 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
       // more than thin spots left as they are)
       const std::vector<SizingSource> thin(sources.begin(), sources.end() - static_cast<std::ptrdiff_t>(failed.size()));
       const double failedGrowth = failed.empty() ? 0.0 : predictedTriangles(r.surface.mesh, failed) - triangles;
-      const double thinBudget = std::min(budget, kThinInPlacesGrowth * triangles) - failedGrowth;
+      const double thinBudget = std::min(budget, kThinInPlacesGrowth * firstTriangles) - failedGrowth;
       double factor = 1;
       std::vector<SizingSource> scaled = thinBudget > triangles
                                              ? sourcesWithinBudget(r.surface.mesh, thin, thinBudget, &factor, kMaxThinAspect)

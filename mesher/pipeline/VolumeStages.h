@@ -43,8 +43,9 @@ inline constexpr double kThinWholeShare = 0.5;
 /// A model thin in places whose sources exceed the budget gets them scaled up to this
 /// factor (elements up to this many times as large as the part is thick: flat tetrahedra
 /// across it, about 20 deg at the base edges, but no slivers) to fit kThinInPlacesGrowth
-/// times its triangles; the thin solids that fit no such scaling keep their surface
-/// (cheapestGroupsWithinBudget).
+/// times the first surface's triangles, all rounds together; the thin solids that fit no
+/// such scaling keep their surface (cheapestGroupsWithinBudget). Measured: NEO's 1 um
+/// labels, with 2x per round, compounded to 3.4x and 4.2 M tets, 312 s.
 inline constexpr double kMaxThinAspect = 8.0;
 inline constexpr double kThinInPlacesGrowth = 2.0;
 /// A round whose sources would add less than this share of triangles is not run.

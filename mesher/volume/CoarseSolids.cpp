@@ -64,12 +64,20 @@ std::vector<SizingSource> coarseSolidSources(const Model& model, const SurfaceMe
   return out;
 }
 
+std::vector<int> failedSolids(const std::vector<SolidOutcome>& solids) {
+  std::vector<int> out;
+  for (std::size_t s = 0; s < solids.size(); ++s)
+    if (solids[s].status == SolidOutcome::Status::Failed && !solids[s].leftOutBySurface())
+      out.push_back(static_cast<int>(s));
+  return out;
+}
+
 std::vector<SizingSource> failedSolidSources(const Model& model, const SurfaceMesh& surface,
                                              const std::vector<SolidOutcome>& solids) {
   std::vector<SizingSource> out;
-  for (std::size_t s = 0; s < solids.size() && s < model.solids.size(); ++s) {
-    if (solids[s].status != SolidOutcome::Status::Failed || solids[s].leftOutBySurface()) continue;
-    MeshedBoundary b = boundaryOf(model, surface, static_cast<int>(s));
+  for (const int s : failedSolids(solids)) {
+    if (s >= static_cast<int>(model.solids.size())) continue;
+    MeshedBoundary b = boundaryOf(model, surface, s);
     if (b.triangles == 0) continue;
     const double size = kFailedRefine * b.meanEdge;
     out.push_back(sourceOver(std::move(b), size));

@@ -42,6 +42,9 @@ inline constexpr double kFailedRefine = 0.5;
 std::vector<SizingSource> coarseSolidSources(const Model& model, const SurfaceMesh& surface,
                                              const std::vector<SolidOutcome>& solids);
 
+/// The (0-based) solids whose volume mesh failed, not left out for an unmeshed face.
+std::vector<int> failedSolids(const std::vector<SolidOutcome>& solids);
+
 /// One box source per solid of `solids` whose volume mesh failed (not left out for an
 /// unmeshed face); empty when none.
 std::vector<SizingSource> failedSolidSources(const Model& model, const SurfaceMesh& surface,

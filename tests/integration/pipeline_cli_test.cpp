@@ -41,7 +41,7 @@ BothRuns meshBoth(const std::string& path, int dim, bool thesisTable = false) {
   const fs::path cliOut = dir / "cli.msh", libOut = dir / "lib.msh";
   const std::string cmd = std::string(ANISOMESH_CLI) + " mesh '" + path + "' -o '" + cliOut.string() + "' --dim " +
                           std::to_string(dim) + " --max-elements 1e8" +
-                          (thesisTable ? " --hmax-rel 0.5 --curvature-ratio 0.15" : "") + " > /dev/null 2>&1";
+                          (thesisTable ? " --hmax-rel 0.5 --curvature-ratio 0.15 --chord-deviation-rel 0" : "") + " > /dev/null 2>&1";
   EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
 
   cad::CadModel cad = cad::CadModel::read(path);

@@ -58,7 +58,8 @@ TEST(MeshOptions, ProgramDefaultsAreGmshLike) {
   EXPECT_NEAR(elementsPerCircleForCurvatureRatio(s.curvatureRatio), 12.0, 1e-12);
   EXPECT_TRUE(s.curvature);
   EXPECT_DOUBLE_EQ(s.hmaxRel, 0.1);  // Gmsh's default size
-  EXPECT_DOUBLE_EQ(s.chordDeviationRel, 0.0);  // elements per circle only
+  EXPECT_DOUBLE_EQ(s.chordDeviationRel, 5e-4);  // chords within 0.05 % of the diagonal
+  EXPECT_DOUBLE_EQ(SizingParameters{}.chordDeviationRel, 0.0);  // the thesis: elements per circle only
   // everything else is the thesis' table
   EXPECT_DOUBLE_EQ(s.anisotropy, SizingParameters{}.anisotropy);
   EXPECT_DOUBLE_EQ(s.hminRel, SizingParameters{}.hminRel);

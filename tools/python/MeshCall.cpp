@@ -55,7 +55,7 @@ cad::OverlapPolicy overlapPolicy(const std::string& s) {
 /// same conflicts refused, in the keywords' names.
 struct SizeKeywords {
   std::optional<double> size, hmax, hmin, hmaxRel, hminRel, elementsPerCircle, curvatureRatio, gradation, anisotropy,
-      contourAnisotropy;
+      contourAnisotropy, chordDeviationRel;
   bool curvature = true;
 
   void apply(SizingParameters& s) const {
@@ -79,6 +79,7 @@ struct SizeKeywords {
     if (gradation) s.gradation = *gradation;
     if (anisotropy) s.anisotropy = *anisotropy;
     if (contourAnisotropy) s.contourAnisotropy = *contourAnisotropy;
+    if (chordDeviationRel) s.chordDeviationRel = *chordDeviationRel;
     s.curvature = curvature;
   }
 };
@@ -123,10 +124,10 @@ py::object mesh(const py::object& path, std::optional<int> dim, std::optional<do
                 std::optional<double> hminRel, std::optional<double> elementsPerCircle, std::optional<double> curvatureRatio,
                 bool curvature, std::optional<double> gradation, std::optional<double> anisotropy,
                 std::optional<double> contourAnisotropy, bool fragment, const std::string& overlaps,
-                const std::string& internalFaces) {
+                const std::string& internalFaces, std::optional<double> chordDeviationRel) {
   const auto t0 = std::chrono::steady_clock::now();
   const SizeKeywords sizes{size, hmax, hmin, hmaxRel, hminRel, elementsPerCircle, curvatureRatio,
-                           gradation, anisotropy, contourAnisotropy, curvature};
+                           gradation, anisotropy, contourAnisotropy, chordDeviationRel, curvature};
   app::MeshArgs args = meshArgs(pathOf(path), dim, order, quad, quadMethod, sizes, sizing, threads, maxElements, fragment, overlaps,
                                 internalFaces);
   if (timeLimit && !(*timeLimit >= 0)) refuse("time_limit must be a number of seconds ≥ 0");
@@ -206,7 +207,7 @@ void bindCalls(py::module_& m) {
         py::arg("hmax_rel") = py::none(), py::arg("hmin_rel") = py::none(), py::arg("elements_per_circle") = py::none(),
         py::arg("curvature_ratio") = py::none(), py::arg("curvature") = true, py::arg("gradation") = py::none(),
         py::arg("anisotropy") = py::none(), py::arg("contour_anisotropy") = py::none(), py::arg("fragment") = true,
-        py::arg("overlaps") = "merge", py::arg("internal_faces") = "auto",
+        py::arg("overlaps") = "merge", py::arg("internal_faces") = "auto", py::arg("chord_deviation_rel") = py::none(),
         "Meshes a CAD file (STEP, IGES, BREP, .json analytic) as `anisomesh mesh` does with the same options; "
         "returns an anisomesh.Mesh. progress(phase, done, total, detail) is called from this thread.");
   m.def("info", &info, py::arg("path"), py::kw_only(), py::arg("faces") = false, py::arg("fragment") = true,
