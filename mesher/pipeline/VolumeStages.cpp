@@ -8,6 +8,7 @@
 #include "mesher/core/Cancel.h"
 #include "mesher/core/Log.h"
 #include "mesher/pipeline/SurfaceStage.h"
+#include "mesher/pipeline/UndoRefinement.h"
 #include "mesher/volume/CoarseSolids.h"
 #include "mesher/volume/SolidMeshCache.h"
 #include "mesher/volume/ThinBoundary.h"
@@ -40,31 +41,6 @@ void decide(MeshResult& r, std::string stage, std::string decision, std::string 
   r.decisions.push_back({std::move(stage), std::move(decision), std::move(reason)});
 }
 
-/// Removes the proximity sources (those of `sizing` after the user's) that size only faces
-/// of solids the last volume failed on, and their faces from result.proximity.refined.
-/// Returns how many were removed.
-std::size_t undoRefinementOfFailed(const VolumeStagesInput& in, UserSizing& sizing, MeshResult& r) {
-  std::vector<int> faces;
-  for (const int s : failedSolids(r.volume.solids)) {
-    const std::vector<int> f = in.model->solidBoundaryFaces(s);
-    faces.insert(faces.end(), f.begin(), f.end());
-  }
-  std::sort(faces.begin(), faces.end());
-  const auto ofFailed = [&](const std::vector<int>& fs) {
-    return !fs.empty() && std::all_of(fs.begin(), fs.end(), [&](int f) { return std::binary_search(faces.begin(), faces.end(), f); });
-  };
-  const auto first = sizing.sources.begin() + static_cast<std::ptrdiff_t>(in.user->sources.size());
-  const auto kept = std::stable_partition(first, sizing.sources.end(), [&](const SizingSource& s) { return !ofFailed(s.faces); });
-  const auto undone = static_cast<std::size_t>(sizing.sources.end() - kept);
-  sizing.sources.erase(kept, sizing.sources.end());
-  auto& refined = r.proximity.refined;
-  refined.erase(std::remove_if(refined.begin(), refined.end(),
-                               [&](const auto& fh) { return std::binary_search(faces.begin(), faces.end(), fh.first); }),
-                refined.end());
-  r.proximity.facesRefined = refined.size();
-  return undone;
-}
-
 /// Stage 1. True when result.volume is final (no solid thin); false when the surface kept
 /// needs its final volume. `sizing` collects the sources of the kept rounds; `first`
 /// receives the first surface when a finer one replaces it.
@@ -90,7 +66,8 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
     if (px.rounds > 0 && !failed.empty()) {
       // a solid that failed on the finer surface: its refinement is undone, the other
       // solids keep theirs (rather than all falling back to the first surface)
-      const std::size_t undone = undoRefinementOfFailed(in, sizing, r);
+      const std::size_t undone =
+          undoRefinementOfFailed(*in.model, in.user->sources.size(), r.volume.solids, sizing, r.proximity);
       if (undone > 0) {
         SurfaceMesherInput sin = in.surface;
         sin.user = &sizing;

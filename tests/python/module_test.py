@@ -56,6 +56,11 @@ class SameAsCli(unittest.TestCase):
         m = self.same(PERIODIC, ["--hmax-rel", "0.5", "--curvature-ratio", "0.15"], hmax_rel=0.5, curvature_ratio=0.15)
         self.assertEqual(m.report["proximity"]["rounds"], 1)  # the round is the point of this case
 
+    def test_chord_deviation(self):
+        off = self.same(BRACKET, ["--dim", "2", "--chord-deviation-rel", "0"], dim=2, chord_deviation_rel=0)
+        on = anisomesh.mesh(BRACKET, dim=2)  # the default bounds the chords: more triangles
+        self.assertGreater(len(on.triangles), len(off.triangles))
+
     def test_crack(self):
         crack = os.path.join(OWN, "crack.brep")
         m = self.same(crack, ["--hmax", "1.5"], hmax=1.5)
