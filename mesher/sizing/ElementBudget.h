@@ -4,7 +4,10 @@
 //
 // Prediction: the triangles of every face from its control space (FaceSizePrediction.h)
 // and, for a volume mesh, the tets of every solid, estimated from the T triangles of its
-// shells as kTetsPerTriangle32 · T^{3/2} (see the constant). Elements = triangles (+ tets).
+// shells as kTetsPerTriangle32 · T^{3/2} (see the constant), and when its volume V is known
+// no more than kTetsPerVolume · V / h³ (h the mean size on its boundary, h² = A / (√3/4 T),
+// A the area of its faces) nor less than T: a thin part has about as many tets as
+// boundary triangles, T^{3/2} is a compact part's count. Elements = triangles (+ tets).
 // Decision (decideBudget), for a limit N > 0:
 //   - predicted ≤ N: nothing changes;
 //   - else the smallest floor h_c on every sizing length (h_i ← max(h_i, h_c): the faces
@@ -27,6 +30,12 @@ namespace aniso {
 /// tets: 0.165 T^{3/2}; graded meshes are coarser inside. Measured at the census options:
 /// cylinder.step 0.100, cantilever 0.074, bracket 0.047, U_Joint_2 0.029: the largest.
 inline constexpr double kTetsPerTriangle32 = 0.1;
+/// Tets per V / h³ of a solid of volume V with boundary size h: a uniform mesh has 8.5
+/// (a regular tet holds h³ / (6√2)); 5.15 is kTetsPerTriangle32's share of the uniform
+/// cube's 0.165, so that both estimates agree on compact parts. Measured: u-blox's board and
+/// water_module's sheets were predicted ~50x their tets by T^{3/2} alone, and the budget's
+/// floor coarsened their proximity sources (the default limit, from the memory, reached).
+inline constexpr double kTetsPerVolume = 5.15;
 /// Peak resident bytes per element while meshing, the program's own footprint included in
 /// the margin: per surface triangle (measured, Block.stp in 2D: 288 k triangles 113 MB,
 /// 985 k triangles 203 MB peak RSS, i.e. 130 B per triangle more), and per tet while meshing
@@ -55,9 +64,11 @@ struct ElementBudget {
 };
 
 /// faces[f]: the prediction of face f (null: not meshed); solidFaces[s]: the faces of solid s
-/// (empty for a surface mesh). limit ≤ 0: no budget (fits, predictions filled in).
+/// (empty for a surface mesh); solidVolumes[s]: its volume (missing or 0: not known, T^{3/2}
+/// alone). limit ≤ 0: no budget (fits, predictions filled in).
 ElementBudget decideBudget(const std::vector<const FaceSizePrediction*>& faces,
-                           const std::vector<std::vector<int>>& solidFaces, double limit, double hMax);
+                           const std::vector<std::vector<int>>& solidFaces, double limit, double hMax,
+                           const std::vector<double>& solidVolumes = {});
 
 /// The default N for a machine with `availableBytes` of memory: triangles for dim 2, tets
 /// (the costlier element) for dim 3.

@@ -89,6 +89,12 @@ double FaceSizePrediction::triangles(double hFloor) const {
   return area / face::kIdealTriangleArea;
 }
 
+double FaceSizePrediction::area() const {
+  double a = 0;
+  for (const Sample& s : samples_) a += s.weight;
+  return a;
+}
+
 int applySizeFloor(CSAdaptive2d& cs, double hFloor) {
   int changed = 0;
   cs.modifyControlVertices([&](const Vec2&, Metric2d& m) {

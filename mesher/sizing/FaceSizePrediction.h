@@ -28,6 +28,8 @@ class FaceSizePrediction {
 
   /// Predicted triangles with every length raised to at least hFloor (0: as asked).
   double triangles(double hFloor = 0) const;
+  /// The face's area inside its boundary (the samples' weights: det M_p is the area element).
+  double area() const;
   /// The smallest length asked anywhere in the face (+inf without samples).
   double smallestLength() const { return smallest_; }
 

@@ -20,10 +20,14 @@ ElementBudget surfaceBudget(const Model& model, const std::vector<std::unique_pt
   for (int f = 0; f < nf; ++f)
     if (spaces[f]) faces[f] = &predictions[f];
   std::vector<std::vector<int>> solidFaces;
+  std::vector<double> solidVolumes;
   const bool volume = options.dim == 3 || (options.dim == 0 && !model.solids.empty());
   if (volume)
-    for (std::size_t s = 0; s < model.solids.size(); ++s) solidFaces.push_back(model.solidFaces(static_cast<int>(s)));
-  return decideBudget(faces, solidFaces, options.maxElements, options.sizing.hmaxFor(model.diagonal()));
+    for (std::size_t s = 0; s < model.solids.size(); ++s) {
+      solidFaces.push_back(model.solidFaces(static_cast<int>(s)));
+      solidVolumes.push_back(model.solids[s].cadVolume);
+    }
+  return decideBudget(faces, solidFaces, options.maxElements, options.sizing.hmaxFor(model.diagonal()), solidVolumes);
 }
 
 bool applyBudgetFloor(const ElementBudget& budget, std::vector<std::unique_ptr<CSQuadtree2d>>& spaces) {

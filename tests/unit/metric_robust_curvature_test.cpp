@@ -117,6 +117,21 @@ TEST(ElementBudget, PredictionAndFloor) {
   const ElementBudget volume = decideBudget(faces, {{0}}, 0, 1.0);
   EXPECT_NEAR(volume.tets, kTetsPerTriangle32 * std::pow(volume.triangles, 1.5), 1e-6 * volume.tets);
 
+  // with its volume: a 10 x 10 plate 0.1 thick (two such faces) has about as many tets as
+  // triangles, not T^1.5; a cube of side 10 (six) keeps the T^1.5 estimate within 10 %
+  EXPECT_NEAR(pred.area(), 100.0, 1e-6);
+  const ElementBudget plate = decideBudget({&pred, &pred}, {{0, 1}}, 0, 1.0, {10.0});
+  EXPECT_NEAR(plate.tets, plate.triangles, 1e-6 * plate.tets);
+  EXPECT_LT(plate.tets, 0.1 * kTetsPerTriangle32 * std::pow(plate.triangles, 1.5));
+  const FaceSizePrediction* six[] = {&pred, &pred, &pred, &pred, &pred, &pred};
+  const std::vector<const FaceSizePrediction*> cube(std::begin(six), std::end(six));
+  const ElementBudget uniform = decideBudget(cube, {{0, 1, 2, 3, 4, 5}}, 0, 1.0, {1000.0});
+  const ElementBudget unknown = decideBudget(cube, {{0, 1, 2, 3, 4, 5}}, 0, 1.0);
+  EXPECT_LE(uniform.tets, unknown.tets);
+  // the face is graded (0.1 and 1): its mean size is below the large side, so the volume
+  // bound stays above the T^1.5 estimate's half at least
+  EXPECT_GT(uniform.tets, 0.5 * unknown.tets);
+
   EXPECT_EQ(applySizeFloor(cs, 0.5) > 0, true);
   EXPECT_NEAR(FaceSizePrediction(cs, b).triangles(), pred.triangles(0.5), 0.15 * pred.triangles(0.5));
 }
