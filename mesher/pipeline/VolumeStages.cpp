@@ -51,6 +51,7 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
   // one budget for all rounds, from the first surface: rounds must not compound
   const double firstTriangles = static_cast<double>(r.surface.mesh.triangles.size());
   const double budget = kMaxProximityGrowth * firstTriangles;
+  std::optional<bool> thinWhole;
   for (int round = 1; round <= kMaxProximityRounds; ++round) {
     const std::string name = "round " + std::to_string(round);
     vin.surface = &r.surface.mesh;
@@ -91,11 +92,15 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
     std::vector<SizingSource> sources = thinSources(r.volume.thin, hmin, &faceSizes, in.model);
     sources.insert(sources.end(), failed.begin(), failed.end());
     px.predictedTriangles = predictedTriangles(r.surface.mesh, sources);
-    const bool thinWhole = static_cast<double>(r.volume.thin.size()) >= kThinWholeShare * triangles;
+    // thin as a whole or in places: decided on the first surface (a finer surface of a part
+    // refined at a few times its thickness is mostly thin spots again)
+    if (!thinWhole) thinWhole = static_cast<double>(r.volume.thin.size()) >= kThinWholeShare * triangles;
+    const bool whole = *thinWhole;
     std::string notRun = "nothing the minimum size would refine";
-    if (px.predictedTriangles > budget && !thinWhole) {
+    const double thinLimit = std::min(budget, std::max(kThinInPlacesGrowth * firstTriangles, kThinInPlacesTriangles));
+    if (px.predictedTriangles > thinLimit && !whole) {
       // thin in places: sizes up to kMaxThinAspect times the thickness (flat tetrahedra
-      // across, but no slivers) within a smaller budget; when even that does not fit, the
+      // across, but no slivers) within the smaller budget; when even that does not fit, the
       // thin solids that do, the failed solids first (a solid without tetrahedra weighs
       // more than thin spots left as they are)
       const std::vector<SizingSource> thin(sources.begin(), sources.end() - static_cast<std::ptrdiff_t>(failed.size()));
@@ -126,7 +131,7 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
                    (failed.empty() ? std::string() : "; the failed solids first"));
       }
     }
-    if (px.predictedTriangles > budget && kMinProximityGrowth * triangles < budget && thinWhole) {
+    if (px.predictedTriangles > budget && kMinProximityGrowth * triangles < budget && whole) {
       sources = sourcesWithinBudget(r.surface.mesh, sources, budget, &px.budgetFactor);
       roundFactor = px.budgetFactor;
       px.predictedTriangles = predictedTriangles(r.surface.mesh, sources);

@@ -6,7 +6,9 @@
 //     (CoarseSolids.h failedSolidSources), and the whole surface is meshed again (shared
 //     edges stay consistent). Sources asking for more than the budget (kMaxProximityGrowth
 //     times the first surface, all rounds together) are scaled to fit when the model is
-//     thin as a whole (kThinWholeShare); a round is not run when its sources are empty,
+//     thin as a whole (kThinWholeShare); a model thin in places has a smaller budget
+//     (kThinInPlacesGrowth, kMaxThinAspect); a solid failing on a finer surface has its
+//     refinement undone (UndoRefinement.h); a round is not run when its sources are empty,
 //     beyond the budget, or add too little (kMinProximityGrowth); a finer surface that
 //     leaves more faces unmeshed is dropped.
 //   2 the final volume of the surface kept (no stop when thin);
@@ -38,16 +40,22 @@ inline constexpr int kMaxProximityRounds = 2;
 inline constexpr double kMaxProximityGrowth = 10.0;
 /// A model thin as a whole — at least this share of the surface's triangles thin — gets
 /// sources beyond the budget scaled to fit (sourcesWithinBudget); a model thin in places
-/// (an assembly's skins and sheets) keeps its surface then (docs/volume.md).
+/// (an assembly's skins and sheets) has the smaller budget below (docs/volume.md).
 inline constexpr double kThinWholeShare = 0.5;
-/// A model thin in places whose sources exceed the budget gets them scaled up to this
-/// factor (elements up to this many times as large as the part is thick: flat tetrahedra
-/// across it, about 20 deg at the base edges, but no slivers) to fit kThinInPlacesGrowth
-/// times the first surface's triangles, all rounds together; the thin solids that fit no
-/// such scaling keep their surface (cheapestGroupsWithinBudget). Measured: NEO's 1 um
-/// labels, with 2x per round, compounded to 3.4x and 4.2 M tets, 312 s.
+/// A model thin in places (not thin as a whole) is refined to the thickness when the
+/// surface stays within kThinInPlacesTriangles or kThinInPlacesGrowth times the first
+/// surface (and kMaxProximityGrowth), all rounds together; beyond, its sources are scaled
+/// up, to at most kMaxThinAspect (elements up to that many times as large as the part is
+/// thick: flat tetrahedra across it, about 20 deg at the base edges, but no slivers), to
+/// fit kThinInPlacesGrowth times the first surface, and when even that does not fit, the
+/// thin solids that fit are refined (cheapestGroupsWithinBudget). A time guard: the volume
+/// grows with the surface (about 4 tets per triangle). Measured at the defaults: u-blox_ZED's
+/// board asks 8.2x of 390 k triangles (16.2 M tets, 293 s; scaled to 2x: 3.7 M, 104 s);
+/// water_module's sheets 1.5 M of 235 k (scaled to 2x: 0.84 deg, volume -1.3 %; as asked:
+/// 5.1 deg); NEO's 1 um labels, at 4x: 5 M tets, 314 s.
 inline constexpr double kMaxThinAspect = 8.0;
 inline constexpr double kThinInPlacesGrowth = 2.0;
+inline constexpr double kThinInPlacesTriangles = 1.6e6;
 /// A round whose sources would add less than this share of triangles is not run.
 inline constexpr double kMinProximityGrowth = 1.05;
 
