@@ -24,7 +24,7 @@ P = m.points; r = np.hypot(P[:, 0], P[:, 1])
 assert np.all((np.abs(r - 10) < 1e-6) | (np.abs(P[:, 2]) < 1e-6) | (np.abs(P[:, 2] - 40) < 1e-6)), 'points off the surface'
 "; then ok all-faces-3d; else bad "all-faces-3d"; fi
 
-for f in 1 2 3; do "$cli" sizing "$models/cylinder.step" --curvature-ratio 0.15 --hmax-rel 0.5 --face $f -o "$t/f$f.vtu" 2> "$t/e" || bad "face $f: $(cat "$t/e")"; done
+for f in 1 2 3; do "$cli" sizing "$models/cylinder.step" --curvature-ratio 0.15 --hmax-rel 0.5 --chord-deviation-rel 0 --face $f -o "$t/f$f.vtu" 2> "$t/e" || bad "face $f: $(cat "$t/e")"; done
 if py "
 import meshio, numpy as np
 lat = None

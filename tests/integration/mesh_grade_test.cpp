@@ -29,6 +29,7 @@ Meshed meshCylinder() {
   MeshRequest request;
   request.options.dim = 3;
   request.options.sizing.anisotropy = 1;
+  request.options.sizing.chordDeviationRel = 0;  // 12 per circle alone: the polygon's deficit
   request.options.maxElements = 1e8;
   m.result = meshModel(m.model, request);
   return m;
