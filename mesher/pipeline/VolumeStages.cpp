@@ -41,6 +41,13 @@ void decide(MeshResult& r, std::string stage, std::string decision, std::string 
   r.decisions.push_back({std::move(stage), std::move(decision), std::move(reason)});
 }
 
+/// The repaired surface of the stages' input with `sizing` in place of the user's.
+SurfaceMeshResult surfaceWith(const VolumeStagesInput& in, const UserSizing& sizing, SurfaceRepairStats& repair) {
+  SurfaceMesherInput sin = in.surface;
+  sin.user = &sizing;
+  return meshRepairedSurface(sin, &repair);
+}
+
 /// Stage 1. True when result.volume is final (no solid thin); false when the surface kept
 /// needs its final volume. `sizing` collects the sources of the kept rounds; `first`
 /// receives the first surface when a finer one replaces it.
@@ -70,10 +77,8 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
       const std::size_t undone =
           undoRefinementOfFailed(*in.model, in.user->sources.size(), r.volume.solids, sizing, r.proximity);
       if (undone > 0) {
-        SurfaceMesherInput sin = in.surface;
-        sin.user = &sizing;
         SurfaceRepairStats repair;
-        SurfaceMeshResult coarser = meshRepairedSurface(sin, &repair);
+        SurfaceMeshResult coarser = surfaceWith(in, sizing, repair);
         px.seconds += since(tr);
         if (failedFaces(coarser) > failedFaces(r.surface)) {
           decide(r, "proximity", name + ": undoing dropped", "the surface left more faces unmeshed");
@@ -145,10 +150,8 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
       return false;
     }
     sizing.sources.insert(sizing.sources.end(), sources.begin(), sources.end());
-    SurfaceMesherInput sin = in.surface;
-    sin.user = &sizing;
     SurfaceRepairStats repair;
-    SurfaceMeshResult finer = meshRepairedSurface(sin, &repair);
+    SurfaceMeshResult finer = surfaceWith(in, sizing, repair);
     px.seconds += since(tr);
     ++px.rounds;
     if (failedFaces(finer) > failedFaces(r.surface)) {
@@ -180,12 +183,10 @@ void coarseSolidRetry(const VolumeStagesInput& in, const VolumeMesherInput& vin,
   const auto tr = Clock::now();
   UserSizing finerSizing = sizing;
   finerSizing.sources.insert(finerSizing.sources.end(), coarse.begin(), coarse.end());
-  SurfaceMesherInput sin = in.surface;
-  sin.user = &finerSizing;
   const std::string name = std::to_string(coarse.size()) + " coarse solids";
   try {
     SurfaceRepairStats repair;
-    SurfaceMeshResult finer = meshRepairedSurface(sin, &repair);
+    SurfaceMeshResult finer = surfaceWith(in, finerSizing, repair);
     if (failedFaces(finer) > failedFaces(r.surface)) {
       decide(r, "coarse-solids", "first mesh kept", name + ": the finer surface left more faces unmeshed");
     } else {
