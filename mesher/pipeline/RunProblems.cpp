@@ -53,6 +53,19 @@ std::vector<Problem> surfaceProblems(const Model& model, const SurfaceMeshResult
     if (ps.size() > 1) detail += " (and " + std::to_string(ps.size() - 1) + " more)";
     out.push_back({EntityRef::face(static_cast<int>(f), parts[f]), Severity::Failed, "face-mesh", detail, "surface"});
   }
+  // faces meshed, then collapsed by the surface repair (SurfaceSlivers.h: narrower than its
+  // tolerance): the surface stays closed over them, but a load or support on them has no nodes
+  std::vector<int> left(sr.faces.size(), 0);
+  for (const int f : sr.mesh.triangleFace)
+    if (f >= 0 && static_cast<std::size_t>(f) < left.size()) ++left[static_cast<std::size_t>(f)];
+  for (const int f : sr.mesh.quadFace)
+    if (f >= 0 && static_cast<std::size_t>(f) < left.size()) ++left[static_cast<std::size_t>(f)];
+  for (std::size_t f = 0; f < sr.faces.size(); ++f) {
+    const FaceOutcome& o = sr.faces[f];
+    if (o.problems.empty() && o.sharedWith < 0 && o.triangles + o.quads > 0 && left[f] == 0)
+      out.push_back({EntityRef::face(static_cast<int>(f), parts[f]), Severity::Note, "face-collapsed",
+                     "narrower than the surface tolerance: merged into its neighbours, it has no elements", "surface"});
+  }
   return out;
 }
 

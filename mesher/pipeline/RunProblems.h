@@ -24,7 +24,9 @@ struct ModelGrade {
 };
 ModelGrade gradeModel(const Model& model);
 
-/// One Failed problem ("face-mesh", phase "surface") per face the surface mesher left out.
+/// One Failed problem ("face-mesh", phase "surface") per face the surface mesher left out,
+/// one Note ("face-collapsed") per face it meshed that the surface repair left without
+/// elements.
 std::vector<Problem> surfaceProblems(const Model& model, const SurfaceMeshResult& surface);
 
 /// The solids' problems, their part names filled in (phase "volume").

@@ -170,6 +170,7 @@ class SliverPass {
   }
 
   bool merge(int a, int c);
+  bool collapse(int a, int c);
   bool flip(int t, int k);
   void compact();
 
@@ -185,10 +186,16 @@ class SliverPass {
   std::vector<std::uint8_t> removed_;
 };
 
-// Collapse of (a, c) into the more constrained node (header, operation 1).
+// Collapse of (a, c) into the more constrained node, or either of two alike (header,
+// operation 1).
 bool SliverPass::merge(int a, int c) {
   if (rank(m_.nodeOn[c]) < rank(m_.nodeOn[a]) || (rank(m_.nodeOn[c]) == rank(m_.nodeOn[a]) && c < a)) std::swap(a, c);
-  if (m_.nodeOn[c].kind == NodeOn::Kind::Vertex) return false;
+  if (collapse(a, c)) return true;
+  return rank(m_.nodeOn[c]) == rank(m_.nodeOn[a]) && collapse(c, a);
+}
+
+// c moved onto a (rank(c) >= rank(a)), when legal (header, operation 1).
+bool SliverPass::collapse(int a, int c) {
   const TriRange ac = uses(a, c);
   if (ac.size() != 2) return false;
   for (const int v : {a, c})

@@ -21,11 +21,13 @@
 // merged overlapping parts) meshed with 0.1 mm triangles is all caps.
 //  1 merge: an edge (a, c) shorter than the local tolerance is collapsed — c's triangles take a,
 //    the two triangles on (a, c) vanish. The node kept is the more constrained one (CAD
-//    vertex, then edge, then face node; then the lower index); a CAD vertex node is never
-//    removed. Legal when every edge at c is used by exactly two triangles (no assembly
-//    interface or open rim there), the link condition holds (a and c share exactly the
-//    two opposite nodes of (a, c)), and every moved triangle keeps a non-zero area and the
-//    side its normal points to.
+//    vertex, then edge, then face node); of two alike, the lower index, else the other
+//    when that one's collapse is illegal. A CAD vertex node is removed only into another
+//    (a CAD edge shorter than the tolerance vanishes: its tets could not keep a dihedral
+//    angle above its length over the local size). Legal when every edge at c is used by
+//    exactly two triangles (no assembly interface or open rim there), the link condition
+//    holds (a and c share exactly the two opposite nodes of (a, c)), and every moved
+//    triangle keeps a non-zero area and the side its normal points to.
 //  2 cap flip: a triangle (a, b, c) with an angle above kCapAngleDeg at c, whose edge
 //    (a, b) is used by exactly one other triangle (a, b, d), is replaced with (a, b, d) by
 //    (a, c, d) and (c, b, d), both on d's face — the edge flip of the quad; across a CAD

@@ -111,8 +111,9 @@ bool validated(SolidPiece& p, const VolumeMesherInput& in, const SolidTetMesh& s
   return p.outcome.status == SolidOutcome::Status::Ok;
 }
 
-/// The faces of the solid's shells that have no surface mesh (a face the surface mesher
-/// left out: its own problem says why).
+/// The faces of the solid's shells that have no surface mesh: a face the surface mesher
+/// left out (its own problem says why), or one the surface repair collapsed (narrower than
+/// its tolerance: the boundary stays closed without it).
 std::vector<int> unmeshedFaces(const Model& model, const std::vector<std::vector<int>>& faceTriangles, int solid) {
   std::vector<int> out;
   for (const int f : model.solidFaces(solid))
@@ -128,7 +129,9 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
   const CancelToken* cancel = in.options.cancel.get();
   checkCancel(cancel, "volume boundary");
   auto t0 = Clock::now();
-  if (const std::vector<int> gone = unmeshedFaces(*in.model, faceTriangles, solid); !gone.empty()) {
+  const BoundaryMesh b = buildBoundaryMesh(*in.model, *in.surface, faceTriangles, solid);
+  const std::vector<std::string> broken = checkBoundaryMesh(b, *in.surface);
+  if (const std::vector<int> gone = unmeshedFaces(*in.model, faceTriangles, solid); !gone.empty() && !broken.empty()) {
     std::string list;
     for (std::size_t k = 0; k < gone.size() && k < 5; ++k) list += (k ? ", " : "") + std::to_string(gone[k] + 1);
     if (gone.size() > 5) list += ", ...";
@@ -139,10 +142,8 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
                                   "volume"});
     return p;
   }
-  const BoundaryMesh b = buildBoundaryMesh(*in.model, *in.surface, faceTriangles, solid);
   for (const int f : b.internalFaces)
     logWarning(solidName(solid) + ": face " + std::to_string(f + 1) + " lies inside the solid; it is not kept as a boundary");
-  const std::vector<std::string> broken = checkBoundaryMesh(b, *in.surface);
   p.outcome.times.emplace_back("volume boundary", since(t0));
   for (const std::string& s : broken) fail(p, solidRef(solid), "surface mesh bug: " + s);
   if (!broken.empty()) return p;

@@ -131,7 +131,7 @@ TEST(SurfaceSlivers, StripOfCapsAndShortEdgesIsMendedKeepingTheShellClosed) {
   EXPECT_EQ(m.nodes.size(), nodes);  // merged nodes stay in the node array
 }
 
-TEST(SurfaceSlivers, CadVerticesAreNeverMergedAway) {
+TEST(SurfaceSlivers, CadVerticesAreNotMergedIntoEdgeOrFaceNodes) {
   SurfaceMesh m = stripShell();
   std::vector<int> vertices;
   for (int v = 0; v < static_cast<int>(m.nodes.size()); ++v)
@@ -141,6 +141,28 @@ TEST(SurfaceSlivers, CadVerticesAreNeverMergedAway) {
   for (const auto& t : m.triangles)
     for (const int v : t) used[v] = 1;
   for (const int v : vertices) EXPECT_TRUE(used[v]) << v;
+}
+
+TEST(SurfaceSlivers, ACadEdgeShorterThanTheToleranceVanishesIntoOneVertex) {
+  // the strip's rims end at CAD vertices: its two ends are CAD edges 1e-6 long between two
+  // vertex nodes, which no tet holding them survives; each pair becomes one node
+  SurfaceMesh m = stripShell();
+  std::vector<int> ends;
+  for (int v = 0; v < static_cast<int>(m.nodes.size()); ++v)
+    if (m.nodeOn[v].kind == NodeOn::Kind::Edge && (m.nodes[v].x() == 0 || m.nodes[v].x() == 1)) {
+      m.nodeOn[v] = on(NodeOn::Kind::Vertex, 10 + v);
+      ends.push_back(v);
+    }
+  ASSERT_EQ(ends.size(), 4u);
+  const double volume = enclosedVolume(m);
+  mendSurfaceSlivers(m, 1e-4);
+  expectClosedAndValid(m);
+  EXPECT_GT(shortestEdge(m), 1e-4);
+  EXPECT_NEAR(enclosedVolume(m), volume, 1e-6);
+  std::vector<int> used(m.nodes.size(), 0);
+  for (const auto& t : m.triangles)
+    for (const int v : t) used[v] = 1;
+  EXPECT_EQ(std::count_if(ends.begin(), ends.end(), [&](int v) { return used[v]; }), 2);
 }
 
 TEST(SurfaceSlivers, LeavesAMeshWithoutSliversAsItIs) {
