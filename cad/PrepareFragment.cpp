@@ -1,6 +1,4 @@
 #include <BRepAlgoAPI_BuilderAlgo.hxx>
-#include <BRepBndLib.hxx>
-#include <Bnd_Box.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Standard_Failure.hxx>
@@ -83,7 +81,6 @@ struct Arguments {
   TopTools_IndexedMapOfShape solids;  ///< a solid repaired for the fuse replaces its original
   TopTools_IndexedMapOfShape originals;  ///< the shape's solids
   std::vector<double> volume, area;  ///< indexed by id, [0] unused
-  std::vector<int> openLoops;        ///< faces with open loops (countOpenLoopFaces), by id
   double total = 0;                  ///< sum of |volume|
 };
 
@@ -129,82 +126,11 @@ Fuse runFuse(const Arguments& args, double fuzzy, const std::vector<char>& exclu
         f.failedSolid = i;
         return f;
       }
-      int open = 0;
-      for (int k = 1; k <= f.images[i].Extent(); ++k) open += countOpenLoopFaces(f.images[i](k));
-      if (open > args.openLoops[i]) {
-        f.failure = "solid " + std::to_string(i) + " came out with " + std::to_string(open - args.openLoops[i]) +
-                    " face(s) whose boundary no longer closes";
-        f.failedSolid = i;
-        return f;
-      }
     }
   } catch (const Standard_Failure& e) {
     f.failure = std::string("OpenCASCADE: ") + e.GetMessageString();
   }
   return f;
-}
-
-/// When the fuse of all the solids fails without naming one (OCCT's builder reports an
-/// error, e.g. BOPAlgo_AlertBuilderFailed, for the whole run), the solid to leave out is
-/// found by local fuses: each solid with the solids its bounding box touches (a group); the
-/// culprit is the solid in most failing groups, the smaller on a tie. Groups are fused again
-/// only when they held the culprit. Returns the solids to leave out, in order (at most
-/// `maxOut`), empty when every group fuses (the failure is not local) or no group is left
-/// to try. Cost: one fuse per solid, then one per group that held a culprit.
-std::vector<int> fuseCulprits(const Arguments& args, double fuzzy, const std::vector<char>& excluded, int maxOut) {
-  const int n = args.solids.Extent();
-  std::vector<Bnd_Box> box(static_cast<size_t>(n) + 1);
-  for (int i = 1; i <= n; ++i) {
-    if (excluded[i]) continue;
-    try {
-      BRepBndLib::Add(args.solids(i), box[i], /*useTriangulation=*/false);
-    } catch (const Standard_Failure&) {
-      box[i].SetWhole();
-    }
-    box[i].Enlarge(fuzzy);
-  }
-  std::vector<char> out = excluded;
-  auto groupOf = [&](int i) {
-    std::vector<int> g{i};
-    for (int j = 1; j <= n; ++j)
-      if (j != i && !out[j] && !box[i].IsOut(box[j])) g.push_back(j);
-    return g;
-  };
-  auto fails = [&](const std::vector<int>& g) {
-    if (g.size() < 2) return false;
-    std::vector<char> only(static_cast<size_t>(n) + 1, 1);
-    for (const int j : g) only[j] = 0;
-    return !runFuse(args, fuzzy, only).failure.empty();
-  };
-  std::vector<std::vector<int>> group(static_cast<size_t>(n) + 1);
-  std::vector<char> failing(static_cast<size_t>(n) + 1, 0);
-  for (int i = 1; i <= n; ++i)
-    if (!out[i]) {
-      group[i] = groupOf(i);
-      failing[i] = fails(group[i]);
-    }
-  std::vector<int> culprits;
-  while (static_cast<int>(culprits.size()) < maxOut) {
-    std::vector<int> count(static_cast<size_t>(n) + 1, 0);
-    for (int i = 1; i <= n; ++i)
-      if (failing[i])
-        for (const int j : group[i]) ++count[j];
-    int c = 0;
-    for (int j = 1; j <= n; ++j)
-      if (count[j] > 0 && (c == 0 || count[j] > count[c] ||
-                           (count[j] == count[c] && std::abs(args.volume[j]) < std::abs(args.volume[c]))))
-        c = j;
-    if (c == 0) break;
-    culprits.push_back(c);
-    out[c] = 1;
-    failing[c] = 0;
-    for (int i = 1; i <= n; ++i)
-      if (!out[i] && std::find(group[i].begin(), group[i].end(), c) != group[i].end()) {
-        group[i] = groupOf(i);
-        failing[i] = fails(group[i]);
-      }
-  }
-  return culprits;
 }
 
 /// The fuzzy values to try, the model's first.
@@ -316,7 +242,6 @@ bool mendWires(CadModel::Impl& impl, Arguments& args, int i, double precision) {
     args.total += std::abs(v) - std::abs(args.volume[i]);
     args.volume[i] = v;
     args.area[i] = shapeArea(fixed);
-    args.openLoops[i] = countOpenLoopFaces(fixed);
     return true;
   } catch (const Standard_Failure&) {
     return false;
@@ -329,9 +254,7 @@ Arguments measureArguments(const TopoDS_Shape& shape) {
   a.originals = a.solids;
   a.volume.assign(static_cast<size_t>(a.solids.Extent()) + 1, 0.0);
   a.area.assign(a.volume.size(), 0.0);
-  a.openLoops.assign(a.volume.size(), 0);
   for (int i = 1; i <= a.solids.Extent(); ++i) {
-    a.openLoops[i] = countOpenLoopFaces(a.solids(i));
     a.volume[i] = solidVolume(a.solids(i));
     a.total += std::abs(a.volume[i]);
     a.area[i] = shapeArea(a.solids(i));
@@ -363,18 +286,6 @@ void fragmentSolids(CadModel::Impl& impl, double diag, OverlapPolicy policy, Pre
   int repaired = 0;
   std::vector<char> tried(static_cast<size_t>(n) + 1, 0);
   const int maxUnfused = std::min(kMaxUnfusedSolids, static_cast<int>(kMaxUnfusedShare * n));
-  auto leaveOut = [&](int bad) {
-    excluded[static_cast<size_t>(bad)] = 1;
-    unfused += (unfused.empty() ? "" : ", ") + std::to_string(bad) + " \"" +
-               impl.solidName(args.originals(bad), bad) + "\"";
-  };
-  if (!f.failure.empty() && f.failedSolid == 0 && n > 2) {
-    for (const int bad : fuseCulprits(args, fuzzies.front(), excluded, maxUnfused)) leaveOut(bad);
-    if (!unfused.empty()) {
-      f = runFuse(args, fuzzies.front(), excluded);
-      if (f.failure.empty()) report.fuzzyValue = fuzzies.front();
-    }
-  }
   for (int k = 0; k < 2 * maxUnfused && !f.failure.empty() && f.failedSolid > 0 && n > 2; ++k) {
     const int bad = f.failedSolid;
     if (!tried[static_cast<size_t>(bad)]) {
@@ -387,7 +298,9 @@ void fragmentSolids(CadModel::Impl& impl, double diag, OverlapPolicy policy, Pre
       }
     }
     if (static_cast<int>(std::count(excluded.begin(), excluded.end(), 1)) >= maxUnfused) break;
-    leaveOut(bad);
+    excluded[static_cast<size_t>(bad)] = 1;
+    unfused += (unfused.empty() ? "" : ", ") + std::to_string(bad) + " \"" +
+               impl.solidName(args.originals(bad), bad) + "\"";
     f = runFuse(args, fuzzies.front(), excluded);
     if (f.failure.empty()) report.fuzzyValue = fuzzies.front();
   }

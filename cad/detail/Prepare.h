@@ -76,11 +76,6 @@ double shapeArea(const TopoDS_Shape& shape);
 /// what a step that rebuilds the solids into a new compound keeps besides them.
 void addLooseFaces(const TopoDS_Shape& shape, const TopTools_IndexedMapOfShape& solids, TopoDS_Compound& c);
 
-/// Number of faces of the shape with a loop whose consecutive edges miss each other in
-/// (u,v) by more than a tenth of the face's parametric extent: faces the face mesher
-/// refuses (FaceLoops.cpp). A step that raises it has broken faces (PrepareOpenLoops.cpp).
-int countOpenLoopFaces(const TopoDS_Shape& shape);
-
 /// Number of edges (not degenerate) bounding exactly one face of the shape.
 int countFreeEdges(const TopoDS_Shape& shape);
 
