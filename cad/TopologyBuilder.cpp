@@ -228,6 +228,13 @@ void buildFace(const ShapeMaps& maps, int fi, Model& model) {
   mf.surface = std::make_shared<OcctSurface>(forwardFace, name);
   mf.reversed = face.Orientation() == TopAbs_REVERSED;
   mf.tolerance = BRep_Tool::Tolerance(face);
+  try {
+    GProp_GProps g;
+    BRepGProp::SurfaceProperties(forwardFace, g);
+    mf.cadArea = g.Mass() > 0 ? g.Mass() : 0;
+  } catch (const Standard_Failure&) {
+    mf.cadArea = 0;  // not known
+  }
   double u0, u1, v0, v1;
   BRepTools::UVBounds(forwardFace, u0, u1, v0, v1);
   if (u0 <= u1 && v0 <= v1) {

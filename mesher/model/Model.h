@@ -71,6 +71,7 @@ struct ModelFace {
   std::vector<Loop> loops;  ///< the outer loop first, then the inner loops (holes)
   Box2 uvBounds;            ///< parametric bounds of the face (trimmed)
   double tolerance = 0;
+  double cadArea = 0;       ///< the CAD kernel's area of the face; 0 when not known
   std::string name;         ///< the face's own name in the CAD file (STEP), "" when none
 };
 

@@ -14,6 +14,7 @@
 #include "mesher/core/PredictionBoard.h"
 #include "mesher/sizing/BoundaryUpdate.h"
 #include "mesher/sizing/FaceControlSpace.h"
+#include "mesher/sizing/VolumeChordBound.h"
 #include "mesher/sizing/SurfaceBudget.h"
 #include "mesher/quad/QuadSizing.h"
 #include "mesher/surface/ContourDiscretization.h"
@@ -121,6 +122,7 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
   // 1: control spaces.
   auto t = Clock::now();
   std::vector<std::unique_ptr<CSQuadtree2d>> spaces(nf);
+  const double chord = volumeChordDeviation(model, in.options.sizing.chordDeviationRel * model.diagonal());
   const CancelToken* cancel = in.options.cancel.get();
   parallelFor(nf, in.options.threads, [&](int f) {
     if (!faceMeshed(in, f)) return;
@@ -131,6 +133,7 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
     fin.params = in.options.sizing;
     fin.analytic = in.analytic;
     fin.user = in.user;
+    fin.chordDeviation = chord;
     spaces[f] = buildFaceControlSpace(fin);
   }, "control spaces");
   r.times.emplace_back("control_space", since(t));

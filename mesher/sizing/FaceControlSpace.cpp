@@ -189,7 +189,8 @@ std::unique_ptr<CSQuadtree2d> buildFaceControlSpace(const FaceSizingInput& in) {
   const int face = in.face;
   const ModelFace& f = model.faces.at(static_cast<size_t>(face));
   const double diag = model.diagonal();
-  const CurvatureSizing sizing = CurvatureSizing::from(in.params, diag);
+  CurvatureSizing sizing = CurvatureSizing::from(in.params, diag);
+  if (in.chordDeviation >= 0) sizing.chordDeviation = in.chordDeviation;
   const double gMin = parameterizationGuard(in.params, diag);
   const Box2 bounds = faceBounds(f, face);
   // Every evaluation below uses a private clone of the surface (thread safety).

@@ -28,6 +28,9 @@ struct FaceSizingInput {
   SizingParameters params;
   const ControlSpace2d* analytic = nullptr;    ///< user's 2D sizing in this face's (u, v), optional
   const UserSizing* user = nullptr;            ///< user's 3D sources, optional
+  /// The chord deviation (absolute, VolumeChordBound.h); negative: the model-wide one of
+  /// `params`.
+  double chordDeviation = -1;
 };
 
 /// The g_min guard of M_p (sec. 2.2.1) for a model: one parametric unit maps to at least

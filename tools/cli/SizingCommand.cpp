@@ -13,6 +13,7 @@
 #include "mesher/core/Error.h"
 #include "mesher/core/FileExtension.h"
 #include "mesher/sizing/FaceControlSpace.h"
+#include "mesher/sizing/VolumeChordBound.h"
 #include "tools/cli/Commands.h"
 #include "tools/app/ModelInput.h"
 
@@ -76,6 +77,7 @@ int runSizing(const SizingArgs& args) {
   fin.params = args.params;
   fin.analytic = analytic.get();
   fin.user = &user;
+  fin.chordDeviation = volumeChordDeviation(in.model, args.params.chordDeviationRel * in.model.diagonal());
   if (args.face != 0) {
     fin.face = args.face - 1;
     io::writeControlSpaceVtu(buildFaceControlSpace(fin)->grid(), args.output);
