@@ -32,6 +32,18 @@ SurfaceRepairStats repairSurface(const Model& model, double tolerance, SurfaceMe
     logDebug("surface repair: " + std::to_string(u.foldedBefore) + " folded edges, " + std::to_string(u.flips) +
              " flips, " + std::to_string(u.regions) + " regions (" + std::to_string(u.nodesDropped) +
              " nodes dropped), " + std::to_string(u.foldedAfter) + " left");
+  // a fold region re-triangulated across a narrow face can leave its sub-tolerance edges
+  // and caps again: mended once more, kept only when it leaves no more folds
+  if (u.flips + u.regions > 0) {
+    SurfaceMesh again = mesh;
+    const SurfaceSliverStats s2 = mendSurfaceSlivers(again, tolerance, &model);
+    if (s2.nodesMerged + s2.capsFlipped > 0 && countFoldedEdges(again) <= u.foldedAfter) {
+      mesh = std::move(again);
+      r.nodesMerged += s2.nodesMerged;
+      r.capsFlipped += s2.capsFlipped;
+      r.facesChanged.insert(r.facesChanged.end(), s2.facesChanged.begin(), s2.facesChanged.end());
+    }
+  }
   return r;
 }
 

@@ -3,7 +3,8 @@
 // (issue 16; mesher/pipeline/Pipeline.h runs it after every surface meshing, the volume
 // mesher after every round of boundary splits): the caps and sub-tolerance edges first
 // (SurfaceSlivers.h: merged and flipped within `tolerance`), then the folds
-// (UnfoldSurface.h: flips inside a face, FoldRegion.h). Both keep a closed oriented
+// (UnfoldSurface.h: flips inside a face, FoldRegion.h), then the slivers once more when
+// the folds were mended (kept when that leaves no more folds). Both keep a closed oriented
 // surface closed, oriented and conforming; nodes left in no triangle stay in the node
 // array. Runs on meshes of linear triangles only (no quads, no mid nodes): on any other
 // mesh it changes nothing. Deterministic.
