@@ -1,6 +1,8 @@
 #include "mesher/pipeline/RunProblems.h"
 
 #include <algorithm>
+#include <set>
+#include <tuple>
 
 namespace aniso {
 
@@ -17,6 +19,8 @@ ModelGrade gradeModel(const Model& topo) {
   const std::vector<std::string> parts = facePartNames(topo);
   ModelGrade g;
   g.skipFaces.assign(topo.faces.size(), 0);
+  // the detail drops the place in the loop: two junctions of a loop can say the same
+  std::set<std::tuple<EntityKind, int, std::string>> seen;
   for (const ModelIssue& i : topo.check()) {
     // the message names its entity; the problem's detail is the rest of it
     const std::size_t colon = i.message.find(": ");
@@ -37,7 +41,7 @@ ModelGrade gradeModel(const Model& topo) {
           g.skipFaces[static_cast<std::size_t>(f)] = 1;
       else g.usable = false;
     }
-    g.problems.push_back(std::move(p));
+    if (seen.insert({ref.kind, ref.id, p.code + p.detail}).second) g.problems.push_back(std::move(p));
   }
   if (std::all_of(g.skipFaces.begin(), g.skipFaces.end(), [](char c) { return c != 0; })) g.usable = false;
   return g;
