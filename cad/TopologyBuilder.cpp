@@ -61,6 +61,19 @@
 namespace aniso::cad {
 namespace {
 
+/// The kernel's area or volume that `props` (a BRepGProp call) adds up; 0 when it fails
+/// or is not positive (not known).
+template <class Props>
+double measure(const Props& props) {
+  try {
+    GProp_GProps g;
+    props(g);
+    return g.Mass() > 0 ? g.Mass() : 0;
+  } catch (const Standard_Failure&) {
+    return 0;
+  }
+}
+
 std::string occtMessage(const Standard_Failure& e) {
   const char* m = e.GetMessageString();
   return (m && *m) ? std::string(m) : std::string(e.DynamicType()->Name());
@@ -228,13 +241,7 @@ void buildFace(const ShapeMaps& maps, int fi, Model& model) {
   mf.surface = std::make_shared<OcctSurface>(forwardFace, name);
   mf.reversed = face.Orientation() == TopAbs_REVERSED;
   mf.tolerance = BRep_Tool::Tolerance(face);
-  try {
-    GProp_GProps g;
-    BRepGProp::SurfaceProperties(forwardFace, g);
-    mf.cadArea = g.Mass() > 0 ? g.Mass() : 0;
-  } catch (const Standard_Failure&) {
-    mf.cadArea = 0;  // not known
-  }
+  mf.cadArea = measure([&](GProp_GProps& g) { BRepGProp::SurfaceProperties(forwardFace, g); });
   double u0, u1, v0, v1;
   BRepTools::UVBounds(forwardFace, u0, u1, v0, v1);
   if (u0 <= u1 && v0 <= v1) {
@@ -333,13 +340,7 @@ void buildSolid(const ShapeMaps& maps, int si, Model& model,
     }
   }
   ms.outerShell = indexIn(maps.shells, outer, "shell");
-  try {
-    GProp_GProps g;
-    BRepGProp::VolumeProperties(solid, g);
-    ms.cadVolume = g.Mass() > 0 ? g.Mass() : 0;
-  } catch (const Standard_Failure&) {
-    ms.cadVolume = 0;  // not known
-  }
+  ms.cadVolume = measure([&](GProp_GProps& g) { BRepGProp::VolumeProperties(solid, g); });
   for (const TopoDS_Shape& s : shells) {
     // Faces met INTERNAL lie inside the material. A shell made only of them encloses no
     // volume (OCCT's way of keeping a face inside a solid, e.g. after a general fuse of

@@ -7,6 +7,7 @@
 #include "mesher/pipeline/RunProblems.h"
 #include "mesher/pipeline/SurfaceStage.h"
 #include "mesher/pipeline/VolumeStages.h"
+#include "mesher/sizing/VolumeChordBound.h"
 
 namespace aniso {
 
@@ -49,6 +50,7 @@ MeshResult meshModel(const Model& model, const MeshRequest& request) {
   sin.analytic = request.analytic;
   sin.user = &request.user;
   sin.skipFaces = std::move(grade.skipFaces);
+  sin.chordDeviation = volumeChordDeviation(model, request.options.sizing.chordDeviationRel * model.diagonal());
   r.surface = meshRepairedSurface(sin, &r.surfaceRepair, surfaceRepairApplies(sin, r.dim));
   r.times = r.surface.times;
   if (r.surface.mesh.triangles.empty() && r.surface.mesh.quads.empty()) {

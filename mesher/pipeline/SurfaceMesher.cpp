@@ -122,7 +122,9 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
   // 1: control spaces.
   auto t = Clock::now();
   std::vector<std::unique_ptr<CSQuadtree2d>> spaces(nf);
-  const double chord = volumeChordDeviation(model, in.options.sizing.chordDeviationRel * model.diagonal());
+  const double chord = in.chordDeviation
+                           ? *in.chordDeviation
+                           : volumeChordDeviation(model, in.options.sizing.chordDeviationRel * model.diagonal());
   const CancelToken* cancel = in.options.cancel.get();
   parallelFor(nf, in.options.threads, [&](int f) {
     if (!faceMeshed(in, f)) return;

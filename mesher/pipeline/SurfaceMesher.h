@@ -10,6 +10,7 @@
 // Faces are independent once their edges are discretized, so steps 1 and 3 run on
 // `threads` threads; every result is stored by face index and assembled in order, so the
 // output is identical for any number of threads.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,9 @@ struct SurfaceMesherInput {
   /// Faces not to mesh (empty, or one flag per face): faces whose CAD topology could not be
   /// used (the caller reports why). Their edges are still discretized for their neighbours.
   std::vector<char> skipFaces;
+  /// The chord deviation (absolute, VolumeChordBound.h) when already known for this model
+  /// and options (the pipeline's surface rounds share it); unset: computed.
+  std::optional<double> chordDeviation;
 };
 
 /// Quality in metric space (thesis 2.5) of one face or of the whole mesh: η_M, μ_M and
