@@ -30,6 +30,7 @@
 #include <tuple>
 
 #include "mesher/core/Error.h"
+#include "mesher/model/EdgePoint.h"
 #include "mesher/surface/contour/CoincidentEdges.h"
 #include "mesher/surface/contour/CornerParity.h"
 #include "mesher/surface/contour/CuspNodes.h"
@@ -270,7 +271,7 @@ EdgeDiscretization placeNodes(const Model& model, int e, std::vector<double> t, 
       d.nodes[i] = vertexNodes[ed.v0];
       continue;
     }
-    const Vec3 p = ed.curve->point(d.t[i]);
+    const Vec3 p = edgePoint(model, e, d.t[i]);
     if (!p.allFinite()) throw MeshingError(edgeName(e) + ": the 3D curve cannot be evaluated at t = " + std::to_string(d.t[i]));
     NodeOn on;
     on.kind = NodeOn::Kind::Edge;

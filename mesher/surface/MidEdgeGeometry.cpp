@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "mesher/core/Error.h"
+#include "mesher/model/EdgePoint.h"
 #include "mesher/surface/contour/PeriodicUv.h"
 
 namespace aniso {
@@ -104,8 +105,8 @@ MidNode MidEdgeGeometry::onCurve(int a, int b, const Link& link) const {
   // The projection of the chord midpoint (near the arc-length midpoint), unless the
   // parameter midpoint's image is nearer the chord midpoint.
   double t = ed.curve->project(chordMid, tm, std::min(ta, tb), std::max(ta, tb));
-  Vec3 p = ed.curve->point(t);
-  const Vec3 pm = ed.curve->point(tm);
+  Vec3 p = edgePoint(model_, link.edge, t);
+  const Vec3 pm = edgePoint(model_, link.edge, tm);
   if (!p.allFinite() || (pm.allFinite() && (pm - chordMid).norm() < (p - chordMid).norm())) {
     t = tm;
     p = pm;
