@@ -85,5 +85,21 @@ TEST(MeshGrade, SliversAndLowQualityAreDegraded) {
   EXPECT_EQ(codes, (std::vector<std::string>{"slivers"}));
 }
 
+TEST(MeshGrade, LowQualityNamesTheSolidsThatPullTheMeanDown) {
+  Meshed m = meshCylinder();
+  ASSERT_TRUE(m.result.meshed());
+  VolumeMeshResult v = m.result.volume;
+  QualityStats poor;
+  for (int i = 0; i < 4; ++i) poor.add(0.25);
+  v.solids.at(0).quality.meanRatio = poor;
+  v.quality.meanRatio = poor;
+  std::string detail;
+  for (const Problem& p : gradeVolumeMesh(m.model, v, true))
+    if (p.code == "low-quality") detail = p.detail;
+  // 2 V / A of the cylinder: 2 * 12566 / (2 pi 10 40 + 2 pi 100) = 8
+  EXPECT_NE(detail.find("mostly solid 1 '"), std::string::npos) << detail;
+  EXPECT_NE(detail.find("(4 tets, mean 0.25, about 8 thick)"), std::string::npos) << detail;
+}
+
 }  // namespace
 }  // namespace aniso
