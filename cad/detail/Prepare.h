@@ -48,6 +48,21 @@ int restoreInternalFaces(CadModel::Impl& impl, const InternalFaces& kept, const 
 /// tol; keeps the result only if it leaves fewer free edges. Solids are not touched.
 void sewLooseFaces(CadModel::Impl& impl, double tol, PrepareReport& report);
 
+/// A face whose CAD area is at most this fraction of the squared diagonal has none: the
+/// fuse leaves such faces where it splits a face along a line it already bounds.
+inline constexpr double kNoAreaRel = 1e-12;
+
+/// A loop closed in 3D within the CAD tolerance whose (u, v) gap exceeds this share of the
+/// face's parametric extent is not meshed (kLoopGapWithinTolerance, FaceLoops.cpp).
+inline constexpr double kFuseLoopGapShare = 0.1;
+
+/// For each part (a set of solids of `whole`), how many of its faces the mesher's own rule
+/// finds wanting in `whole`: an issue of Model::check that is not a Defect (a loop open
+/// beyond the tolerance, an unusable face), a Defect whose (u, v) gap exceeds
+/// kFuseLoopGapShare, or no area (kNoAreaRel). When the mesher cannot read `whole` at all,
+/// every part counts all its faces.
+std::vector<int> flawedFaceCounts(const TopoDS_Shape& whole, const std::vector<TopTools_IndexedMapOfShape>& parts);
+
 /// General fuse of the solids so that touching solids share their interface faces. Parts
 /// that touch within the model's tolerance are glued: the fuzzy value is the largest
 /// vertex/edge tolerance, between 1e-7 and 1e-6 of the diagonal, and the fuse falls back to

@@ -184,10 +184,16 @@ class Validator {
     const double d3 = std::max({(sb - sa).norm(), (sm - sa).norm(), (sb - sm).norm()});
     const double tol = tolerance({ea.tolerance, eb.tolerance, face.tolerance, vertexTol(va)});
     const bool uvOk = gap.x() <= kUvGapRatio * ext.x() && gap.y() <= kUvGapRatio * ext.y();
-    if (!(d3 <= tol) || !uvOk)
+    if (!(d3 <= tol) || !uvOk) {
       defect(name + ": open by (" + fmt(gap.x()) + ", " + fmt(gap.y()) + ") in (u,v), " + fmt(d3) +
                  " in 3D (tolerance " + fmt(tol) + ")",
              d3 <= tol ? ModelIssue::Level::Defect : ModelIssue::Level::Gap);
+      const auto offPeriod = [](double g, bool periodic, double period) {
+        return periodic && period > 0 ? std::abs(g - period * std::round(g / period)) : g;
+      };
+      out_.back().uvGapShare = std::max(offPeriod(gap.x(), dom.uPeriodic, dom.uPeriod) / ext.x(),
+                                        offPeriod(gap.y(), dom.vPeriodic, dom.vPeriod) / ext.y());
+    }
   }
 
   static Vec2 uvExtent(const ModelFace& face, const SurfaceDomain& dom) {

@@ -115,6 +115,11 @@ struct ModelIssue {
   int index = -1;
   Level level = Level::Unusable;
   std::string message;  ///< names the entity by its 1-based id
+  /// For a loop that does not close: its (u, v) gap, whole periods of a periodic surface
+  /// removed, over the face's parametric extent (the larger of the two axes); 0 otherwise.
+  /// The face mesher bridges a gap closed in 3D up to a tenth of the extent
+  /// (surface/contour/FaceLoops.cpp), so a Defect above that is not meshed.
+  double uvGapShare = 0;
 };
 
 struct Model {
