@@ -105,6 +105,23 @@ TEST(SurfaceThinFace, GapsOfAStripAndItsWidth) {
   EXPECT_EQ(findBoundaryGaps(fine, boundarySegments(fine, b), 0.5, 0.02).size(), 20u);
 }
 
+TEST(SurfaceThinFace, OneUpdateResolvesAStripAlongSegmentsMuchLongerThanItsWidth) {
+  // Segments 1 long across a gap of 0.004 (a first discretization at h_max): between the
+  // sources the size must stay near the width, not grade back up over half a segment.
+  const FaceBoundary b = strip(10, 0.004, 10);
+  SizingParameters params;
+  params.anisotropy = 1;
+  CSQuadtree2d cs(box(-0.1, -0.1, 10.1, 10.1), params);
+  cs.setContinuousSource(CSAnalytic2d(box(-0.1, -0.1, 10.1, 10.1), [](const Vec2&) { return Metric2d::isotropic(1); }));
+  BoundaryUpdateOptions o;
+  o.hMin = 0.01;
+  updateFromBoundary(cs, b, params, o);
+  for (const double x : {2.2, 5.3, 5.77, 8.61}) {
+    const double h = cs.getMetric(Vec2(x, 0.002)).sizing.angleLengths().h2;
+    EXPECT_LT(h, 0.01) << "at x = " << x;
+  }
+}
+
 TEST(SurfaceThinFace, FaceMinSizePolicy) {
   BoundaryUpdateOptions o;
   o.hMin = 1e-3;
