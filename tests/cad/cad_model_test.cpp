@@ -116,7 +116,8 @@ TEST(CadModel, BrepRoundTrip) {
 // Ag9900M_MT (NX, 35 solids, tolerances up to 0.5 mm): OCCT's fuse of all the solids fails
 // without naming one, and where it runs it leaves faces the face mesher cannot close. The
 // pairs that fail name the culprits, the mesher's own loop rule names the solids the fuse
-// broke: the rest is fused (shared faces), the others are reported and meshed on their own.
+// broke: the rest is fused (shared faces), the others are reported and meshed on their own
+// (11 at the strict fuzzy value, 6 at the model's own tolerance, which is kept).
 TEST(CadModel, AFuseThatFailsAsAWholeRunsWithoutTheSolidsItBreaks) {
   const std::string path = std::string(ANISOMESH_SHARED_DIR) + "/assemblies/Ag9900M_MT.stp";
   if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not found";
@@ -124,7 +125,7 @@ TEST(CadModel, AFuseThatFailsAsAWholeRunsWithoutTheSolidsItBreaks) {
   const PrepareReport r = m.prepare({});
   EXPECT_GT(r.sharedFaces, 0);
   EXPECT_FALSE(r.unfusedSolids.empty());
-  EXPECT_LT(r.unfusedSolids.size(), 18u);
+  EXPECT_LT(r.unfusedSolids.size(), 11u);
   bool named = false;
   for (const std::string& w : r.warnings) named = named || w.find("could not be fragmented with the others") != std::string::npos;
   EXPECT_TRUE(named);
