@@ -436,7 +436,8 @@ void fragmentSolids(CadModel::Impl& impl, double diag, OverlapPolicy policy, Pre
     // a model whose own tolerance is looser than the fuzzy values above: once more at it
     const double loose = looseFuzzy(impl.shape, diag);
     if (loose > 0 && (!best.f.failure.empty() || best.left > 0)) {
-      Fuse g = runFuse(args, loose, none);
+      Arguments looseArgs = args;  // its own copy: a wire mended for this try stays in it
+      Fuse g = runFuse(looseArgs, loose, none);
       Attempt a;
       if (g.failure.empty()) {
         a.f = std::move(g);
@@ -444,9 +445,12 @@ void fragmentSolids(CadModel::Impl& impl, double diag, OverlapPolicy policy, Pre
         a.excluded = none;
       } else {
         failures += "; fuzzy " + num(loose) + " (the model's tolerance): " + g.failure;
-        a = fuseLeavingOut(impl, args, loose, std::move(g));
+        a = fuseLeavingOut(impl, looseArgs, loose, std::move(g));
       }
-      if (a.better(best)) best = std::move(a);
+      if (a.better(best)) {
+        best = std::move(a);
+        args = std::move(looseArgs);
+      }
     }
     if (best.f.failure.empty()) report.fuzzyValue = best.fuzzy;
   }
