@@ -172,13 +172,15 @@ ChildOutcome guarded(const std::function<std::string()>& body) {
 }
 
 /// Waits until the child has ended (its end of `alive` closes) or the token stops the
-/// run: then the child is killed and Cancelled thrown naming `phase`.
+/// run: then the child is killed and Cancelled thrown naming `phase`. A deadline that passed
+/// while the child ran is this phase's too, even when the child ended before it was seen.
 void awaitChild(pid_t pid, int alive, const CancelToken* cancel, const char* phase) {
   constexpr int kPollMs = 50;  // how often a request without deadline is noticed
   pollfd p{alive, POLLIN, 0};
   while (cancel) {  // bounded by the token's deadline
     const int r = poll(&p, 1, kPollMs);
-    if (r > 0 || (r < 0 && errno != EINTR)) return;
+    const bool ended = r > 0 || (r < 0 && errno != EINTR);
+    if (ended && !cancel->stopped()) return;
     if (cancel->stopped()) {
       kill(pid, SIGKILL);
       waitpid(pid, nullptr, 0);
