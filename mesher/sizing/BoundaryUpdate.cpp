@@ -22,7 +22,9 @@ constexpr double kThinFaceResolvedGap = 0.5;
 /// kMaxGapSamples of them per segment. SlenderSurface.brep (a planar strip 0.4 um wide and
 /// 10 mm long) at the defaults: its first segments are 1 mm long; with sources at their
 /// ends and midpoints only, three rounds left it with needles (mean ratio 0.849); with these
-/// it meshes in one.
+/// it meshes in one. Surface meshes only (BoundaryUpdateOptions::thinFaces): in a volume
+/// mesh the strips are an assembly's narrow side faces, and resolving them along their
+/// whole length grew NEO's surface by 20 % (its 60 um label's sides) and its run past 300 s.
 constexpr double kGapSourceSpacing = 2.0;
 constexpr int kMaxGapSamples = 4096;
 
@@ -46,7 +48,7 @@ struct Source {
 /// segment: a tapering gap is narrower at one end); none where the gap is narrower than
 /// `narrowest`.
 void addGapSources(const CSAdaptive2d& cs, const BoundarySegments& bs, const BoundaryGap& g, double narrowest,
-                   double hMin, const SizingParameters& params, std::vector<Source>& sources,
+                   double hMin, bool along, const SizingParameters& params, std::vector<Source>& sources,
                    BoundaryUpdateStats& stats) {
   const BoundarySegment& s = bs.segments[g.segment];
   const BoundarySegment& t = bs.segments[g.other];
@@ -58,7 +60,7 @@ void addGapSources(const CSAdaptive2d& cs, const BoundarySegments& bs, const Bou
   // samples every kGapSourceSpacing gap widths along it, or the sizes between the samples
   // grade up again and the rounds of alg. 3.1 end before the strip is resolved.
   const double spacing = kGapSourceSpacing * std::max(g.width(), hMin);
-  const int n = static_cast<int>(std::min<double>(kMaxGapSamples, std::ceil(s.length / spacing)));
+  const int n = along ? static_cast<int>(std::min<double>(kMaxGapSamples, std::ceil(s.length / spacing))) : 0;
   for (int k = 1; k < n; ++k) {
     const Vec2 p = s.a + (s.b - s.a) * (static_cast<double>(k) / n);
     samples.push_back({p, atEnd(p)});
@@ -123,7 +125,7 @@ BoundaryUpdateStats updateFromBoundary(CSAdaptive2d& cs, const FaceBoundary& bou
   const double narrowest = hMin < options.hMin ? kThinFaceResolvedGap * hMin : options.resolvedGapRatio * hMin;
   for (const BoundaryGap& g : gaps) {
     if (!(g.metricWidth < lMin)) continue;  // found by its real width only: resolved already
-    addGapSources(cs, bs, g, narrowest, hMin, params, sources, stats);
+    addGapSources(cs, bs, g, narrowest, hMin, options.thinFaces, params, sources, stats);
   }
   for (const Source& src : sources) cs.insertDiscreteSource(src.at, src.m);
   return stats;
