@@ -160,7 +160,10 @@ Fuse runFuse(Arguments& args, double fuzzy, const std::vector<char>& excluded) {
     }
     // the mesher must be able to read what the fuse made of each solid
     const std::vector<int>& before = flawsBefore(args);
-    const std::vector<int> after = flawedFaceCounts(f.gf->Shape(), f.images);
+    std::vector<TopTools_IndexedMapOfShape> fused(f.images.size());  // left-out solids: not in the result
+    for (int i = 1; i <= args.solids.Extent(); ++i)
+      if (!excluded[i]) fused[static_cast<std::size_t>(i)] = f.images[i];
+    const std::vector<int> after = flawedFaceCounts(f.gf->Shape(), fused);
     for (int i = 1; i <= args.solids.Extent(); ++i)
       if (!excluded[i] && after[static_cast<std::size_t>(i)] > before[static_cast<std::size_t>(i)]) f.broken.push_back(i);
     if (!f.broken.empty())
@@ -171,14 +174,18 @@ Fuse runFuse(Arguments& args, double fuzzy, const std::vector<char>& excluded) {
   return f;
 }
 
+/// The shape's largest vertex or edge tolerance; 0 when OCCT cannot tell.
+double largestTolerance(const TopoDS_Shape& shape) {
+  try {
+    return std::max(BRep_Tool::MaxTolerance(shape, TopAbs_VERTEX), BRep_Tool::MaxTolerance(shape, TopAbs_EDGE));
+  } catch (const Standard_Failure&) {
+    return 0;
+  }
+}
+
 /// The fuzzy values to try, the model's first.
 std::vector<double> fuzzyValues(const TopoDS_Shape& shape, double diag) {
-  double tol = 0;
-  try {
-    tol = std::max(BRep_Tool::MaxTolerance(shape, TopAbs_VERTEX), BRep_Tool::MaxTolerance(shape, TopAbs_EDGE));
-  } catch (const Standard_Failure&) {
-    tol = 0;
-  }
+  const double tol = largestTolerance(shape);
   const double lo = kFuzzyMinRel * diag;
   const double model = std::clamp(tol, lo, kFuzzyMaxRel * diag);
   if (model > lo) return {model, lo};
@@ -189,13 +196,7 @@ std::vector<double> fuzzyValues(const TopoDS_Shape& shape, double diag) {
 /// vertex/edge tolerance, at most kFuzzyLooseRel of the diagonal; 0 when that is not above
 /// the values of fuzzyValues (nothing new to try).
 double looseFuzzy(const TopoDS_Shape& shape, double diag) {
-  double tol = 0;
-  try {
-    tol = std::max(BRep_Tool::MaxTolerance(shape, TopAbs_VERTEX), BRep_Tool::MaxTolerance(shape, TopAbs_EDGE));
-  } catch (const Standard_Failure&) {
-    return 0;
-  }
-  const double loose = std::min(tol, kFuzzyLooseRel * diag);
+  const double loose = std::min(largestTolerance(shape), kFuzzyLooseRel * diag);
   return loose > kFuzzyMaxRel * diag ? loose : 0;
 }
 

@@ -110,8 +110,8 @@ std::string lowQualityCause(const Model& model, const VolumeMeshResult& volume) 
     return a.first != b.first ? a.first > b.first : a.second < b.second;
   });
   std::string why = ", mostly";
-  QualityStats rest = volume.quality.meanRatio;
-  double sum = rest.mean() * static_cast<double>(rest.count()), count = static_cast<double>(rest.count());
+  const QualityStats& all = volume.quality.meanRatio;
+  double sum = all.mean() * static_cast<double>(all.count()), count = static_cast<double>(all.count());
   for (std::size_t i = 0; i < shortfall.size() && i < kShown; ++i) {
     const std::size_t s = shortfall[i].second;
     const QualityStats& q = volume.solids[s].quality.meanRatio;

@@ -185,6 +185,7 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
           bopt.hMin = hMin;
           bopt.cadTolerance = model.faces[f].tolerance;
           bopt.thinFaces = !volume;
+          bopt.gapsAlongSegments = !volume;
           const BoundaryUpdateStats u = updateFromBoundary(*spaces[f], boundaries[f], in.options.sizing, bopt);
           if (u.total() == 0) return;
           logDebug("face " + std::to_string(f + 1) + " boundary sizing: " + std::to_string(u.shortSegments) +

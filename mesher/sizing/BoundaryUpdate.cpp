@@ -22,9 +22,10 @@ constexpr double kThinFaceResolvedGap = 0.5;
 /// kMaxGapSamples of them per segment. SlenderSurface.brep (a planar strip 0.4 um wide and
 /// 10 mm long) at the defaults: its first segments are 1 mm long; with sources at their
 /// ends and midpoints only, three rounds left it with needles (mean ratio 0.849); with these
-/// it meshes in one. Surface meshes only (BoundaryUpdateOptions::thinFaces): in a volume
-/// mesh the strips are an assembly's narrow side faces, and resolving them along their
-/// whole length grew NEO's surface by 20 % (its 60 um label's sides) and its run past 300 s.
+/// it meshes in one. Surface meshes only (BoundaryUpdateOptions::gapsAlongSegments): in an
+/// assembly the strips are narrow side faces (NEO's 60 um label), and resolving them along
+/// their whole length grew NEO's surface mesh by 20 % (562 k -> 674 k triangles, --dim 2);
+/// its 3D census run with them stopped at the 300 s limit on a loaded machine.
 constexpr double kGapSourceSpacing = 2.0;
 constexpr int kMaxGapSamples = 4096;
 
@@ -125,7 +126,7 @@ BoundaryUpdateStats updateFromBoundary(CSAdaptive2d& cs, const FaceBoundary& bou
   const double narrowest = hMin < options.hMin ? kThinFaceResolvedGap * hMin : options.resolvedGapRatio * hMin;
   for (const BoundaryGap& g : gaps) {
     if (!(g.metricWidth < lMin)) continue;  // found by its real width only: resolved already
-    addGapSources(cs, bs, g, narrowest, hMin, options.thinFaces, params, sources, stats);
+    addGapSources(cs, bs, g, narrowest, hMin, options.gapsAlongSegments, params, sources, stats);
   }
   for (const Source& src : sources) cs.insertDiscreteSource(src.at, src.m);
   return stats;

@@ -61,8 +61,10 @@ struct BoundaryUpdateOptions {
   double hMin = 0;          ///< the model's h_min (lower bound of the requested sizes)
   bool vicinity = false;    ///< the vicinity rule on every face (thin faces and strips always get it)
   double stripFraction = 0.6;  ///< a face with more of its boundary length across a gap is a strip
-  bool thinFaces = true;          ///< thin faces get their own h_min, gap sources all along a
-                                  ///< segment (false: volume meshes, above and BoundaryUpdate.cpp)
+  bool thinFaces = true;          ///< thin faces get their own h_min (false: volume meshes, above)
+  /// Gap sources all along a segment much longer than the gap (BoundaryUpdate.cpp,
+  /// kGapSourceSpacing; false: volume meshes).
+  bool gapsAlongSegments = true;
   double thinFaceWidth = 0.5;     ///< a face narrower than this × h_min is thin
   double thinFaceRatio = 0.1;     ///< lowest h_min_f, relative to h_min
   double cadTolerance = 0;        ///< the face's CAD tolerance (model units)
