@@ -1,5 +1,7 @@
 #include "mesher/pipeline/SurfaceStage.h"
 
+#include <chrono>
+
 #include "mesher/volume/VolumeMesher.h"
 
 namespace aniso {
@@ -13,7 +15,9 @@ SurfaceMeshResult meshRepairedSurface(const SurfaceMesherInput& in, SurfaceRepai
   *repair = {};
   if (!apply) return sr;
   const double tolerance = kSurfaceSliverTolerance * in.options.sizing.hminFor(in.model->diagonal());
+  const auto t0 = std::chrono::steady_clock::now();
   *repair = repairSurface(*in.model, tolerance, sr.mesh);
+  sr.times.emplace_back("surface repair", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   return sr;
 }
 

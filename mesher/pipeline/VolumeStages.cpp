@@ -41,6 +41,13 @@ void decide(MeshResult& r, std::string stage, std::string decision, std::string 
   r.decisions.push_back({std::move(stage), std::move(decision), std::move(reason)});
 }
 
+/// Logs (info) what one meshing took, by phase.
+void logTimes(const std::string& what, double seconds, const std::vector<std::pair<std::string, double>>& phases) {
+  std::string text = what + ": " + num(seconds) + " s";
+  for (const auto& [phase, t] : phases) text += ", " + phase + " " + num(t);
+  logInfo(text);
+}
+
 /// The repaired surface of the stages' input with `sizing` in place of the user's.
 SurfaceMeshResult surfaceWith(const VolumeStagesInput& in, const UserSizing& sizing, SurfaceRepairStats& repair) {
   SurfaceMesherInput sin = in.surface;
@@ -66,6 +73,7 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
     const auto tr = Clock::now();
     r.volume = {};  // the previous round's tetrahedra are not needed while meshing again (peak memory)
     r.volume = meshVolumes(vin);
+    logTimes("proximity " + name + ": volume", since(tr), r.volume.times);
     const std::vector<SizingSource> failed = failedSolidSources(*in.model, r.surface.mesh, r.volume.solids);
     if (r.volume.thin.empty() && failed.empty()) {
       decide(r, "proximity", name + ": not needed", "no solid thinner than its boundary triangles");
@@ -151,7 +159,9 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
     }
     sizing.sources.insert(sizing.sources.end(), sources.begin(), sources.end());
     SurfaceRepairStats repair;
+    const auto ts = Clock::now();
     SurfaceMeshResult finer = surfaceWith(in, sizing, repair);
+    logTimes("proximity " + name + ": surface", since(ts), finer.times);
     px.seconds += since(tr);
     ++px.rounds;
     if (failedFaces(finer) > failedFaces(r.surface)) {

@@ -61,13 +61,43 @@ class SliverPass {
   // The adjacency is built once per pass in flat arrays (a pass over a 2.2 M triangle
   // surface rebuilt a hash map of vectors, half its time in malloc) and not updated within
   // the pass: an operation only touches triangles none of whose nodes changed (dirty_).
-  SliverPass(SurfaceMesh& m, double tolerance, const MidEdgeGeometry* geo, SurfaceSliverStats& stats)
+  // The first pass looks at every triangle. A later one (`previous`: the nodes the pass
+  // before changed) looks only at the triangles with a node within one edge of such a
+  // node: whether an operation is legal depends on the triangle, the stars of its nodes
+  // and the triangles across its edges, all unchanged elsewhere since they were last
+  // refused — so the result is the full pass's. Its adjacency holds the triangles it can
+  // reach from those (the stars of their nodes).
+  SliverPass(SurfaceMesh& m, double tolerance, const MidEdgeGeometry* geo, SurfaceSliverStats& stats,
+             const std::vector<std::uint8_t>* previous)
       : m_(m), tol_(tolerance), geo_(geo), stats_(stats), dirty_(m.nodes.size(), 0) {
     const int nt = static_cast<int>(m.triangles.size());
+    std::vector<int> known;  // the triangles in the adjacency, ascending
+    if (!previous) {
+      scan_.resize(static_cast<std::size_t>(nt));
+      for (int t = 0; t < nt; ++t) scan_[static_cast<std::size_t>(t)] = t;
+      known = scan_;
+    } else {
+      // grow the node marks one ring at a time: dirty -> near (1 ring) -> star nodes of
+      // the scanned triangles; each ring is one sweep over the triangles
+      std::vector<std::uint8_t> mark = *previous;
+      const auto grow = [&](std::vector<int>* hit) {
+        std::vector<std::uint8_t> next = mark;
+        for (int t = 0; t < nt; ++t) {
+          const Tri& tri = m.triangles[static_cast<std::size_t>(t)];
+          if (!mark[tri[0]] && !mark[tri[1]] && !mark[tri[2]]) continue;
+          if (hit) hit->push_back(t);
+          for (const int v : tri) next[static_cast<std::size_t>(v)] = 1;
+        }
+        mark = std::move(next);
+      };
+      grow(nullptr);  // mark: the nodes within one edge of a changed node
+      grow(&scan_);   // scan_: the triangles using them; mark: their nodes
+      grow(&known);   // known: the triangles using those (every star the operations read)
+    }
     std::vector<std::pair<std::uint64_t, int>> edges;
-    edges.reserve(3 * static_cast<std::size_t>(nt));
+    edges.reserve(3 * known.size());
     nodeStart_.assign(m.nodes.size() + 1, 0);
-    for (int t = 0; t < nt; ++t)
+    for (const int t : known)
       for (int k = 0; k < 3; ++k) {
         edges.push_back({edgeKey(m.triangles[t][k], m.triangles[t][(k + 1) % 3]), t});
         ++nodeStart_[static_cast<std::size_t>(m.triangles[t][k]) + 1];
@@ -82,15 +112,18 @@ class SliverPass {
     for (std::size_t v = 1; v < nodeStart_.size(); ++v) nodeStart_[v] += nodeStart_[v - 1];
     nodeTriList_.resize(static_cast<std::size_t>(nodeStart_.back()));
     std::vector<int> fill(nodeStart_.begin(), nodeStart_.end() - 1);
-    for (int t = 0; t < nt; ++t)
+    for (const int t : known)
       for (int k = 0; k < 3; ++k) nodeTriList_[static_cast<std::size_t>(fill[static_cast<std::size_t>(m.triangles[t][k])]++)] = t;
     removed_.assign(m.triangles.size(), 0);
   }
 
+  /// The nodes in a triangle this pass changed (for the next pass's scope).
+  const std::vector<std::uint8_t>& changedNodes() const { return dirty_; }
+
   /// One pass over the triangles; true when something changed (the mesh is compacted).
   bool run() {
     bool changed = false;
-    for (int t = 0; t < static_cast<int>(m_.triangles.size()); ++t) {
+    for (const int t : scan_) {
       if (removed_[t]) continue;
       for (int k = 0; k < 3 && !removed_[t]; ++k) {
         const int a = m_.triangles[t][k], c = m_.triangles[t][(k + 1) % 3];
@@ -178,6 +211,7 @@ class SliverPass {
   double tol_;
   const MidEdgeGeometry* geo_;
   SurfaceSliverStats& stats_;
+  std::vector<int> scan_;                ///< the triangles the pass looks at, ascending
   std::vector<std::uint64_t> edgeKeys_;  ///< sorted (edge key, triangle): the keys ...
   std::vector<int> edgeTris_;            ///< ... and the triangles
   std::vector<int> nodeStart_;           ///< per node, its first entry in nodeTriList_
@@ -331,9 +365,11 @@ SurfaceSliverStats mendSurfaceSlivers(SurfaceMesh& mesh, double tolerance, const
       geo.reset();  // nodes on entities the model lacks (hand-made meshes): no CAD test
     }
   }
+  std::vector<std::uint8_t> changed;
   for (int pass = 0; pass < kMaxSliverPasses; ++pass) {
-    SliverPass p(mesh, tolerance, geo ? &*geo : nullptr, stats);
+    SliverPass p(mesh, tolerance, geo ? &*geo : nullptr, stats, pass == 0 ? nullptr : &changed);
     if (!p.run()) break;
+    changed = p.changedNodes();
   }
   std::sort(stats.facesChanged.begin(), stats.facesChanged.end());
   stats.facesChanged.erase(std::unique(stats.facesChanged.begin(), stats.facesChanged.end()), stats.facesChanged.end());

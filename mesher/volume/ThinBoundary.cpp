@@ -6,65 +6,60 @@
 #include <algorithm>
 #include <map>
 #include <set>
+#include <unordered_map>
+
+#include "mesher/volume/MeshQueries.h"
 
 namespace aniso {
-
-namespace {
-std::array<int, 3> sorted(int a, int b, int c) {
-  std::array<int, 3> t{a, b, c};
-  std::sort(t.begin(), t.end());
-  return t;
-}
-}  // namespace
 
 std::vector<ThinSpot> findThinBoundary(const SolidTetMesh& s, const std::vector<std::array<int, 3>>& triangles,
                                        const std::vector<int>& triangleFace) {
   const del3d::TetMesh& m = s.mesh;
-  std::map<std::array<int, 3>, int> faceOf;
-  for (std::size_t k = 0; k < triangles.size(); ++k)
-    faceOf[sorted(triangles[k][0], triangles[k][1], triangles[k][2])] = triangleFace[k];
-  // Outward (area-weighted) normals at the surface nodes, from the hull faces.
+  std::unordered_map<int, del3d::VertexId> vertexOf;  // surface node -> kernel vertex
+  vertexOf.reserve(s.node.size());
+  for (std::uint32_t v = 0; v < s.node.size(); ++v)
+    if (s.node[v] >= 0) vertexOf.emplace(s.node[v], del3d::VertexId(v));
+  std::vector<std::array<del3d::VertexId, 3>> tri(triangles.size());
+  std::vector<char> known(triangles.size(), 1);
+  // Outward (area-weighted) normals at the surface nodes, from the boundary triangles.
   std::vector<Vec3> normal(m.numVertices(), Vec3::Zero());
-  const auto outward = [&](del3d::TetId t, int i) {
-    const Vec3 a = m.point(m.vertex(t, del3d::kFaceVertex[i][0])), b = m.point(m.vertex(t, del3d::kFaceVertex[i][1])),
-               c = m.point(m.vertex(t, del3d::kFaceVertex[i][2]));
-    const Vec3 n = (b - a).cross(c - a);  // kFaceVertex: oriented towards vertex i's side
-    return Vec3(n.dot(m.point(m.vertex(t, i)) - a) > 0 ? -n : n);
-  };
-  for (std::uint32_t k = 0; k < m.tetSlots(); ++k) {
-    const del3d::TetId t(k);
-    if (!m.isAlive(t)) continue;
-    for (int i = 0; i < 4; ++i)
-      if (!m.neighbour(t, i).valid()) {
-        const Vec3 n = outward(t, i);
-        for (int j = 0; j < 3; ++j) normal[m.vertex(t, del3d::kFaceVertex[i][j]).index] += n;
+  for (std::size_t k = 0; k < triangles.size(); ++k) {
+    for (int j = 0; j < 3; ++j) {
+      const auto it = vertexOf.find(triangles[k][j]);
+      if (it == vertexOf.end()) {
+        known[k] = 0;
+        break;
       }
+      tri[k][j] = it->second;
+    }
+    if (!known[k]) continue;
+    const Vec3 n = (m.point(tri[k][1]) - m.point(tri[k][0])).cross(m.point(tri[k][2]) - m.point(tri[k][0]));
+    for (int j = 0; j < 3; ++j) normal[tri[k][j].index] += n;
   }
   std::vector<ThinSpot> out;
-  for (std::uint32_t k = 0; k < m.tetSlots(); ++k) {
-    const del3d::TetId t(k);
-    if (!m.isAlive(t)) continue;
-    for (int i = 0; i < 4; ++i) {
-      if (m.neighbour(t, i).valid()) continue;
-      const del3d::VertexId x = m.vertex(t, i);
-      if (!s.isFixed(x) || !(normal[x.index].norm() > 0)) continue;
-      Vec3 p[3];
-      int node[3];
-      for (int j = 0; j < 3; ++j) {
-        const del3d::VertexId v = m.vertex(t, del3d::kFaceVertex[i][j]);
-        p[j] = m.point(v);
-        node[j] = s.node[v.index];
-      }
-      const Vec3 n = outward(t, i).normalized();
-      if (n.dot(normal[x.index].normalized()) > kOppositeNormalCos) continue;
-      const Vec3 c = (p[0] + p[1] + p[2]) / 3;
-      const double height = -n.dot(m.point(x) - c);
-      const double size = ((p[1] - p[0]).norm() + (p[2] - p[1]).norm() + (p[0] - p[2]).norm()) / 3;
-      if (!(height > 0) || height >= kThinRatio * size) continue;
-      const auto f = faceOf.find(sorted(node[0], node[1], node[2]));
-      if (f == faceOf.end()) continue;
-      out.push_back({f->second, c, size, height});
+  std::vector<del3d::TetId> star;
+  for (std::size_t k = 0; k < triangles.size(); ++k) {
+    if (!known[k]) continue;
+    const auto& [a, b, c] = tri[k];
+    const volume::FaceHandle h = volume::findFace(m, a, b, c, star);
+    if (!h.valid()) continue;  // not recovered (yet): no tet stands on it
+    const Vec3 p[3] = {m.point(a), m.point(b), m.point(c)};
+    const Vec3 n = (p[1] - p[0]).cross(p[2] - p[0]).normalized();
+    // the apex of the tet on the inner side (the other one, if any, is outside the solid)
+    del3d::VertexId x = m.vertex(h.tet, h.face);
+    if (n.dot(m.point(x) - p[0]) > 0) {
+      const del3d::TetId o = m.neighbour(h.tet, h.face);
+      if (!o.valid()) continue;
+      for (int i = 0; i < 4; ++i)
+        if (const del3d::VertexId v = m.vertex(o, i); v != a && v != b && v != c) x = v;
     }
+    if (!s.isFixed(x) || !(normal[x.index].norm() > 0)) continue;
+    if (n.dot(normal[x.index].normalized()) > kOppositeNormalCos) continue;
+    const Vec3 centroid = (p[0] + p[1] + p[2]) / 3;
+    const double height = -n.dot(m.point(x) - centroid);
+    const double size = ((p[1] - p[0]).norm() + (p[2] - p[1]).norm() + (p[0] - p[2]).norm()) / 3;
+    if (!(height > 0) || height >= kThinRatio * size) continue;
+    out.push_back({triangleFace[k], centroid, size, height});
   }
   if (static_cast<double>(out.size()) < kThinFraction * static_cast<double>(triangles.size())) out.clear();
   return out;

@@ -3,8 +3,9 @@
 // 3.5.2, alg. 3.3: "update ACS_v with proximity of boundary faces"): where the solid is
 // thinner than its surface mesh is coarse, every tet reaches from one side to the other
 // and no interior point fits in between (periodic_u_cst: 87 % of the tets had their four
-// nodes on the surface). After boundary recovery and carving, the tet on each boundary
-// triangle T has an apex x; T is thin when x is a surface node on the opposite side —
+// nodes on the surface). After boundary recovery — carved or not, complete or not: a
+// triangle the recovery left missing is skipped — the tet on the inner side of each
+// boundary triangle T has an apex x; T is thin when x is a surface node on the opposite side —
 // the outward normals at T and at x point against each other (cosine below
 // kOppositeNormalCos), x lies on T's inner side — and the height of x over T's plane is
 // below kThinRatio times T's mean edge length (a regular tet's apex stands at 0.816 of its
@@ -53,10 +54,10 @@ struct ThinSpot {
   int solid = -1;        ///< 0-based model solid it was found in (set by the volume mesher)
 };
 
-/// The thin boundary triangles of s (after carving: the hull is the boundary); empty when
-/// fewer than kThinFraction of them are thin.
+/// The thin boundary triangles of s; empty when fewer than kThinFraction of them are thin.
 /// `triangles`/`triangleFace`: the solid's boundary triangles (surface node triples,
-/// outward) and their faces (BoundaryMesh).
+/// outward: the inner side is where their normal points away from) and their faces
+/// (BoundaryMesh).
 std::vector<ThinSpot> findThinBoundary(const SolidTetMesh& s, const std::vector<std::array<int, 3>>& triangles,
                                        const std::vector<int>& triangleFace);
 

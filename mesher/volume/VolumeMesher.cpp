@@ -162,6 +162,13 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
   p.outcome.recovery = rr.stats;
   if (!rr.left.empty()) {
     p.outcome.times.emplace_back("volume recovery", since(t0));
+    if (in.stopWhenThin) {
+      // a solid thin for its triangles gets a finer surface anyway: its missing entities
+      // are not split and recovered again (each try of a thin part is costly)
+      p.thin = findThinBoundary(bt.tets, b.triangles, b.triangleFace);
+      for (ThinSpot& spot : p.thin) spot.solid = solid;
+      if (!p.thin.empty()) return p;
+    }
     reportLeft(p, solid, *in.surface, rr.left);
     for (const RecoveryFailure& f : rr.left) p.missing.push_back(f.nodes);
     return p;

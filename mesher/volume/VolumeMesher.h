@@ -27,7 +27,8 @@
 // repairs) applied.
 // After carving, the boundary triangles whose tet reaches across a thin part are found
 // (ThinBoundary.h, alg. 3.3's proximity check) and returned; with stopWhenThin such a solid
-// stops there (the caller meshes the surface finer and calls again).
+// stops there (the caller meshes the surface finer and calls again) — also when the
+// recovery left entities missing: a thin solid's missing entities are not split.
 // Faces inside a solid (ModelSolid::embedded) are constraints of its tetrahedra like its
 // boundary (recovered, kept by refinement and improvement, crossed by carving); at the end
 // the two-sided ones (MeshOptions::internalFaces) are split apart (CrackSplit.h).
@@ -72,7 +73,8 @@ struct VolumeMesherInput {
   /// 6, 2, 1, 0 after the fold guard of the face mesher), 3 left it failed.
   int maxSplitRounds = 8;
   /// Alg. 3.3's proximity check (ThinBoundary.h): a solid with thin boundary triangles
-  /// after carving stops there (no refinement, no tetrahedra in the result) and reports
+  /// after carving, or after a recovery that left entities missing, stops there (no
+  /// splits, no refinement, no tetrahedra in the result) and reports
   /// them in VolumeMeshResult::thin, for the caller to mesh the surface finer and call again.
   bool stopWhenThin = false;
   /// Optional (SolidMeshCache.h): solids whose boundary is unchanged since an earlier call

@@ -60,15 +60,17 @@ inline std::vector<Vec3> cubeSurfacePoints(int n, std::uint64_t seed = 7) {
 
 /// The solid (the cube mapped by the linear map `map`, triangulated Delaunay for the cube
 /// or, with !delaunayInMap, for the mapped points): every hull face constrained;
-/// `boundary` gets the hull faces as sorted point index triples.
+/// `boundary` gets the hull faces as sorted point index triples. With !removeBox the
+/// enclosing box stays (the triangulation before carving) and `boundary` is left empty.
 inline SolidTetMesh cubeSolid(int n, std::set<Triple>& boundary, std::uint64_t seed = 7,
-                              const Mat3& map = Mat3::Identity(), bool delaunayInMap = true) {
+                              const Mat3& map = Mat3::Identity(), bool delaunayInMap = true,
+                              bool removeBox = true) {
   std::vector<Vec3> pts = cubeSurfacePoints(n, seed);
   for (Vec3& p : pts) p = map * p;
   SolidTetMesh s;
   s.solid = 0;
   del3d::DelaunayOptions opt;
-  opt.removeBox = true;
+  opt.removeBox = removeBox;
   opt.boxMargin = 10.0;
   // Delaunay where the points are the cube's (sec. 5.3: in metric space), or in space
   if (delaunayInMap) opt.transform = map.inverse();
@@ -77,7 +79,7 @@ inline SolidTetMesh cubeSolid(int n, std::set<Triple>& boundary, std::uint64_t s
   for (std::size_t i = 0; i < pts.size(); ++i)
     if (r.vertexOf[i].valid()) s.node[r.vertexOf[i].index] = static_cast<int>(i);
   boundary.clear();
-  for (std::uint32_t k = 0; k < s.mesh.tetSlots(); ++k) {
+  for (std::uint32_t k = 0; k < s.mesh.tetSlots() && removeBox; ++k) {
     const del3d::TetId t(k);
     if (!s.mesh.isAlive(t)) continue;
     for (int i = 0; i < 4; ++i) {

@@ -18,9 +18,22 @@ SolidTetMesh slab(int n, double thickness, std::set<Triple>& boundary) {
   return cubeSolid(n, boundary, 7, map, false);
 }
 
+/// The boundary triangles turned outward (the slab is convex: away from its centre).
+std::vector<std::array<int, 3>> outward(const SurfaceMesh& surface) {
+  Vec3 centre = Vec3::Zero();
+  for (const Vec3& p : surface.nodes) centre += p;
+  centre /= static_cast<double>(surface.nodes.size());
+  std::vector<std::array<int, 3>> out = surface.triangles;
+  for (auto& t : out) {
+    const Vec3 a = surface.nodes[t[0]], b = surface.nodes[t[1]], c = surface.nodes[t[2]];
+    if ((b - a).cross(c - a).dot(a - centre) < 0) std::swap(t[1], t[2]);
+  }
+  return out;
+}
+
 std::vector<ThinSpot> thinSpots(const SolidTetMesh& s, const std::set<Triple>& boundary) {
   const CubeSurface c = cubeSurface(s, boundary);
-  return findThinBoundary(s, c.surface.triangles, c.surface.triangleFace);
+  return findThinBoundary(s, outward(c.surface), c.surface.triangleFace);
 }
 
 TEST(ThinBoundary, ASlabThinnerThanItsTrianglesIsFound) {
@@ -86,6 +99,31 @@ TEST(ThinBoundary, SourcesScaledToTheBudget) {
   for (SizingSource& src : finer) src.metric = Metric3d::isotropic(factor / 1.02 * src.metric.axes().lengths.minCoeff());
   EXPECT_GT(predictedTriangles(c.surface, finer), budget);
   EXPECT_GT(predicted, n);  // still refines
+}
+
+TEST(ThinBoundary, FoundBeforeCarvingAndWithTrianglesMissing) {
+  // the slab's boundary nodes triangulated with the enclosing box kept (as before carving):
+  // the tet on each boundary triangle's inner side is the one that counts
+  std::set<Triple> boundary;
+  const SolidTetMesh carved = slab(8, 0.04, boundary);
+  const std::vector<ThinSpot> after = thinSpots(carved, boundary);
+  ASSERT_FALSE(after.empty());
+  Mat3 map = Mat3::Identity();
+  map(2, 2) = 0.04;
+  std::set<Triple> none;
+  const SolidTetMesh s = cubeSolid(8, none, 7, map, false, false);
+  const int nodes = static_cast<int>(cubeSurfacePoints(8, 7).size());
+  const CubeSurface c = cubeSurface(carved, boundary);
+  std::vector<std::array<int, 3>> triangles = outward(c.surface);
+  const std::vector<ThinSpot> before = findThinBoundary(s, triangles, c.surface.triangleFace);
+  EXPECT_GE(before.size(), after.size() * 9 / 10);
+  for (const ThinSpot& t : before) EXPECT_LE(t.thickness, 0.04 + 1e-12);
+  // a triangle absent from the mesh (here: made of nodes no tet has together) is skipped
+  std::vector<int> faces = c.surface.triangleFace;
+  triangles.push_back({0, nodes / 2, nodes - 1});
+  faces.push_back(0);
+  const std::vector<ThinSpot> missing = findThinBoundary(s, triangles, faces);
+  EXPECT_EQ(missing.size(), before.size());
 }
 
 TEST(ThinBoundary, ACubeIsNotThin) {
