@@ -34,6 +34,7 @@
 #include "mesher/surface/contour/CoincidentEdges.h"
 #include "mesher/surface/contour/CornerParity.h"
 #include "mesher/surface/contour/CuspNodes.h"
+#include "mesher/surface/contour/VertexNearEdge.h"
 #include "mesher/surface/contour/MetricArcLength.h"
 #include "mesher/surface/contour/PeriodicUv.h"
 
@@ -375,7 +376,10 @@ std::vector<EdgeDiscretization> discretizeEdges(const Model& model,
   std::vector<std::vector<double>> params(ne);
   for (int e = 0; e < ne; ++e)
     if (used[e]) params[e] = arcs[arcOf[e]].equalSpacing(n[e]);
-  if (options.evenSegments) contour::matchCuspNodes(model, faceSpaces, params);
+  if (options.evenSegments)
+    contour::matchCuspNodes(model, faceSpaces, params);
+  else  // (a node more would break the even counts quads need)
+    contour::addNodesNearVertices(model, faceSpaces, params);
   std::vector<EdgeDiscretization> out(ne);
   for (int e = 0; e < ne; ++e) {
     if (!used[e]) continue;

@@ -23,7 +23,9 @@
 // loop of a meshed face gets at least 3 segments; with evenSegments odd counts get one more,
 // then faces with an odd number of corners too sharp for a quad get an odd boundary count
 // (contour/CornerParity.h).
-// The nodes are at equal metric arc length. Deterministic.
+// The nodes are at equal metric arc length, plus (triangles only) one on an edge where a
+// loop corner of one of its faces comes within the chord error of it
+// (contour/VertexNearEdge.h). Deterministic.
 #include <vector>
 
 #include "mesher/control/ControlSpace2d.h"
