@@ -43,7 +43,9 @@
 // The removed area is that of caps and of triangles on sub-tolerance edges: the closed,
 // oriented surface stays closed and oriented and conforming; nodes left in no triangle
 // stay in the node array. Passes over the triangles in index order until nothing changes
-// (at most kMaxSliverPasses); deterministic. The mesh must be linear triangles (no quads,
+// (at most kMaxSliverPasses); after the first, a pass visits only the triangles within one
+// edge of a node the pass before changed (the others would be refused again: the same
+// result as a full pass); deterministic. The mesh must be linear triangles (no quads,
 // no mid nodes).
 #include <vector>
 
