@@ -5,6 +5,7 @@
 #include "mesher/volume/TetQuality.h"
 #include "mesher/volume/VolumeImprovement.h"
 #include "mesher/volume/VolumeRefinement.h"
+#include "mesher/volume/improve/SliverRemoval.h"
 #include "volume_refine_fixture.h"
 
 using namespace aniso;
@@ -114,6 +115,30 @@ TEST(VolumeImprove, SliverRemovalReachesTheAngle) {
   // allow a small remainder, never a degenerate one
   EXPECT_LE(st.sliversAfter, q.tets / 200 + 2);
   EXPECT_GT(q.minDihedral, 2.0);
+}
+
+TEST(VolumeImprove, NoPointsInsertedInASolidMadeOfSlivers) {
+  // a slab 0.02 thick with surface triangles about 0.14 across, sized at 0.1: nearly every
+  // tet reaches across it (a film the surface could not be refined for); the sliver removal
+  // flips but inserts no point there
+  std::set<Triple> boundary;
+  Mat3 map = Mat3::Identity();
+  map(2, 2) = 0.02;
+  SolidTetMesh s = cubeSolid(8, boundary, 7, map, false);
+  const std::size_t tetsBefore = s.mesh.numTets();
+  Box3 box;
+  box.add(Vec3(0, 0, 0));
+  box.add(Vec3(1, 1, 0.02));
+  const CSAnalytic3d cs(box, [](const Vec3&) { return Metric3d::isotropic(0.1); });
+  VolumeImproveOptions o;
+  o.passes = 1;
+  o.maxPasses = 1;
+  const VolumeImproveStats st = improveVolume(s, cs, o);
+  ASSERT_TRUE(checkSolid(s, boundary).empty()) << joined(checkSolid(s, boundary));
+  EXPECT_GT(static_cast<double>(st.sliversBefore), improve3d::kInsertionMaxSliverShare * tetsBefore);
+  EXPECT_EQ(st.sliverInsertions, 0u);
+  EXPECT_EQ(st.sliverSteinerPoints, 0u);
+  EXPECT_NEAR(meshVolume(s.mesh), 0.02, 1e-12);
 }
 
 TEST(VolumeImprove, AnisotropicFromANonMetricDelaunayBoundary) {

@@ -232,9 +232,13 @@ std::size_t countSlivers(const SolidTetMesh& s, const VertexMetrics& vm, double 
 
 SliverStats removeSlivers(SolidTetMesh& s, const ControlSpace3d& cs, VertexMetrics& vm, double angleDeg,
                           double euclideanDeg, int rounds, bool insertion, const TetScores* scores) {
-  SliverRemover r(s, cs, vm, angleDeg, euclideanDeg, insertion);
   // The live slivers, rescanned after each round (the only whole-mesh scans).
   std::vector<TetId> current = liveSlivers(s, vm, angleDeg, euclideanDeg, scores);
+  // a solid made of slivers is thinner than its elements: a point inserted there only
+  // makes more flat tets (header)
+  if (static_cast<double>(current.size()) > kInsertionMaxSliverShare * static_cast<double>(s.mesh.numTets()))
+    insertion = false;
+  SliverRemover r(s, cs, vm, angleDeg, euclideanDeg, insertion);
   r.stats.before = current.size();
   vm.setGuardEuclidean(true);
   // Later rounds visit every sliver again: the operators (insertions, Steiner points) make
