@@ -6,44 +6,28 @@
 #include <algorithm>
 #include <map>
 #include <set>
-#include <unordered_map>
 
 #include "mesher/volume/MeshQueries.h"
 
 namespace aniso {
 
-std::vector<ThinSpot> findThinBoundary(const SolidTetMesh& s, const std::vector<std::array<int, 3>>& triangles,
-                                       const std::vector<int>& triangleFace) {
+std::vector<ThinSpot> findThinBoundary(const SolidTetMesh& s, const SolidBoundary& b) {
   const del3d::TetMesh& m = s.mesh;
-  std::unordered_map<int, del3d::VertexId> vertexOf;  // surface node -> kernel vertex
-  vertexOf.reserve(s.node.size());
-  for (std::uint32_t v = 0; v < s.node.size(); ++v)
-    if (s.node[v] >= 0) vertexOf.emplace(s.node[v], del3d::VertexId(v));
-  std::vector<std::array<del3d::VertexId, 3>> tri(triangles.size());
-  std::vector<char> known(triangles.size(), 1);
+  const std::size_t nb = b.embeddedFrom;  // the boundary triangles (the embedded ones follow)
   // Outward (area-weighted) normals at the surface nodes, from the boundary triangles.
   std::vector<Vec3> normal(m.numVertices(), Vec3::Zero());
-  for (std::size_t k = 0; k < triangles.size(); ++k) {
-    for (int j = 0; j < 3; ++j) {
-      const auto it = vertexOf.find(triangles[k][j]);
-      if (it == vertexOf.end()) {
-        known[k] = 0;
-        break;
-      }
-      tri[k][j] = it->second;
-    }
-    if (!known[k]) continue;
-    const Vec3 n = (m.point(tri[k][1]) - m.point(tri[k][0])).cross(m.point(tri[k][2]) - m.point(tri[k][0]));
-    for (int j = 0; j < 3; ++j) normal[tri[k][j].index] += n;
+  for (std::size_t k = 0; k < nb; ++k) {
+    const auto& t = b.triangles[k];
+    const Vec3 n = (m.point(t[1]) - m.point(t[0])).cross(m.point(t[2]) - m.point(t[0]));
+    for (const del3d::VertexId v : t) normal[v.index] += n;
   }
   std::vector<ThinSpot> out;
   std::vector<del3d::TetId> star;
-  for (std::size_t k = 0; k < triangles.size(); ++k) {
-    if (!known[k]) continue;
-    const auto& [a, b, c] = tri[k];
-    const volume::FaceHandle h = volume::findFace(m, a, b, c, star);
+  for (std::size_t k = 0; k < nb; ++k) {
+    const auto& [a, c1, c2] = b.triangles[k];
+    const volume::FaceHandle h = volume::findFace(m, a, c1, c2, star);
     if (!h.valid()) continue;  // not recovered (yet): no tet stands on it
-    const Vec3 p[3] = {m.point(a), m.point(b), m.point(c)};
+    const Vec3 p[3] = {m.point(a), m.point(c1), m.point(c2)};
     const Vec3 n = (p[1] - p[0]).cross(p[2] - p[0]).normalized();
     // the apex of the tet on the inner side (the other one, if any, is outside the solid)
     del3d::VertexId x = m.vertex(h.tet, h.face);
@@ -51,7 +35,7 @@ std::vector<ThinSpot> findThinBoundary(const SolidTetMesh& s, const std::vector<
       const del3d::TetId o = m.neighbour(h.tet, h.face);
       if (!o.valid()) continue;
       for (int i = 0; i < 4; ++i)
-        if (const del3d::VertexId v = m.vertex(o, i); v != a && v != b && v != c) x = v;
+        if (const del3d::VertexId v = m.vertex(o, i); v != a && v != c1 && v != c2) x = v;
     }
     if (!s.isFixed(x) || !(normal[x.index].norm() > 0)) continue;
     if (n.dot(normal[x.index].normalized()) > kOppositeNormalCos) continue;
@@ -59,9 +43,9 @@ std::vector<ThinSpot> findThinBoundary(const SolidTetMesh& s, const std::vector<
     const double height = -n.dot(m.point(x) - centroid);
     const double size = ((p[1] - p[0]).norm() + (p[2] - p[1]).norm() + (p[0] - p[2]).norm()) / 3;
     if (!(height > 0) || height >= kThinRatio * size) continue;
-    out.push_back({triangleFace[k], centroid, size, height});
+    out.push_back({b.triangleFace[k], centroid, size, height});
   }
-  if (static_cast<double>(out.size()) < kThinFraction * static_cast<double>(triangles.size())) out.clear();
+  if (static_cast<double>(out.size()) < kThinFraction * static_cast<double>(nb)) out.clear();
   return out;
 }
 

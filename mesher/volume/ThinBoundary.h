@@ -24,6 +24,7 @@
 #include "mesher/model/Model.h"
 #include "mesher/sizing/UserSizing.h"
 #include "mesher/surface/SurfaceMesh.h"
+#include "mesher/volume/BoundaryTriangulation.h"
 #include "mesher/volume/SolidTetMesh.h"
 
 namespace aniso {
@@ -55,11 +56,9 @@ struct ThinSpot {
 };
 
 /// The thin boundary triangles of s; empty when fewer than kThinFraction of them are thin.
-/// `triangles`/`triangleFace`: the solid's boundary triangles (surface node triples,
-/// outward: the inner side is where their normal points away from) and their faces
-/// (BoundaryMesh).
-std::vector<ThinSpot> findThinBoundary(const SolidTetMesh& s, const std::vector<std::array<int, 3>>& triangles,
-                                       const std::vector<int>& triangleFace);
+/// `b`: the solid's boundary in s's kernel ids (triangulateBoundary: outward, the inner side
+/// is where their normal points away from; the embedded triangles are not looked at).
+std::vector<ThinSpot> findThinBoundary(const SolidTetMesh& s, const SolidBoundary& b);
 
 /// The box sources of the faces with thin spots (see above), faces in increasing order. With
 /// `faces`, it receives the (0-based face, size asked) of each source, in the same order.

@@ -124,6 +124,14 @@ std::vector<int> unmeshedFaces(const Model& model, const std::vector<std::vector
   return out;
 }
 
+/// Alg. 3.3's proximity check on the solid's tets as they are (ThinBoundary.h): its thin
+/// spots into p.thin; true when it has some.
+bool findThin(SolidPiece& p, const BoundaryTriangulation& bt, int solid) {
+  p.thin = findThinBoundary(bt.tets, bt.boundary);
+  for (ThinSpot& spot : p.thin) spot.solid = solid;
+  return !p.thin.empty();
+}
+
 SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<int>>& faceTriangles, int solid) {
   SolidPiece p;
   const CancelToken* cancel = in.options.cancel.get();
@@ -165,9 +173,7 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
     if (in.stopWhenThin) {
       // a solid thin for its triangles gets a finer surface anyway: its missing entities
       // are not split and recovered again (each try of a thin part is costly)
-      p.thin = findThinBoundary(bt.tets, b.triangles, b.triangleFace);
-      for (ThinSpot& spot : p.thin) spot.solid = solid;
-      if (!p.thin.empty()) return p;
+      if (findThin(p, bt, solid)) return p;
     }
     reportLeft(p, solid, *in.surface, rr.left);
     for (const RecoveryFailure& f : rr.left) p.missing.push_back(f.nodes);
@@ -179,9 +185,7 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
   p.outcome.times.emplace_back("volume carving", since(t0));
   for (const std::string& s : carved) fail(p, solidRef(solid), s);
   if (!carved.empty() || !validated(p, in, bt.tets, b, "boundary recovery")) return p;
-  p.thin = findThinBoundary(bt.tets, b.triangles, b.triangleFace);
-  for (ThinSpot& spot : p.thin) spot.solid = solid;
-  if (in.stopWhenThin && !p.thin.empty()) return p;
+  if (findThin(p, bt, solid) && in.stopWhenThin) return p;
 
   std::shared_ptr<VolumeMetricSpace> cs;
   if (in.refine || in.improve || in.quality) {

@@ -5,6 +5,7 @@
 #include <map>
 #include <set>
 
+#include "mesher/core/Segment.h"
 #include "mesher/surface/contour/PeriodicUv.h"
 
 namespace aniso::contour {
@@ -14,14 +15,6 @@ struct Corner {
   int vertex = -1;
   Vec2 uv;
 };
-
-/// Distance from p to the segment [a, b].
-double toSegment(const Vec2& p, const Vec2& a, const Vec2& b) {
-  const Vec2 d = b - a;
-  const double l2 = d.squaredNorm();
-  const double s = l2 > 0 ? std::clamp((p - a).dot(d) / l2, 0.0, 1.0) : 0.0;
-  return (p - (a + s * d)).norm();
-}
 
 /// The corners of face f's loops: each use's two ends on its pcurve.
 std::vector<Corner> corners(const Model& model, int f) {
@@ -62,7 +55,7 @@ void passOverFace(const Model& model, int f, const std::vector<std::vector<doubl
         box.add(b);
         for (const double q : {0.25, 0.5, 0.75}) {
           const Vec2 m = c->point(t0 + q * (t1 - t0));
-          sag = std::max(sag, toSegment(m, a, b));
+          sag = std::max(sag, distanceToSegment(m, a, b));
           box.add(m);
         }
         const double reach = kNearVertexSagitta * sag;
