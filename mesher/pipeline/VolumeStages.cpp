@@ -74,6 +74,9 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
     r.volume = {};  // the previous round's tetrahedra are not needed while meshing again (peak memory)
     r.volume = meshVolumes(vin);
     logTimes("proximity " + name + ": volume", since(tr), r.volume.times);
+    if (r.volume.solidsDeferred > 0)
+      logInfo("proximity " + name + ": " + std::to_string(r.volume.solidsDeferred) +
+              " solids touching a thin one wait for the finer surface (recovered, not refined)");
     const std::vector<SizingSource> failed = failedSolidSources(*in.model, r.surface.mesh, r.volume.solids);
     if (r.volume.thin.empty() && failed.empty()) {
       decide(r, "proximity", name + ": not needed", "no solid thinner than its boundary triangles");

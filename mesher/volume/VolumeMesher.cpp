@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdint>
 #include <exception>
+#include <functional>
 #include <memory>
 #include <map>
 #include <set>
@@ -132,12 +133,24 @@ bool findThin(SolidPiece& p, const BoundaryTriangulation& bt, int solid) {
   return !p.thin.empty();
 }
 
-SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<int>>& faceTriangles, int solid) {
+/// A solid stopped after carving, its phase 4 still to run (finishSolid).
+struct SolidWork {
+  BoundaryMesh b;
+  BoundaryTriangulation bt;
+};
+
+void finishSolid(const VolumeMesherInput& in, const std::vector<std::vector<int>>& faceTriangles, int solid,
+                 SolidPiece& p, const BoundaryMesh& b, BoundaryTriangulation& bt);
+
+/// Phases 1–3 and the thin test of one solid, then (keep null) phase 4. With `keep`, a solid
+/// recovered, carved and not thin stops there and its work moves into *keep.
+SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<int>>& faceTriangles, int solid,
+                     std::unique_ptr<SolidWork>* keep) {
   SolidPiece p;
   const CancelToken* cancel = in.options.cancel.get();
   checkCancel(cancel, "volume boundary");
   auto t0 = Clock::now();
-  const BoundaryMesh b = buildBoundaryMesh(*in.model, *in.surface, faceTriangles, solid);
+  BoundaryMesh b = buildBoundaryMesh(*in.model, *in.surface, faceTriangles, solid);
   const std::vector<std::string> broken = checkBoundaryMesh(b, *in.surface);
   if (const std::vector<int> gone = unmeshedFaces(*in.model, faceTriangles, solid); !gone.empty() && !broken.empty()) {
     std::string list;
@@ -186,7 +199,20 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
   for (const std::string& s : carved) fail(p, solidRef(solid), s);
   if (!carved.empty() || !validated(p, in, bt.tets, b, "boundary recovery")) return p;
   if (findThin(p, bt, solid) && in.stopWhenThin) return p;
+  if (keep) {
+    *keep = std::make_unique<SolidWork>(SolidWork{std::move(b), std::move(bt)});
+    return p;
+  }
+  finishSolid(in, faceTriangles, solid, p, b, bt);
+  return p;
+}
 
+/// Phase 4 of a recovered and carved solid: control space, refinement, improvement,
+/// quality; then its tetrahedra into p (complete unless a validator fails).
+void finishSolid(const VolumeMesherInput& in, const std::vector<std::vector<int>>& faceTriangles, int solid,
+                 SolidPiece& p, const BoundaryMesh& b, BoundaryTriangulation& bt) {
+  const CancelToken* cancel = in.options.cancel.get();
+  auto t0 = Clock::now();
   std::shared_ptr<VolumeMetricSpace> cs;
   if (in.refine || in.improve || in.quality) {
     checkCancel(cancel, "volume control space");
@@ -214,7 +240,7 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
     p.outcome.times.emplace_back("volume refinement", since(t0));
     p.outcome.counters.emplace_back("refinement_inserted", static_cast<double>(rs.inserted));
     p.outcome.counters.emplace_back("refinement_abandoned", static_cast<double>(rs.abandoned));
-    if (!validated(p, in, bt.tets, b, "refinement")) return p;
+    if (!validated(p, in, bt.tets, b, "refinement")) return;
   }
   std::optional<improve3d::VertexMetrics> metrics;  // the improvement's, read by the report
   if (in.improve && cs) {
@@ -231,7 +257,7 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
     p.outcome.counters.emplace_back("slivers_after", static_cast<double>(is.sliversAfter));
     p.outcome.counters.emplace_back("sliver_edge_removals", static_cast<double>(is.sliverEdgeRemovals));
     p.outcome.counters.emplace_back("sliver_steiner_points", static_cast<double>(is.sliverSteinerPoints));
-    if (!validated(p, in, bt.tets, b, "improvement")) return p;
+    if (!validated(p, in, bt.tets, b, "improvement")) return;
   }
   if (in.quality) {
     t0 = Clock::now();
@@ -240,7 +266,6 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
   }
   extract(bt.tets, p);
   p.complete = true;
-  return p;
 }
 
 /// Per model face: does one of its triangles have one of the edges?
@@ -271,6 +296,44 @@ std::vector<int> solidsUsingFaces(const Model& model, const std::vector<std::uin
     if (uses) out.push_back(s);
   }
   return out;
+}
+
+/// Adds times[from..] to the per-phase sums (phases in order of first appearance).
+void addTimes(const std::vector<std::pair<std::string, double>>& times, std::size_t from,
+              std::map<std::string, double>& sum, std::vector<std::string>& order) {
+  for (std::size_t k = from; k < times.size(); ++k) {
+    const auto& [phase, sec] = times[k];
+    if (!sum.count(phase)) order.push_back(phase);
+    sum[phase] += sec;
+  }
+}
+
+/// With stopWhenThin, when a solid is thin: the solids having a surface node in common with
+/// a thin solid (the thin ones too). The finer surface of the next round changes their
+/// boundaries, so their phase 4 would be made again; the others (likely unchanged, then
+/// taken from the cache) are finished. Empty when no solid is thin.
+std::vector<char> solidsNearThin(const Model& model, const SurfaceMesh& surface,
+                                 const std::vector<std::vector<int>>& faceTriangles,
+                                 const std::vector<SolidPiece>& pieces) {
+  const std::size_t ns = pieces.size();
+  auto eachNode = [&](std::size_t s, const std::function<bool(int)>& f) {
+    for (const int face : model.solidBoundaryFaces(static_cast<int>(s)))
+      for (const int t : faceTriangles[static_cast<std::size_t>(face)])
+        for (const int n : surface.triangles[static_cast<std::size_t>(t)])
+          if (f(n)) return;
+  };
+  std::vector<char> thinNode(surface.nodes.size(), 0);
+  bool any = false;
+  for (std::size_t s = 0; s < ns; ++s)
+    if (!pieces[s].thin.empty()) {
+      any = true;
+      eachNode(s, [&thinNode](int n) { return (thinNode[static_cast<std::size_t>(n)] = 1) == 0; });
+    }
+  if (!any) return {};
+  std::vector<char> near(ns, 0);
+  for (std::size_t s = 0; s < ns; ++s)
+    eachNode(s, [&](int n) { return (near[s] = thinNode[static_cast<std::size_t>(n)]) != 0; });
+  return near;
 }
 
 /// A split next to a sliver can make caps and fold the surface again (three nearly
@@ -325,6 +388,8 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
   std::vector<std::string> timeOrder;
   std::vector<SolidPiece> pieces(static_cast<std::size_t>(ns));
   std::vector<char> reused(static_cast<std::size_t>(ns), 0);  // taken from in.cache
+  // With stopWhenThin, phase 4 waits until every solid's thin test is known (solidsNearThin).
+  std::vector<std::unique_ptr<SolidWork>> work(static_cast<std::size_t>(ns));
   std::vector<int> todo(static_cast<std::size_t>(ns));
   for (int s = 0; s < ns; ++s) todo[s] = s;
   // A crack triangle with every node on the crack's front could not open: split first.
@@ -341,21 +406,18 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
         [&](int i) {
           const int s = todo[i];
           reused[s] = 0;
+          work[s].reset();
           if (in.cache)
             if (std::optional<SolidPiece> hit = in.cache->find(s, solidBoundaryKey(model, surface, faceTriangles, s))) {
               pieces[s] = std::move(*hit);
               reused[s] = 1;
               return;
             }
-          pieces[s] = meshSolid(in, faceTriangles, s);
+          pieces[s] = meshSolid(in, faceTriangles, s, in.stopWhenThin ? &work[s] : nullptr);
         },
         "volume");
     for (const int s : todo)
-      if (!reused[s])
-        for (const auto& [phase, sec] : pieces[s].outcome.times) {
-          if (!timeSum.count(phase)) timeOrder.push_back(phase);
-          timeSum[phase] += sec;
-        }
+      if (!reused[s]) addTimes(pieces[s].outcome.times, 0, timeSum, timeOrder);
     // Boundary entities no interior point could recover: split them in the surface mesh
     // (an unrecovered triangle by its longest edge) and mesh again every solid using a
     // face that changed, so shared faces stay conformal.
@@ -380,6 +442,26 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
              std::to_string(todo.size()) + " solids again");
   }
 
+  if (in.stopWhenThin) {  // phase 4 of the solids stopped after carving, unless near a thin one
+    const std::vector<std::vector<int>> faceTriangles = trianglesByFace(surface, nf);
+    const std::vector<char> near = solidsNearThin(model, surface, faceTriangles, pieces);
+    std::vector<int> finish;
+    std::vector<std::size_t> phasesBefore(static_cast<std::size_t>(ns), 0);  // phase 1–3 times already summed
+    for (int s = 0; s < ns; ++s) phasesBefore[s] = pieces[s].outcome.times.size();
+    for (int s = 0; s < ns; ++s)
+      if (work[s] && (near.empty() || !near[s])) finish.push_back(s);
+      else if (work[s]) ++r.solidsDeferred;
+    parallelFor(
+        static_cast<int>(finish.size()), in.options.threads,
+        [&](int i) {
+          const int s = finish[i];
+          finishSolid(in, faceTriangles, s, pieces[s], work[s]->b, work[s]->bt);
+          work[s].reset();
+        },
+        "volume");
+    for (const int s : finish) addTimes(pieces[s].outcome.times, phasesBefore[s], timeSum, timeOrder);
+    work.clear();
+  }
   if (in.cache) {  // the solids meshed by this call, keyed by the surface they were meshed on
     const std::vector<std::vector<int>> faceTriangles = trianglesByFace(surface, nf);
     for (int s = 0; s < ns; ++s)

@@ -28,7 +28,8 @@
 // After carving, the boundary triangles whose tet reaches across a thin part are found
 // (ThinBoundary.h, alg. 3.3's proximity check) and returned; with stopWhenThin such a solid
 // stops there (the caller meshes the surface finer and calls again) — also when the
-// recovery left entities missing: a thin solid's missing entities are not split.
+// recovery left entities missing: a thin solid's missing entities are not split — and so
+// do the solids touching a thin one (their boundary changes with the finer surface).
 // Faces inside a solid (ModelSolid::embedded) are constraints of its tetrahedra like its
 // boundary (recovered, kept by refinement and improvement, crossed by carving); at the end
 // the two-sided ones (MeshOptions::internalFaces) are split apart (CrackSplit.h).
@@ -76,6 +77,9 @@ struct VolumeMesherInput {
   /// after carving, or after a recovery that left entities missing, stops there (no
   /// splits, no refinement, no tetrahedra in the result) and reports
   /// them in VolumeMeshResult::thin, for the caller to mesh the surface finer and call again.
+  /// When some solid is thin, the solids sharing a surface node with it stop after carving
+  /// too (VolumeMeshResult::solidsDeferred): the finer surface changes their boundary, so
+  /// their tetrahedra would be made again; the other solids are meshed to the end.
   bool stopWhenThin = false;
   /// Optional (SolidMeshCache.h): solids whose boundary is unchanged since an earlier call
   /// with this cache take their tetrahedra from it (the result is the same); every solid
@@ -123,6 +127,9 @@ struct VolumeMeshResult {
   std::vector<std::pair<std::string, double>> times;  ///< phase -> seconds summed over the solids
   CrackSplitStats cracks;  ///< the two-sided embedded faces separated (CrackSplit.h)
   int solidsReused = 0;    ///< solids taken from VolumeMesherInput::cache (not meshed again)
+  /// With stopWhenThin: solids recovered and carved, not thin, but stopped there because
+  /// they touch a thin solid (no tetrahedra in the result, status Ok).
+  int solidsDeferred = 0;
   /// Every solid meshed, or left out only because the surface left out one of its faces.
   bool ok() const;
 };

@@ -203,3 +203,60 @@ TEST(VolumeMesher, SolidMeshCacheKeepsUnchangedSolidsOnly) {
   EXPECT_EQ(cached.mesh.nodes(), fresh.mesh.nodes());
   EXPECT_NE(cached.mesh.nodes(), first.mesh.nodes());
 }
+
+namespace {
+
+/// Solid 0: the slab [0,1]^2 x [0,0.05] (8 x 8 cells on each face: thinner than its
+/// triangles); solid 1: the unit box on x = 1, z from 0.05, touching the slab along its
+/// edge x = 1, z = 0.05 (same grid nodes there); solid 2: a unit box far away.
+voltest::SolidModel slabWithNeighbours() {
+  voltest::SolidBuilder b;
+  const int slab = b.addShell();
+  const double t = 0.05;
+  const Vec3 x(1, 0, 0), y(0, 1, 0), z(0, 0, t), o(0, 0, 0);
+  b.gridFace(slab, o, y, x, 8, false);      // z = 0
+  b.gridFace(slab, o + z, x, y, 8, false);  // z = t
+  b.gridFace(slab, o, x, z, 8, false);      // y = 0
+  b.gridFace(slab, o + y, z, x, 8, false);  // y = 1
+  b.gridFace(slab, o, z, y, 8, false);      // x = 0
+  b.gridFace(slab, o + x, y, z, 8, false);  // x = 1
+  const int near = b.addShell();
+  b.box(near, Vec3(1, 0, t), 1.0, 8, false, false);
+  const int far = b.addShell();
+  b.box(far, Vec3(4, 0, 0), 1.0, 8, false, false);
+  b.model().solids.push_back({"slab", slab, {}});
+  b.model().solids.push_back({"near", near, {}});
+  b.model().solids.push_back({"far", far, {}});
+  return b.done(t + 2.0);
+}
+
+}  // namespace
+
+// VolumeMesherInput::stopWhenThin: the thin solid stops, and so does the solid touching it
+// (deferred: its boundary changes with the finer surface); the one far away is meshed, as
+// it would be without stopWhenThin.
+TEST(VolumeMesher, SolidsTouchingAThinOneWaitForTheFinerSurface) {
+  const voltest::SolidModel m = slabWithNeighbours();
+  VolumeMesherInput in;
+  in.model = &m.model;
+  in.surface = &m.surface;
+  in.refine = in.improve = in.quality = false;
+  in.validate = true;
+  in.stopWhenThin = true;
+  const VolumeMeshResult round = meshVolumes(in);
+  ASSERT_EQ(round.solids.size(), 3u);
+  EXPECT_FALSE(round.thin.empty());
+  for (const ThinSpot& spot : round.thin) EXPECT_EQ(spot.solid, 0);
+  EXPECT_EQ(round.solidsDeferred, 1);
+  EXPECT_EQ(round.solids[0].tets, 0u);
+  EXPECT_EQ(round.solids[1].tets, 0u);
+  EXPECT_EQ(round.solids[1].status, SolidOutcome::Status::Ok);
+  EXPECT_GT(round.solids[2].tets, 0u);
+
+  in.stopWhenThin = false;
+  const VolumeMeshResult whole = meshVolumes(in);
+  expectMeshed(m, whole);
+  EXPECT_EQ(whole.solidsDeferred, 0);
+  EXPECT_EQ(whole.solids[2].tets, round.solids[2].tets);
+  EXPECT_GT(whole.solids[1].tets, 0u);
+}
