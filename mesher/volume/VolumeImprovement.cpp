@@ -41,7 +41,7 @@ std::size_t smoothVertices(const SolidTetMesh& s, improve3d::VertexMover& mover,
   std::size_t moved = 0;
   for (int sweep = 0; sweep < o.smoothingSweeps; ++sweep)
     for (const std::uint32_t i : order)
-      if (mover.smooth(del3d::VertexId(free[i]), o.lowGradation, kSmoothingQualityFloor)) ++moved;
+      if (mover.smooth(del3d::VertexId(free[i]), o.lowGradation, kSmoothingQualityFloor, o.ascentSmoothing)) ++moved;
   mover.setIncidence(nullptr);
   return moved;
 }

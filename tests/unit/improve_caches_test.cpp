@@ -119,6 +119,7 @@ void checkCacheStaysExact(const ControlSpace3d& cs) {
     mover.setIncidence(&inc);
     std::size_t moved = 0;
     for (std::uint32_t v = 0; v < s.mesh.numVertices(); ++v) moved += mover.smooth(del3d::VertexId(v), 0.05, 0.3);
+    for (std::uint32_t v = 0; v < s.mesh.numVertices(); ++v) moved += mover.smooth(del3d::VertexId(v), 0.05, 0.3, true);
     EXPECT_GT(moved, 0u);
     mover.setIncidence(nullptr);
   }

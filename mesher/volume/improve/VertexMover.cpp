@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "mesher/predicates/Predicates.h"
@@ -102,7 +103,7 @@ void VertexMover::move(del3d::VertexId v, const Vec3& p) {
   vm_.refresh(v);
 }
 
-bool VertexMover::smooth(del3d::VertexId v, double lowGradation, double qualityFloor) {
+bool VertexMover::smooth(del3d::VertexId v, double lowGradation, double qualityFloor, bool ascent) {
   if (s_.isFixed(v) || !s_.mesh.vertexTet(v).valid()) return false;
   loadStar(v);
   if (nbrs_.empty()) return false;
@@ -124,8 +125,9 @@ bool VertexMover::smooth(del3d::VertexId v, double lowGradation, double qualityF
   const double floor = qualityFloor * qualityFloor * qualityFloor;  // scores are η³
   // a trial tet below this already rejects the move (w1 ≤ w0, resp. w1 < floor)
   const double rejectBelow = w0 < floor ? std::nextafter(w0, 1e300) : floor;
-  for (const double step : {1.0, 0.5}) {
-    const Vec3 p = q + step * (target - q);
+  // the ascent step (q when it finds none), then the Laplace move and its half
+  const std::array<Vec3, 3> candidates = {ascent ? ascentStep(v) : q, target, q + 0.5 * (target - q)};
+  for (const Vec3& p : candidates) {
     if (p == q) continue;
     double w1, m1;
     // floating point first: most rejected moves need no exact test
@@ -151,6 +153,44 @@ bool VertexMover::smooth(del3d::VertexId v, double lowGradation, double qualityF
     }
   }
   return false;
+}
+
+double VertexMover::meanEta(del3d::VertexId v, const Vec3& p) const {
+  double sum = 0;
+  for (const del3d::TetId t : star_) {
+    const double e = vm_.scoreWith(s_.mesh.tetVertices(t), v.index, p);
+    if (!(e > 0)) return -1;  // inverted or flat: never better
+    sum += std::cbrt(e);
+  }
+  return sum / static_cast<double>(star_.size());
+}
+
+// One step of steepest ascent of the (loaded) star's mean η_M: the gradient by central
+// differences (kAscentDifference of the mean distance L to the neighbours), then a
+// backtracking line search from kAscentFirstStep · L, halving at most kAscentHalvings times.
+Vec3 VertexMover::ascentStep(del3d::VertexId v) const {
+  const Vec3 q = s_.mesh.point(v);
+  double L = 0;
+  for (const std::uint32_t w : nbrs_) L += (s_.mesh.point(del3d::VertexId(w)) - q).norm();
+  L /= static_cast<double>(nbrs_.size());
+  const double f0 = meanEta(v, q);
+  if (!(L > 0) || !(f0 > 0)) return q;
+  const double h = kAscentDifference * L;
+  Vec3 g;
+  for (int d = 0; d < 3; ++d) {
+    Vec3 a = q, b = q;
+    a[d] += h;
+    b[d] -= h;
+    g[d] = (meanEta(v, a) - meanEta(v, b)) / (2 * h);
+  }
+  if (!(g.norm() > 0)) return q;
+  const Vec3 dir = g.normalized();
+  double step = kAscentFirstStep * L;
+  for (int k = 0; k <= kAscentHalvings; ++k, step *= 0.5) {
+    const Vec3 p = q + step * dir;
+    if (meanEta(v, p) > f0) return p;
+  }
+  return q;
 }
 
 // The position of v that makes the worst tet of its (loaded) star regular in that tet's

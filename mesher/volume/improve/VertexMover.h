@@ -14,6 +14,10 @@
 //   lower its mean of η_M³ (the cube: no cube roots, and the poorer tets weigh less than
 //   in the plain mean — measured on the cube, h = 1/40: same mean ratio 0.868); else the
 //   half move is tried. Stars are compared on η_M³ throughout (VertexMetrics::score).
+//   With `ascent`, a step of steepest ascent of the star's mean η_M (central differences,
+//   backtracking line search: ascentStep) is tried first, under the same acceptance: the
+//   Laplace target ignores the tets' shapes; on extruder-body (325 k tets) the mean ratio
+//   rose 0.807 → 0.822 for 1.5× the improvement time.
 // relocate(): for slivers: the Laplace target, the position making the star's worst tet
 //   regular (the apex over its opposite face, in its metric) and the midpoint towards it,
 //   and deterministic perturbations (26 directions of the cube around the vertex, two radii
@@ -29,13 +33,19 @@
 
 namespace aniso::improve3d {
 
+/// ascentStep(): central-difference step, first line-search step and halvings, relative
+/// to the mean distance from the vertex to its neighbours.
+inline constexpr double kAscentDifference = 1e-4;
+inline constexpr double kAscentFirstStep = 0.2;
+inline constexpr int kAscentHalvings = 7;
+
 class VertexMover {
  public:
   VertexMover(SolidTetMesh& s, VertexMetrics& vm) : s_(s), vm_(vm) {}
 
   /// With a score cache (setScores) the star's current scores are read from it and the
   /// cache is kept exact on every accepted move (TetScores' contract).
-  bool smooth(del3d::VertexId v, double lowGradation, double qualityFloor);
+  bool smooth(del3d::VertexId v, double lowGradation, double qualityFloor, bool ascent = false);
   /// The cache smooth() reads and updates (nullptr: none). relocate() must not be used
   /// while one is set (it leaves the cache stale).
   void setScores(TetScores* scores) { scores_ = scores; }
@@ -58,6 +68,11 @@ class VertexMover {
   /// rejectBelow.
   bool quality(del3d::VertexId v, const Vec3& p, double& worst, double& mean, double rejectBelow = -1e300);
   Vec3 laplaceTarget(del3d::VertexId v, double lowGradation) const;
+  /// Mean η_M of the loaded star with v at p; −1 when a tet is inverted or flat there.
+  double meanEta(del3d::VertexId v, const Vec3& p) const;
+  /// One line-searched step of steepest ascent of meanEta from v's position; that position
+  /// when no step improves it.
+  Vec3 ascentStep(del3d::VertexId v) const;
   Vec3 worstApex(del3d::VertexId v) const;
   /// The star's smallest min(θ_min, 180° − θ_max) with v at p; stops (returning a value at
   /// or below it) once it is at or below stopAtOrBelow.
