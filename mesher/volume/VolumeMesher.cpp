@@ -442,8 +442,8 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
              std::to_string(todo.size()) + " solids again");
   }
 
+  const std::vector<std::vector<int>> faceTriangles = trianglesByFace(surface, nf);  // the final surface's
   if (in.stopWhenThin) {  // phase 4 of the solids stopped after carving, unless near a thin one
-    const std::vector<std::vector<int>> faceTriangles = trianglesByFace(surface, nf);
     const std::vector<char> near = solidsNearThin(model, surface, faceTriangles, pieces);
     std::vector<int> finish;
     std::vector<std::size_t> phasesBefore(static_cast<std::size_t>(ns), 0);  // phase 1–3 times already summed
@@ -463,7 +463,6 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
     work.clear();
   }
   if (in.cache) {  // the solids meshed by this call, keyed by the surface they were meshed on
-    const std::vector<std::vector<int>> faceTriangles = trianglesByFace(surface, nf);
     for (int s = 0; s < ns; ++s)
       if (!reused[s]) in.cache->store(s, solidBoundaryKey(model, surface, faceTriangles, s), pieces[s]);
     r.solidsReused = static_cast<int>(std::count(reused.begin(), reused.end(), 1));
