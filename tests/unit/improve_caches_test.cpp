@@ -195,3 +195,36 @@ TEST(SliverAngles, MeanRatioBoundsEveryDihedralAngle) {
 }
 
 }  // namespace
+
+// VertexMetrics::etaGradient (the ascent smoothing's gradient) agrees with central
+// differences of η_M = cbrt(scoreWith) in a graded anisotropic field and an isotropic one.
+TEST(VertexMetrics, EtaGradientAgreesWithDifferences) {
+  for (const CSAnalytic3d& cs : {gradedAnisotropic(), gradedIsotropic()}) {
+    std::set<Triple> boundary;
+    SolidTetMesh s = cubeSolid(5, boundary);
+    refineVolume(s, cs);
+    const improve3d::VertexMetrics vm(s.mesh, cs);
+    int checked = 0;
+    for (std::uint32_t k = 0; k < s.mesh.tetSlots() && checked < 200; k += 7) {
+      const del3d::TetId t(k);
+      if (!s.mesh.isAlive(t)) continue;
+      const std::uint32_t* v = s.mesh.tetVertices(t);
+      if (vm.score(v) < 1e-3) continue;
+      const std::uint32_t moved = v[k % 4];
+      Vec3 g;
+      const double eta = vm.etaGradient(v, moved, g);
+      EXPECT_NEAR(eta, std::cbrt(vm.score(v)), 1e-12);
+      const Vec3 p = s.mesh.point(del3d::VertexId(moved));
+      const double h = 1e-6 * (s.mesh.point(del3d::VertexId(v[(k + 1) % 4])) - p).norm();
+      for (int d = 0; d < 3; ++d) {
+        Vec3 a = p, b = p;
+        a[d] += h;
+        b[d] -= h;
+        const double fd = (std::cbrt(vm.scoreWith(v, moved, a)) - std::cbrt(vm.scoreWith(v, moved, b))) / (2 * h);
+        EXPECT_NEAR(g[d], fd, 1e-5 * std::max(1.0, g.norm())) << k << " " << d;
+      }
+      ++checked;
+    }
+    EXPECT_GT(checked, 50);
+  }
+}

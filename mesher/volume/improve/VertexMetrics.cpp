@@ -104,6 +104,41 @@ double VertexMetrics::scoreWith(const std::uint32_t* v, std::uint32_t moved, con
   return guardEuclidean_ ? guarded(e, q, false) : e;
 }
 
+double VertexMetrics::etaGradient(const std::uint32_t* v, std::uint32_t moved, Vec3& gradient) const {
+  gradient = Vec3::Zero();
+  int k = 0;
+  while (k < 4 && v[k] != moved) ++k;
+  if (k == 4) return 0;
+  Vec3 q[4];
+  for (int i = 0; i < 4; ++i) q[i] = mesh_.point(del3d::VertexId(v[i]));
+  const double D = (q[1] - q[0]).dot((q[2] - q[0]).cross(q[3] - q[0]));
+  if (!(D > 0)) return 0;
+  // ∂D/∂q_k: the normal of the opposite face, scaled so that its dot with q_k − q_a is D
+  const int a = (k + 1) % 4, b = (k + 2) % 4, c = (k + 3) % 4;
+  const Vec3 n = (q[b] - q[a]).cross(q[c] - q[a]);
+  const double h = n.dot(q[k] - q[a]);
+  if (h == 0) return 0;
+  const Vec3 dD = n * (D / h);
+  const bool iso = isotropic(v);
+  const Mat3 t = iso ? Mat3::Identity() : tetMetric(v);
+  const Mat3 tt = t.transpose() * t;
+  double sigma = 0;
+  Vec3 dSigma = Vec3::Zero();
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) {
+      const Vec3 e = q[i] - q[j];
+      sigma += e.dot(tt * e);
+    }
+  for (int j = 0; j < 4; ++j)
+    if (j != k) dSigma += 2 * (tt * (q[k] - q[j]));
+  if (!(sigma > 0)) return 0;
+  const double scaledD = iso ? D : D * t.determinant();
+  if (!(scaledD > 0)) return 0;
+  const double eta = std::cbrt(432.0 * scaledD * scaledD) / sigma;
+  gradient = eta * ((2.0 / 3.0) * dD / D - dSigma / sigma);
+  return eta;
+}
+
 namespace {
 /// The η³ above which no dihedral angle is within `angle` (degrees) of 0° or 180°: 2 sin²,
 /// raised by a relative margin for the rounding of both sides.

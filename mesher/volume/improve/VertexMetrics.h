@@ -67,6 +67,12 @@ class VertexMetrics {
   double eta(const std::uint32_t* v) const { return std::cbrt(score(v)); }
   /// score() of the tet with vertex ids v where vertex `moved` is placed at p.
   double scoreWith(const std::uint32_t* v, std::uint32_t moved, const Vec3& p) const;
+  /// η_M (unguarded: the tet's metric only) of the tet with vertex ids v, and its gradient
+  /// with respect to the position of vertex `moved` (one of v), at the current positions.
+  /// From η = 432^{1/3} D'^{2/3} / Σ' in the tet's metric x' = T x (D' = det T · D, D six
+  /// times the signed volume; Σ' the squared edge lengths under TᵀT): ∇η = η (2/3 ∇D / D −
+  /// ∇Σ' / Σ'). 0 and a zero gradient for a tet not positively oriented.
+  double etaGradient(const std::uint32_t* v, std::uint32_t moved, Vec3& gradient) const;
   /// score() of the points p[0..3] (not necessarily vertices) measured in the tensor m;
   /// Euclidean only when `isotropicTensor`.
   double scorePoints(const Vec3* p, const Mat3& m, bool isotropicTensor) const;

@@ -165,9 +165,9 @@ double VertexMover::meanEta(del3d::VertexId v, const Vec3& p) const {
   return sum / static_cast<double>(star_.size());
 }
 
-// One step of steepest ascent of the (loaded) star's mean η_M: the gradient by central
-// differences (kAscentDifference of the mean distance L to the neighbours), then a
-// backtracking line search from kAscentFirstStep · L, halving at most kAscentHalvings times.
+// One step of steepest ascent of the (loaded) star's mean η_M: the gradient summed over the
+// star (VertexMetrics::etaGradient), then a backtracking line search from kAscentFirstStep ·
+// L (L the mean distance to the neighbours), halving at most kAscentHalvings times.
 Vec3 VertexMover::ascentStep(del3d::VertexId v) const {
   const Vec3 q = s_.mesh.point(v);
   double L = 0;
@@ -175,13 +175,11 @@ Vec3 VertexMover::ascentStep(del3d::VertexId v) const {
   L /= static_cast<double>(nbrs_.size());
   const double f0 = meanEta(v, q);
   if (!(L > 0) || !(f0 > 0)) return q;
-  const double h = kAscentDifference * L;
-  Vec3 g;
-  for (int d = 0; d < 3; ++d) {
-    Vec3 a = q, b = q;
-    a[d] += h;
-    b[d] -= h;
-    g[d] = (meanEta(v, a) - meanEta(v, b)) / (2 * h);
+  Vec3 g = Vec3::Zero();
+  for (const del3d::TetId t : star_) {
+    Vec3 gt;
+    vm_.etaGradient(s_.mesh.tetVertices(t), v.index, gt);
+    g += gt;
   }
   if (!(g.norm() > 0)) return q;
   const Vec3 dir = g.normalized();
