@@ -18,14 +18,18 @@ bool flat(const SurfaceMesh& m, const std::array<int, 3>& t) {
   return twiceArea <= kFlatTriangleRatio * longest;
 }
 
-/// Edges of solid s's shells used an odd number of times; 0 when a face of s has no triangle.
-long long openEdgesOfSolid(const Model& model, const std::vector<std::vector<int>>& byFace, const SurfaceMesh& m,
-                           int s) {
+/// Edges of solid s's shells used an odd number of times by its triangles and quads; 0 when
+/// a face of s has no element.
+long long openEdgesOfSolid(const Model& model, const std::vector<std::vector<int>>& byFace,
+                           const std::vector<std::vector<int>>& quadsByFace, const SurfaceMesh& m, int s) {
   std::map<std::pair<int, int>, int> uses;
   for (const int f : model.solidFaces(s)) {
-    if (f < 0 || static_cast<std::size_t>(f) >= byFace.size() || byFace[f].empty()) return 0;
+    if (f < 0 || static_cast<std::size_t>(f) >= byFace.size() || (byFace[f].empty() && quadsByFace[f].empty()))
+      return 0;
     for (const int t : byFace[f])
       for (int k = 0; k < 3; ++k) ++uses[std::minmax(m.triangles[t][k], m.triangles[t][(k + 1) % 3])];
+    for (const int q : quadsByFace[f])
+      for (int k = 0; k < 4; ++k) ++uses[std::minmax(m.quads[q][k], m.quads[q][(k + 1) % 4])];
   }
   return std::count_if(uses.begin(), uses.end(), [](const auto& u) { return u.second % 2 != 0; });
 }
@@ -55,8 +59,12 @@ SurfaceGeometryCheck checkSurfaceGeometry(const Model& model, const SurfaceMesh&
     if (f >= 0 && static_cast<std::size_t>(f) < byFace.size()) byFace[f].push_back(static_cast<int>(t));
   }
   c.flatFaces.assign(flatByFace.begin(), flatByFace.end());
+  std::vector<std::vector<int>> quadsByFace(model.faces.size());
+  for (std::size_t q = 0; q < mesh.quads.size() && q < mesh.quadFace.size(); ++q)
+    if (const int f = mesh.quadFace[q]; f >= 0 && static_cast<std::size_t>(f) < quadsByFace.size())
+      quadsByFace[f].push_back(static_cast<int>(q));
   for (std::size_t s = 0; s < model.solids.size(); ++s)
-    if (const long long n = openEdgesOfSolid(model, byFace, mesh, static_cast<int>(s)); n > 0) {
+    if (const long long n = openEdgesOfSolid(model, byFace, quadsByFace, mesh, static_cast<int>(s)); n > 0) {
       c.openEdges += n;
       c.openSolids.push_back({static_cast<int>(s), n});
     }

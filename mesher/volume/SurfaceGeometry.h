@@ -4,8 +4,8 @@
 // only): no folded edge (UnfoldSurface.h's measure: two triangles of one face whose
 // normals are more than about 84 degrees apart), no flat triangle (twice its area below
 // kFlatTriangleRatio times its longest edge squared), and closed where the shells are
-// closed: the triangles of every solid whose faces all have triangles use each edge an
-// even number of times (a face its shells list twice counts twice).
+// closed: the triangles and quads of every solid whose faces all have elements use each
+// edge an even number of times (a face its shells list twice counts twice).
 #include <string>
 #include <utility>
 #include <vector>

@@ -42,3 +42,27 @@ TEST(SurfaceGeometry, TriangleWithCollinearNodesIsFlat) {
   EXPECT_FALSE(c.ok());
   EXPECT_FALSE(c.messages().empty());
 }
+
+// A quad-dominant surface is closed when its triangles and quads together use every edge
+// twice: a square pyramid whose base is a quad and a triangle (the triangles alone leave
+// the quad's edges used once).
+TEST(SurfaceGeometry, QuadsCountForClosure) {
+  SurfaceMesh m;
+  const NodeOn on{NodeOn::Kind::Face, 0, 0, Vec2(0, 0)};
+  for (const Vec3& p : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0), Vec3(0.5, 1, 0), Vec3(0.5, 0.5, 1)})
+    m.addNode(p, on);
+  m.quads = {{0, 4, 2, 1}};
+  m.quadFace = {0};
+  m.triangles = {{0, 3, 4}, {0, 1, 5}, {1, 2, 5}, {2, 4, 5}, {4, 3, 5}, {3, 0, 5}};
+  m.triangleFace = {0, 1, 2, 3, 3, 4};
+  Model model;
+  model.faces.resize(5);
+  model.shells.push_back({});
+  for (int f = 0; f < 5; ++f) model.shells[0].faces.push_back({f, false});
+  model.shells[0].closed = true;
+  model.solids.push_back({"pyramid", 0, {}, {}, 0});
+  EXPECT_EQ(checkSurfaceGeometry(model, m).openEdges, 0);
+  m.quads.clear();  // without the quad the base is open along its three edges and the diagonal
+  m.quadFace.clear();
+  EXPECT_EQ(checkSurfaceGeometry(model, m).openEdges, 4);
+}
