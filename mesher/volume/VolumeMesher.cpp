@@ -447,10 +447,15 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
     const std::vector<char> near = solidsNearThin(model, surface, faceTriangles, pieces);
     std::vector<int> finish;
     std::vector<std::size_t> phasesBefore(static_cast<std::size_t>(ns), 0);  // phase 1–3 times already summed
-    for (int s = 0; s < ns; ++s) phasesBefore[s] = pieces[s].outcome.times.size();
-    for (int s = 0; s < ns; ++s)
-      if (work[s] && (near.empty() || !near[s])) finish.push_back(s);
-      else if (work[s]) ++r.solidsDeferred;
+    for (int s = 0; s < ns; ++s) {
+      if (!work[s]) continue;
+      if (!near.empty() && near[s]) {
+        ++r.solidsDeferred;
+        continue;
+      }
+      finish.push_back(s);
+      phasesBefore[s] = pieces[s].outcome.times.size();
+    }
     parallelFor(
         static_cast<int>(finish.size()), in.options.threads,
         [&](int i) {
