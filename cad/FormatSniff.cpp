@@ -16,10 +16,17 @@ std::optional<CadFormat> formatFromExtension(const std::string& path) {
 }
 
 std::optional<CadFormat> formatFromContent(const std::string& head) {
-  // Skip a UTF-8 byte order mark and leading blank space.
+  // Skip a UTF-8 byte order mark, leading blank space and (STEP, ISO 10303-21 allows them
+  // anywhere) /* comments */ before the first keyword.
   size_t i = 0;
   if (head.compare(0, 3, "\xEF\xBB\xBF") == 0) i = 3;
-  while (i < head.size() && std::isspace(static_cast<unsigned char>(head[i]))) ++i;
+  for (;;) {
+    while (i < head.size() && std::isspace(static_cast<unsigned char>(head[i]))) ++i;
+    if (head.compare(i, 2, "/*") != 0) break;
+    const size_t end = head.find("*/", i + 2);
+    if (end == std::string::npos) break;
+    i = end + 2;
+  }
   const std::string s = head.substr(i);
   if (s.rfind("ISO-10303-21", 0) == 0) return CadFormat::Step;
   if (s.rfind("DBRep_DrawableShape", 0) == 0 || s.rfind("CASCADE Topology", 0) == 0)

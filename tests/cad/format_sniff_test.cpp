@@ -18,6 +18,8 @@ TEST(FormatSniff, ExtensionAnyCase) {
 TEST(FormatSniff, Content) {
   EXPECT_EQ(formatFromContent("ISO-10303-21;\nHEADER;"), CadFormat::Step);
   EXPECT_EQ(formatFromContent("\xEF\xBB\xBF  ISO-10303-21;\n"), CadFormat::Step);
+  EXPECT_EQ(formatFromContent("/* exported by X */\n/* two */ ISO-10303-21;\n"), CadFormat::Step);
+  EXPECT_FALSE(formatFromContent("/* an unterminated comment ISO-10303-21;\n"));
   EXPECT_EQ(formatFromContent("DBRep_DrawableShape\n\nCASCADE Topology V1"), CadFormat::Brep);
   EXPECT_EQ(formatFromContent("CASCADE Topology V3, (c) Open Cascade\n"), CadFormat::Brep);
   std::string iges(72, ' ');
