@@ -3,8 +3,10 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <cmath>
+#include <string>
 #include <vector>
 
+#include "mesher/core/Log.h"
 #include "mesher/delaunay3d/Inserter.h"
 #include "mesher/delaunay3d/Locate.h"
 #include "mesher/volume/improve/QualityEdgeRemoval.h"
@@ -235,17 +237,20 @@ SliverStats removeSlivers(SolidTetMesh& s, const ControlSpace3d& cs, VertexMetri
   // The live slivers, rescanned after each round (the only whole-mesh scans).
   std::vector<TetId> current = liveSlivers(s, vm, angleDeg, euclideanDeg, scores);
   // a solid made of slivers is thinner than its elements: a point inserted there only
-  // makes more flat tets (header)
-  if (static_cast<double>(current.size()) > kInsertionMaxSliverShare * static_cast<double>(s.mesh.numTets()))
-    insertion = false;
+  // makes more flat tets, the rounds in the metric only shuffle them (header)
+  const bool film = static_cast<double>(current.size()) > kFilmSliverShare * static_cast<double>(s.mesh.numTets());
+  if (film) insertion = false;
   SliverRemover r(s, cs, vm, angleDeg, euclideanDeg, insertion);
   r.stats.before = current.size();
   vm.setGuardEuclidean(true);
   // Later rounds visit every sliver again: the operators (insertions, Steiner points) make
   // new tets, some of them slivers, that the previous round's list does not hold.
-  for (int i = 0; i < rounds && !current.empty(); ++i) {
+  for (int i = 0; i < rounds && !current.empty() && !film; ++i) {
     r.round(current);
+    ++r.stats.metricRounds;
     std::vector<TetId> left = liveSlivers(s, vm, angleDeg, euclideanDeg);
+    logDebug("sliver round " + std::to_string(i + 1) + ": " + std::to_string(current.size()) + " -> " +
+             std::to_string(left.size()) + " slivers of " + std::to_string(s.mesh.numTets()) + " tets");
     const bool progress = left.size() < current.size();
     current = std::move(left);
     if (!progress) break;
