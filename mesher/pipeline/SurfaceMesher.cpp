@@ -8,6 +8,7 @@
 #include <mutex>
 #include <thread>
 
+#include "mesher/core/Cancel.h"
 #include "mesher/core/Error.h"
 #include "mesher/core/Log.h"
 #include "mesher/core/ParallelFor.h"
@@ -136,7 +137,15 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
     fin.analytic = in.analytic;
     fin.user = in.user;
     fin.chordDeviation = chord;
-    spaces[f] = buildFaceControlSpace(fin);
+    try {
+      spaces[f] = buildFaceControlSpace(fin);
+    } catch (const Cancelled&) {
+      throw;
+    } catch (const MeshingError& e) {  // this face only: left out (no control space), the others go on
+      std::string what = e.what();
+      if (const std::string own = "face " + std::to_string(f + 1) + ": "; what.rfind(own, 0) == 0) what.erase(0, own.size());
+      r.faces[f].problems.push_back(what);
+    }
   }, "control spaces");
   r.times.emplace_back("control_space", since(t));
 

@@ -22,7 +22,7 @@ std::string faceName(int face) { return "face " + std::to_string(face + 1); }
 Box2 faceBounds(const ModelFace& f, int face) {
   Box2 b = f.uvBounds;
   if (b.empty() || !(b.size().array() > 0).all() || !b.lo.allFinite() || !b.hi.allFinite())
-    throw MeshingError(faceName(face) + ": empty parametric bounds");
+    throw MeshingError(faceName(face) + ": nothing to mesh: the face has no extent on its surface (degenerate, zero area)");
   const Vec2 pad = 1e-9 * b.size() + Vec2::Constant(1e-12);
   b.lo -= pad;
   b.hi += pad;
