@@ -73,9 +73,9 @@ struct SurfaceMeshResult {
 };
 
 /// Throws InputError when the element budget cannot be met (step 2b), MeshingError only
-/// for errors that stop everything; a face that fails (an edge of it cannot be discretized,
-/// its boundary loops cannot be chained in (u, v), or its mesher fails) is reported in
-/// faces[f].problems and left unmeshed.
+/// for errors that stop everything; a face that fails (its control space cannot be built,
+/// an edge of it cannot be discretized, its boundary loops cannot be chained in (u, v), or
+/// its mesher fails) is reported in faces[f].problems and left unmeshed.
 SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in);
 
 }  // namespace aniso
