@@ -25,9 +25,8 @@
 //     star.
 // A solid where more than kFilmSliverShare of the tets are slivers is thinner than its
 // elements (a film or label the proximity rounds could not refine): steps 3 and 4 are left
-// out, where every new point only adds flat tets (measured: NEO's 1 um labels, 57 k
-// slivers became 88 k with 4.5 k Steiner points, 18 s per label), and so are the rounds
-// in the metric (flips and moves only shuffle flat tets there: 57 620 -> 57 616 in 2.6 s).
+// out, where every new point only adds flat tets, and so are the rounds in the metric,
+// whose flips and moves only shuffle flat tets there (measured: docs/volume.md).
 // Every round visits every sliver of the mesh (in slot order; the operators make new tets,
 // some of them slivers); rounds stop when one does not lower the number of slivers or
 // after `rounds` (a round may also leave more slivers than it found: docs/volume.md).

@@ -16,8 +16,7 @@
 //   half move is tried. Stars are compared on η_M³ throughout (VertexMetrics::score).
 //   With `ascent`, a step of steepest ascent of the star's mean η_M (analytic gradient,
 //   backtracking line search: ascentStep) is tried first, under the same acceptance: the
-//   Laplace target ignores the tets' shapes; on extruder-body (325 k tets) the mean ratio
-//   rose 0.807 → 0.821 for about 1.3× the improvement time (3 passes).
+//   Laplace target ignores the tets' shapes (its gain and cost: docs/volume.md).
 // relocate(): for slivers: the Laplace target, the position making the star's worst tet
 //   regular (the apex over its opposite face, in its metric) and the midpoint towards it,
 //   and deterministic perturbations (26 directions of the cube around the vertex, two radii
