@@ -44,11 +44,12 @@ class TetMesh {
   TetId vertexTet(VertexId v) const { return TetId(vtet_[v.index]); }
   void setVertexTet(VertexId v, TetId t) { vtet_[v.index] = t.index; }
   /// Moves vertex v to p. No check: the caller (smoothing, sec. 5.6.1) has verified that
-  /// every incident tet stays positively oriented. Clears certifiedDelaunay().
+  /// every incident tet stays positively oriented. Clears certifiedDelaunay(). Threads may
+  /// move distinct vertices at once when the flag is cleared before (it is then only read).
   void movePoint(VertexId v, const Vec3& p) {
     double* c = &xyz_[3 * std::size_t{v.index}];
     c[0] = p.x(), c[1] = p.y(), c[2] = p.z();
-    certified_ = false;
+    if (certified_) certified_ = false;
   }
 
   // ---- tetrahedra ----

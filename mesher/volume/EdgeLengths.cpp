@@ -18,18 +18,33 @@ void addCycle(std::span<const int> v, std::vector<Edge>& out) {
   }
 }
 
-EdgeLengthRange measure(std::vector<Edge>& edges, const std::vector<Vec3>& nodes) {
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+/// Each distinct edge once, in increasing (a, b) order: the edges bucketed by their smaller
+/// end (a counting sort, linear), each bucket's other ends sorted and made unique (a few
+/// per node): a global sort of all edge uses took a tenth of a whole run on a cube of half a
+/// million tets.
+EdgeLengthRange measure(const std::vector<Edge>& edges, const std::vector<Vec3>& nodes) {
+  const std::size_t n = nodes.size();
+  std::vector<std::size_t> start(n + 2, 0);
+  for (const auto& [a, b] : edges)
+    if (a >= 0 && b < static_cast<int>(n) && a != b) ++start[static_cast<std::size_t>(a) + 2];
+  for (std::size_t i = 2; i < start.size(); ++i) start[i] += start[i - 1];
+  std::vector<int> other(start.back());
+  for (const auto& [a, b] : edges)
+    if (a >= 0 && b < static_cast<int>(n) && a != b) other[start[static_cast<std::size_t>(a) + 1]++] = b;
   EdgeLengthRange r;
   double sum = 0;
-  for (const auto& [a, b] : edges) {
-    if (a < 0 || b >= static_cast<int>(nodes.size()) || a == b) continue;
-    const double l = (nodes[static_cast<std::size_t>(a)] - nodes[static_cast<std::size_t>(b)]).norm();
-    r.min = r.edges ? std::min(r.min, l) : l;
-    r.max = std::max(r.max, l);
-    sum += l;
-    ++r.edges;
+  for (std::size_t a = 0; a < n; ++a) {
+    const auto first = other.begin() + static_cast<std::ptrdiff_t>(start[a]);
+    const auto last = other.begin() + static_cast<std::ptrdiff_t>(start[a + 1]);
+    std::sort(first, last);
+    for (auto it = first; it != last; ++it) {
+      if (it != first && *it == *(it - 1)) continue;
+      const double l = (nodes[a] - nodes[static_cast<std::size_t>(*it)]).norm();
+      r.min = r.edges ? std::min(r.min, l) : l;
+      r.max = std::max(r.max, l);
+      sum += l;
+      ++r.edges;
+    }
   }
   r.mean = r.edges ? sum / static_cast<double>(r.edges) : 0.0;
   return r;

@@ -1,6 +1,11 @@
 #include "mesher/volume/VolumeImprovement.h"
 
+#include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <exception>
+#include <mutex>
+#include <thread>
 #include <optional>
 #include <string>
 #include <vector>
@@ -10,6 +15,7 @@
 #include "mesher/delaunay3d/SpatialSort.h"
 #include "mesher/volume/improve/QualityFlips.h"
 #include "mesher/volume/improve/SliverRemoval.h"
+#include "mesher/volume/improve/SmoothingSchedule.h"
 #include "mesher/volume/improve/TetScores.h"
 #include "mesher/volume/improve/VertexTets.h"
 #include "mesher/volume/improve/VertexMover.h"
@@ -23,11 +29,43 @@ constexpr double kSmoothingQualityFloor = 0.3;
 
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+/// Runs work(thread, k) for k in [begin, end) on up to `threads` threads (thread 0 is the
+/// caller), one k at a time from a shared counter; the first exception is rethrown once
+/// every thread has stopped.
+template <class Work>
+void forEachOnThreads(std::size_t begin, std::size_t end, int threads, Work work) {
+  threads = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(std::max(1, threads)), end - begin));
+  if (threads <= 1) {
+    for (std::size_t k = begin; k < end; ++k) work(0, k);
+    return;
+  }
+  std::atomic<std::size_t> next{begin};
+  std::exception_ptr error;
+  std::mutex errorMutex;
+  auto run = [&](int thread) {
+    try {
+      for (std::size_t k = next++; k < end; k = next++) work(thread, k);
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(errorMutex);
+      if (!error) error = std::current_exception();
+      next = end;
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(run, t);
+  run(0);
+  for (std::thread& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+}
+
 /// The smoothing sweeps of one pass: the free vertices in Hilbert order (neighbouring stars
 /// are visited one after another; the vertex numbering follows the refinement, scattered
-/// over the solid). Smoothing moves vertices only: the stars are read from one incidence
-/// snapshot. Returns the number of accepted moves.
-std::size_t smoothVertices(const SolidTetMesh& s, improve3d::VertexMover& mover, const VolumeImproveOptions& o) {
+/// over the solid), in blocks smoothed class after class, the blocks of a class by up to
+/// o.threads threads (SmoothingSchedule.h): the same positions for any number of threads.
+/// Smoothing moves vertices only: the stars are read from one incidence snapshot. Returns
+/// the number of accepted moves.
+std::size_t smoothVertices(SolidTetMesh& s, improve3d::VertexMetrics& vm, improve3d::TetScores& scores,
+                           const VolumeImproveOptions& o) {
   std::vector<std::uint32_t> free;
   std::vector<Vec3> at;
   for (std::uint32_t v = 0; v < s.mesh.numVertices(); ++v)
@@ -35,15 +73,32 @@ std::size_t smoothVertices(const SolidTetMesh& s, improve3d::VertexMover& mover,
       free.push_back(v);
       at.push_back(s.mesh.point(del3d::VertexId(v)));
     }
-  const std::vector<std::uint32_t> order = del3d::hilbertOrder(at);
+  std::vector<std::uint32_t> order = del3d::hilbertOrder(at);
+  for (std::uint32_t& i : order) i = free[i];
   const improve3d::VertexTets incidence(s.mesh);
-  mover.setIncidence(&incidence);
-  std::size_t moved = 0;
+  const improve3d::SmoothingSchedule schedule = improve3d::smoothingSchedule(s.mesh, incidence, order);
+  const int threads = std::max(1, o.threads);
+  std::vector<improve3d::VertexMover> movers;
+  movers.reserve(static_cast<std::size_t>(threads));
+  for (int t = 0; t < threads; ++t) {
+    movers.emplace_back(s, vm);
+    movers.back().setScores(&scores);
+    movers.back().setIncidence(&incidence);
+  }
+  std::vector<std::size_t> moved(static_cast<std::size_t>(threads), 0);
+  s.mesh.setCertifiedDelaunay(false);  // before the threads: moves then leave the flag alone
   for (int sweep = 0; sweep < o.smoothingSweeps; ++sweep)
-    for (const std::uint32_t i : order)
-      if (mover.smooth(del3d::VertexId(free[i]), o.lowGradation, kSmoothingQualityFloor, o.ascentSmoothing)) ++moved;
-  mover.setIncidence(nullptr);
-  return moved;
+    for (std::size_t c = 0; c < schedule.classes(); ++c)
+      forEachOnThreads(schedule.classStart[c], schedule.classStart[c + 1], threads, [&](int t, std::size_t k) {
+        const std::uint32_t b = schedule.blocks[k];
+        for (std::size_t i = schedule.blockStart[b]; i < schedule.blockStart[b + 1]; ++i)
+          if (movers[static_cast<std::size_t>(t)].smooth(del3d::VertexId(schedule.vertices[i]), o.lowGradation,
+                                                         kSmoothingQualityFloor, o.ascentSmoothing))
+            ++moved[static_cast<std::size_t>(t)];
+      });
+  std::size_t total = 0;
+  for (const std::size_t m : moved) total += m;
+  return total;
 }
 
 }  // namespace
@@ -56,7 +111,6 @@ VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, cons
   if (!metrics) metrics = &own.emplace(s.mesh, cs);
   improve3d::VertexMetrics& vm = *metrics;
   vm.sync();
-  improve3d::VertexMover mover(s, vm);
   std::optional<improve3d::TetScores> scores;  // exact after each pass: the sliver scan reads it
   for (int pass = 0; pass < std::max(o.passes, o.maxPasses); ++pass) {
     if (pass >= o.passes &&
@@ -67,11 +121,9 @@ VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, cons
     auto t0 = Clock::now();
     // every tet measured once; smoothing and flips read and keep this cache
     scores.emplace(s.mesh, vm);
-    mover.setScores(&*scores);
-    st.moved += smoothVertices(s, mover, o);
+    st.moved += smoothVertices(s, vm, *scores, o);
     st.smoothingSeconds += since(t0);
     t0 = Clock::now();
-    mover.setScores(nullptr);
     checkCancel(o.cancel, "volume improvement");
     improve3d::QualityFlips flips(s, vm, o.flipGain, &*scores);
     flips.run(o.flipCandidate);

@@ -89,6 +89,9 @@ struct VolumeImproveOptions {
   bool sliverInsertion = true;  ///< allow step (3)
   /// Checked before every pass and operator sweep (Cancel.h); null: never stops.
   const CancelToken* cancel = nullptr;
+  /// Threads of the smoothing (classes of independent vertices, SmoothingSchedule.h): the
+  /// same mesh for any number.
+  int threads = 1;
 };
 
 struct VolumeImproveStats {

@@ -247,6 +247,7 @@ void finishSolid(const VolumeMesherInput& in, const std::vector<std::vector<int>
     t0 = Clock::now();
     VolumeImproveOptions io3;
     io3.cancel = cancel;
+    io3.threads = std::max(1, in.options.threads);  // meshVolumes: the threads left to each solid
     const VolumeImproveStats is = improveVolume(bt.tets, *cs, io3, &metrics.emplace(bt.tets.mesh, *cs, tensors));
     p.outcome.times.emplace_back("volume improvement", since(t0));
     p.outcome.counters.emplace_back("improvement_passes", static_cast<double>(is.passes));
@@ -351,6 +352,17 @@ std::vector<int> repairAfterSplit(const Model& model, const MeshOptions& options
 
 /// Per solid, its embedded faces that are two-sided under `policy` (none for a solid left
 /// without tetrahedra).
+/// `in` with options.threads the threads each of `solids` solids meshed at once may use
+/// inside it (the improvement's smoothing): all of them for one solid, one each when there
+/// are at least as many solids as threads. The mesh does not depend on it.
+VolumeMesherInput withThreadsPerSolid(const VolumeMesherInput& in, std::size_t solids) {
+  VolumeMesherInput out = in;
+  const int threads = in.options.threads > 0 ? in.options.threads
+                                             : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  out.options.threads = std::max(1, threads / static_cast<int>(std::clamp<std::size_t>(solids, 1, threads)));
+  return out;
+}
+
 std::vector<std::vector<int>> crackFaces(const Model& model, InternalFaces policy,
                                          const std::vector<SolidOutcome>* solids = nullptr) {
   std::vector<std::vector<int>> out(model.solids.size());
@@ -413,7 +425,8 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
               reused[s] = 1;
               return;
             }
-          pieces[s] = meshSolid(in, faceTriangles, s, in.stopWhenThin ? &work[s] : nullptr);
+          pieces[s] = meshSolid(withThreadsPerSolid(in, todo.size()), faceTriangles, s,
+                                in.stopWhenThin ? &work[s] : nullptr);
         },
         "volume");
     for (const int s : todo)
@@ -460,7 +473,7 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
         static_cast<int>(finish.size()), in.options.threads,
         [&](int i) {
           const int s = finish[i];
-          finishSolid(in, faceTriangles, s, pieces[s], work[s]->b, work[s]->bt);
+          finishSolid(withThreadsPerSolid(in, finish.size()), faceTriangles, s, pieces[s], work[s]->b, work[s]->bt);
           work[s].reset();
         },
         "volume");
