@@ -122,7 +122,7 @@ int main(int argc, char** argv) {
       ->default_str("auto")
       ->group(kModel);
   addOverlapsOption(*meshCmd, mesh.overlaps);
-  meshCmd->add_option("--threads", mesh.options.threads, "Threads (0 = all cores)")
+  meshCmd->add_option("--threads", mesh.options.threads, "Threads (0 = all cores); the mesh is the same for any number")
       ->check(CLI::Range(0, 4096))
       ->option_text("N")
       ->default_str("0")
