@@ -123,6 +123,20 @@ bool hasStepTerminator(const std::string& path) {
 
 }  // namespace
 
+void loadStepFile(XSControl_Reader& reader, const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char head[3] = {0, 0, 0};
+  in.read(head, 3);
+  IFSelect_ReturnStatus st;
+  if (in.gcount() == 3 && head[0] == '\xEF' && head[1] == '\xBB' && head[2] == '\xBF') {
+    st = reader.ReadStream(path.c_str(), in);  // the stream stands past the mark
+  } else {
+    in.close();
+    st = reader.ReadFile(path.c_str());
+  }
+  if (st != IFSelect_RetDone) throw InputError(path + ": not a readable STEP file");
+}
+
 void readStepXcaf(CadModel::Impl& impl) {
   try {
     Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
@@ -134,12 +148,13 @@ void readStepXcaf(CadModel::Impl& impl) {
     // named faces become sub-shape labels (STEP representation items' names)
     Interface_Static::SetIVal("read.stepcaf.subshapes.name", 1);
     reader.SetLayerMode(false);
-    const IFSelect_ReturnStatus st = reader.ReadFile(impl.path.c_str());
-    testCrashPoint("reader-xcaf");
-    if (st != IFSelect_RetDone) {
+    try {
+      loadStepFile(reader.ChangeReader(), impl.path);
+    } catch (const InputError&) {
       app->Close(doc);
-      throw InputError(impl.path + ": not a readable STEP file");
+      throw;
     }
+    testCrashPoint("reader-xcaf");
     if (!reader.Transfer(doc)) {
       app->Close(doc);
       throw InputError(impl.path + ": STEP file has no shape OpenCASCADE can transfer");

@@ -22,9 +22,7 @@
 namespace aniso::cad::detail {
 namespace {
 
-void readFile(STEPControl_Reader& reader, const std::string& path) {
-  if (reader.ReadFile(path.c_str()) != IFSelect_RetDone) throw InputError(path + ": not a readable STEP file");
-}
+void readFile(STEPControl_Reader& reader, const std::string& path) { loadStepFile(reader, path); }
 
 /// "; k of n solids could not be transferred" when the shape has fewer distinct solids
 /// than the file has solid B-reps (OCCT's transfer skips an entity that raised), else "".

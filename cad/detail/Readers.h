@@ -1,6 +1,10 @@
 #pragma once
 // Internal: the three readers. Each fills impl.shape (and impl's part names for STEP) or
 // throws InputError naming the file; none lets an OCCT exception escape.
+#include <string>
+
+#include <XSControl_Reader.hxx>
+
 #include "cad/detail/CadModelImpl.h"
 
 namespace aniso::cad::detail {
@@ -20,6 +24,11 @@ void readStepPlain(CadModel::Impl& impl);
 std::string readStepRoots(CadModel::Impl& impl);
 void readIges(CadModel::Impl& impl);
 void readBrep(CadModel::Impl& impl);
+
+/// Loads the STEP file into `reader` (ReadFile; a file opening with a UTF-8 byte order mark,
+/// which OCCT 7.6's parser refuses, is read from a stream past the mark). Throws InputError
+/// naming the file when OCCT cannot parse it.
+void loadStepFile(XSControl_Reader& reader, const std::string& path);
 
 /// Removes OCCT's default console printers once, so that library code prints nothing.
 void silenceOcctMessages();

@@ -82,6 +82,23 @@ TEST(CadModel, ContentDecidesTheReader) {
   std::filesystem::remove(tmp);
 }
 
+TEST(CadModel, ReadsStepAfterAByteOrderMark) {
+  // A UTF-8 byte order mark before ISO-10303-21 (written by some Windows tools): OCCT's
+  // parser alone refuses the file; the part, its name and volume come through.
+  const auto tmp = std::filesystem::temp_directory_path() / "anisomesh_bom.step";
+  {
+    std::ifstream in(kModels + "bracket.step", std::ios::binary);
+    std::ofstream out(tmp, std::ios::binary);
+    out << "\xEF\xBB\xBF" << in.rdbuf();
+  }
+  CadModel m = CadModel::read(tmp.string());
+  std::filesystem::remove(tmp);
+  const ShapeSummary s = m.summary();
+  ASSERT_EQ(s.solids, 1);
+  EXPECT_EQ(s.solidList[0].name, "BRACKET");
+  EXPECT_NEAR(s.volume, 51133.894, 0.01);
+}
+
 TEST(CadModel, BadFilesAreInputErrors) {
   const auto dir = std::filesystem::temp_directory_path();
   EXPECT_THROW(CadModel::read((dir / "anisomesh_no_such_file.step").string()), InputError);
