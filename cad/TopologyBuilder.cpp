@@ -238,7 +238,13 @@ void buildFace(const ShapeMaps& maps, int fi, Model& model) {
                                ? TopoDS::Face(maps.faces(fi + 1))
                                : forwardFace;
   ModelFace& mf = model.faces[fi];
-  mf.surface = std::make_shared<OcctSurface>(forwardFace, name);
+  try {
+    mf.surface = std::make_shared<OcctSurface>(forwardFace, name);
+  } catch (const MeshingError&) {
+    // no usable surface (an unbounded one with no boundary, none at all): the face stays
+    // without one, Model::check reports it unusable and the pipeline leaves it out
+    mf.surface = nullptr;
+  }
   mf.reversed = face.Orientation() == TopAbs_REVERSED;
   mf.tolerance = BRep_Tool::Tolerance(face);
   mf.cadArea = measure([&](GProp_GProps& g) { BRepGProp::SurfaceProperties(forwardFace, g); });
@@ -377,10 +383,21 @@ void buildSolids(const ShapeMaps& maps, Model& model,
   }
 }
 
-Box3 boundingBox(const TopoDS_Shape& shape) {
+/// The shape's box; when a face has no usable surface (an unbounded plane without a
+/// boundary spans 1e100), the box of the other faces, the edges and the vertices, so that
+/// the sizes relative to the model's diagonal stay those of what is meshed.
+Box3 boundingBox(const TopoDS_Shape& shape, const ShapeMaps& maps, const Model& model) {
   Box3 box;
   Bnd_Box b;
-  BRepBndLib::Add(shape, b, false);
+  const bool allUsable = std::all_of(model.faces.begin(), model.faces.end(), [](const ModelFace& f) { return f.surface != nullptr; });
+  if (allUsable) {
+    BRepBndLib::Add(shape, b, false);
+  } else {
+    for (int i = 1; i <= maps.faces.Extent(); ++i)
+      if (model.faces[static_cast<std::size_t>(i - 1)].surface) BRepBndLib::Add(maps.faces(i), b, false);
+    for (int i = 1; i <= maps.edges.Extent(); ++i) BRepBndLib::Add(maps.edges(i), b, false);
+    for (int i = 1; i <= maps.vertices.Extent(); ++i) BRepBndLib::Add(maps.vertices(i), b, false);
+  }
   if (b.IsVoid()) return box;
   b.SetGap(0.0);
   double x0, y0, z0, x1, y1, z1;
@@ -402,7 +419,7 @@ Model buildTopology(const TopoDS_Shape& shape,
     buildFaces(maps, model);
     buildShells(maps, model);
     buildSolids(maps, model, solidName);
-    model.bbox = boundingBox(shape);
+    model.bbox = boundingBox(shape, maps, model);
   } catch (const Standard_Failure& e) {
     throw MeshingError("building the topology: OCCT failed: " + occtMessage(e));
   }

@@ -344,6 +344,26 @@ TEST(BuildTopology, CompoundWithTwoSolidsAndALooseFace) {
   expectSound(m);
 }
 
+TEST(BuildTopology, AnUnboundedFaceWithoutBoundaryIsUnusableNotTheModel) {
+  // A plane face with no wire (infinite): it has no usable surface, Model::check says so
+  // (the pipeline leaves it out), the box is the other shapes' (threw for the whole model).
+  BRep_Builder b;
+  TopoDS_Compound c;
+  b.MakeCompound(c);
+  b.Add(c, BRepPrimAPI_MakeBox(1, 2, 3).Shape());
+  b.Add(c, BRepBuilderAPI_MakeFace(gp_Pln(gp_Pnt(0, 0, 5), gp_Dir(0, 0, 1))).Face());
+  const Model m = build(c);
+  ASSERT_EQ(m.faces.size(), 7u);
+  EXPECT_EQ(m.faces[6].surface, nullptr);
+  for (int f = 0; f < 6; ++f) EXPECT_NE(m.faces[static_cast<std::size_t>(f)].surface, nullptr);
+  EXPECT_LT((m.bbox.lo - Vec3(0, 0, 0)).norm(), 1e-6);
+  EXPECT_LT((m.bbox.hi - Vec3(1, 2, 3)).norm(), 1e-6);
+  bool reported = false;
+  for (const ModelIssue& i : m.check())
+    if (i.kind == EntityKind::Face && i.index == 6 && i.level == ModelIssue::Level::Unusable) reported = true;
+  EXPECT_TRUE(reported);
+}
+
 TEST(BuildTopology, InternalFaceIsTakenForward) {
   const TopoDS_Face face =
       BRepBuilderAPI_MakeFace(gp_Pln(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1)), 0, 2, 0, 1).Face();
