@@ -192,6 +192,7 @@ std::unique_ptr<CSQuadtree2d> buildFaceControlSpace(const FaceSizingInput& in) {
   CurvatureSizing sizing = CurvatureSizing::from(in.params, diag);
   if (in.chordDeviation >= 0) sizing.chordDeviation = in.chordDeviation;
   const double gMin = parameterizationGuard(in.params, diag);
+  if (!f.surface) throw MeshingError("face " + std::to_string(face + 1) + ": the face has no usable surface");
   const Box2 bounds = faceBounds(f, face);
   // Every evaluation below uses a private clone of the surface (thread safety).
   const std::shared_ptr<ParametricSurface> surface = f.surface->clone();

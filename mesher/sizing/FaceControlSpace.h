@@ -38,7 +38,8 @@ struct FaceSizingInput {
 double parameterizationGuard(const SizingParameters& params, double modelDiagonal);
 
 /// Builds the initial control space of the face. Throws MeshingError naming the face when
-/// its parametric bounds are empty or its geometry cannot be evaluated.
+/// it has no usable surface, its parametric bounds are empty or its geometry cannot be
+/// evaluated.
 std::unique_ptr<CSQuadtree2d> buildFaceControlSpace(const FaceSizingInput& in);
 
 }  // namespace aniso

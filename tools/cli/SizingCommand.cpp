@@ -88,6 +88,7 @@ int runSizing(const SizingArgs& args) {
   all.cellSize = 4;
   std::vector<int> cellFace;
   for (int f = 0; f < nf; ++f) {
+    if (!in.model.faces[f].surface) continue;  // unusable (Model::check): no sizes to show
     fin.face = f;
     const ControlSpaceGrid g = buildFaceControlSpace(fin)->grid();
     appendFaceIn3d(g, *in.model.faces[f].surface, f + 1, all, cellFace);
