@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cctype>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "cad/detail/ChildProcess.h"
@@ -134,7 +135,15 @@ void loadStepFile(XSControl_Reader& reader, const std::string& path) {
     in.close();
     st = reader.ReadFile(path.c_str());
   }
-  if (st != IFSelect_RetDone) throw InputError(path + ": not a readable STEP file");
+  if (st == IFSelect_RetDone) return;
+  // why, in plain words: a missing section, else the parser's refusal of the syntax
+  std::ifstream again(path, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>());
+  const char* why = text.find("HEADER;") == std::string::npos ? "it has no HEADER section"
+                    : text.find("DATA;") == std::string::npos
+                        ? "it has no DATA section"
+                        : "OpenCASCADE's parser rejected its syntax (ISO 10303-21)";
+  throw InputError(path + ": not a readable STEP file: " + why);
 }
 
 void readStepXcaf(CadModel::Impl& impl) {

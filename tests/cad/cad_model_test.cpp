@@ -117,8 +117,20 @@ TEST(CadModel, BadFilesAreInputErrors) {
     EXPECT_NE(std::string(e.what()).find("truncated"), std::string::npos);
     EXPECT_NE(std::string(e.what()).find(cut.string()), std::string::npos);
   }
+  // A STEP file without its DATA section: the message says what is missing.
+  const auto noData = dir / "anisomesh_no_data.step";
+  const std::size_t data = text.find("DATA;"), endsec = text.find("ENDSEC;", data);
+  ASSERT_NE(endsec, std::string::npos);
+  std::ofstream(noData) << text.substr(0, data) << text.substr(endsec + 7);
+  try {
+    CadModel::read(noData.string());
+    FAIL() << "a file without a DATA section accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no DATA section"), std::string::npos) << e.what();
+  }
   std::filesystem::remove(empty);
   std::filesystem::remove(cut);
+  std::filesystem::remove(noData);
 }
 
 TEST(CadModel, BrepRoundTrip) {
