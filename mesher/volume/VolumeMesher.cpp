@@ -350,8 +350,6 @@ std::vector<int> repairAfterSplit(const Model& model, const MeshOptions& options
   return s.facesChanged;
 }
 
-/// Per solid, its embedded faces that are two-sided under `policy` (none for a solid left
-/// without tetrahedra).
 /// `in` with options.threads the threads each of `solids` solids meshed at once may use
 /// inside it (the improvement's smoothing): all of them for one solid, one each when there
 /// are at least as many solids as threads. The mesh does not depend on it.
@@ -363,6 +361,8 @@ VolumeMesherInput withThreadsPerSolid(const VolumeMesherInput& in, std::size_t s
   return out;
 }
 
+/// Per solid, its embedded faces that are two-sided under `policy` (none for a solid left
+/// without tetrahedra).
 std::vector<std::vector<int>> crackFaces(const Model& model, InternalFaces policy,
                                          const std::vector<SolidOutcome>* solids = nullptr) {
   std::vector<std::vector<int>> out(model.solids.size());
