@@ -39,10 +39,10 @@ inline Metric2d sizingComponent(const Mat2& m, const Mat2& mp) {
 /// MeshingError when M_p is singular / not finite or y is zero / not finite.
 inline double angleInRealSpace(const Mat2& mp, const Vec2& y) {
   if (!mp.allFinite() || !(mp.determinant() > 0))
-    throw MeshingError("surface metric: parameterization tensor is singular or not finite");
+    throw MeshingError("the surface's parametrisation is degenerate or not finite there (its derivatives vanish or overflow)");
   const Vec2 e = mp * y;
   if (!(e.allFinite() && e.squaredNorm() > 0))
-    throw MeshingError("surface metric: direction is zero or not finite");
+    throw MeshingError("the surface has no tangent direction there (a zero or non-finite derivative: degenerate geometry)");
   return std::atan2(e.y(), e.x());
 }
 

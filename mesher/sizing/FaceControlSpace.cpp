@@ -224,7 +224,7 @@ std::unique_ptr<CSQuadtree2d> buildFaceControlSpace(const FaceSizingInput& in) {
     cs->smoothGradation(in.params.gradation);
     return cs;
   } catch (const MeshingError& e) {
-    throw MeshingError(faceName(face) + ": building the control space failed: " + e.what());
+    throw MeshingError(faceName(face) + ": its element sizes cannot be computed: " + e.what());
   }
 }
 
