@@ -146,7 +146,7 @@ void loadStepFile(XSControl_Reader& reader, const std::string& path) {
   throw InputError(path + ": not a readable STEP file: " + why);
 }
 
-void readStepXcaf(CadModel::Impl& impl) {
+std::string readStepXcaf(CadModel::Impl& impl) {
   try {
     Handle(XCAFApp_Application) app = XCAFApp_Application::GetApplication();
     Handle(TDocStd_Document) doc;
@@ -181,13 +181,19 @@ void readStepXcaf(CadModel::Impl& impl) {
       impl.shape = c;
     }
     collectPartNames(tool, XCAFDoc_DocumentTool::ColorTool(doc->Main()), impl);
+    std::string lost = lostSolids(reader.ChangeReader(), impl.shape);
     app->Close(doc);
+    return lost;
   } catch (const Standard_Failure& e) {  // for the next rung: the child reports it as failed
     throw MeshingError(std::string("OpenCASCADE failed in the XCAF reader: ") + e.GetMessageString());
   }
 }
 
 namespace {
+
+/// After "k of n solid(s) could not be transferred": where their faces went.
+constexpr const char* solidsLostHint =
+    " (their faces, if any were read, are meshed as surfaces: no tetrahedra inside)";
 
 /// Why a reader path failed, for the warning or the final message.
 std::string failure(const ChildOutcome& o) {
@@ -200,20 +206,18 @@ void readStep(CadModel::Impl& impl) {
   if (!hasStepTerminator(impl.path))
     throw InputError(impl.path + ": STEP file is truncated (no END-ISO-10303-21)");
   // 1: XCAF, with part names. Its refusals (not STEP, nothing to transfer) are the file's.
-  const ChildOutcome xcaf = runInChild(impl, "reading", [](CadModel::Impl& i) {
-    readStepXcaf(i);
-    return std::string();
-  });
-  if (xcaf.kind == ChildOutcome::Done) return;
+  const ChildOutcome xcaf = runInChild(impl, "reading", [](CadModel::Impl& i) { return readStepXcaf(i); });
+  if (xcaf.kind == ChildOutcome::Done) {
+    if (!xcaf.payload.empty()) impl.readWarnings.push_back(xcaf.payload + solidsLostHint);
+    return;
+  }
   if (xcaf.kind == ChildOutcome::Input) throw InputError(xcaf.message);
   // 2: the plain reader, without the XCAF document (no part names).
-  const ChildOutcome plain = runInChild(impl, "reading", [](CadModel::Impl& i) {
-    readStepPlain(i);
-    return std::string();
-  });
+  const ChildOutcome plain = runInChild(impl, "reading", [](CadModel::Impl& i) { return readStepPlain(i); });
   if (plain.kind == ChildOutcome::Done) {
     impl.readWarnings.push_back("the XCAF STEP reader failed (" + failure(xcaf) +
                                 "); read by the plain reader, without part names");
+    if (!plain.payload.empty()) impl.readWarnings.push_back(plain.payload + solidsLostHint);
     return;
   }
   // 3: root by root, skipping the roots that fail.

@@ -24,10 +24,11 @@ namespace {
 
 void readFile(STEPControl_Reader& reader, const std::string& path) { loadStepFile(reader, path); }
 
-/// "; k of n solids could not be transferred" when the shape has fewer distinct solids
-/// than the file has solid B-reps (OCCT's transfer skips an entity that raised), else "".
-std::string lostSolids(STEPControl_Reader& reader, const TopoDS_Shape& shape) {
-  const Handle(StepData_StepModel) model = reader.StepModel();
+}  // namespace
+
+std::string lostSolids(XSControl_Reader& reader, const TopoDS_Shape& shape) {
+  const Handle(StepData_StepModel) model = Handle(StepData_StepModel)::DownCast(reader.Model());
+  if (model.IsNull()) return {};
   int breps = 0;
   for (int i = 1; i <= model->NbEntities(); ++i)
     if (model->Value(i)->IsKind(STANDARD_TYPE(StepShape_ManifoldSolidBrep))) ++breps;
@@ -35,19 +36,18 @@ std::string lostSolids(STEPControl_Reader& reader, const TopoDS_Shape& shape) {
   TopExp::MapShapes(shape, TopAbs_SOLID, solids);
   for (int i = 1; i <= solids.Extent(); ++i) distinct.Add(solids(i).Located(TopLoc_Location()));
   if (distinct.Extent() >= breps) return {};
-  return "; " + std::to_string(breps - distinct.Extent()) + " of " + std::to_string(breps) +
+  return std::to_string(breps - distinct.Extent()) + " of " + std::to_string(breps) +
          " solid(s) could not be transferred";
 }
 
-}  // namespace
-
-void readStepPlain(CadModel::Impl& impl) {
+std::string readStepPlain(CadModel::Impl& impl) {
   STEPControl_Reader reader;
   readFile(reader, impl.path);
   testCrashPoint("reader-plain");
   if (reader.TransferRoots() == 0 || reader.NbShapes() == 0)
     throw InputError(impl.path + ": STEP file has no shape OpenCASCADE can transfer");
   impl.shape = reader.OneShape();
+  return lostSolids(reader, impl.shape);
 }
 
 std::string readStepRoots(CadModel::Impl& impl) {
@@ -77,8 +77,8 @@ std::string readStepRoots(CadModel::Impl& impl) {
   if (kept == 0) throw MeshingError("no root of " + std::to_string(n) + " could be transferred");
   impl.shape = kept == 1 && n == 1 ? TopoDS_Shape(reader.OneShape()) : TopoDS_Shape(c);
   const std::string lost = lostSolids(reader, impl.shape);
-  if (skipped.empty()) return lost.empty() ? std::string() : lost.substr(2);
-  return "skipped root(s) " + skipped + " of " + std::to_string(n) + lost;
+  if (skipped.empty()) return lost;
+  return "skipped root(s) " + skipped + " of " + std::to_string(n) + (lost.empty() ? std::string() : "; " + lost);
 }
 
 }  // namespace aniso::cad::detail

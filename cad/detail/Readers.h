@@ -12,10 +12,11 @@ namespace aniso::cad::detail {
 /// STEP through the ladder XCAF -> plain -> root by root, each in a child process; throws
 /// InputError when every path crashed or failed (or the file is not STEP).
 void readStep(CadModel::Impl& impl);
-/// The rungs, run in the calling process. XCAF: part names in impl.names.
-void readStepXcaf(CadModel::Impl& impl);
+/// The rungs, run in the calling process. XCAF: part names in impl.names. Each returns ""
+/// or what the transfer lost (lostSolids).
+std::string readStepXcaf(CadModel::Impl& impl);
 /// STEPControl_Reader, all roots at once, no names.
-void readStepPlain(CadModel::Impl& impl);
+std::string readStepPlain(CadModel::Impl& impl);
 /// STEPControl_Reader one root at a time with OCCT's signals turned into exceptions
 /// (OSD::SetSignal, for the child process only): a root that fails or crashes is skipped.
 /// Returns "" or what was lost ("skipped root(s) 2, 5 of 7; 3 of 40 solid(s) could not be
@@ -29,6 +30,11 @@ void readBrep(CadModel::Impl& impl);
 /// which OCCT 7.6's parser refuses, is read from a stream past the mark). Throws InputError
 /// naming the file when OCCT cannot parse it.
 void loadStepFile(XSControl_Reader& reader, const std::string& path);
+
+/// "k of n solid(s) could not be transferred" when `shape` has fewer distinct solids than the
+/// file loaded in `reader` has solid B-reps (OCCT's transfer drops an entity that raised, or
+/// a solid written over an open shell, as faces), else "".
+std::string lostSolids(XSControl_Reader& reader, const TopoDS_Shape& shape);
 
 /// Removes OCCT's default console printers once, so that library code prints nothing.
 void silenceOcctMessages();
