@@ -20,12 +20,6 @@
 #include "mesher/core/Error.h"
 
 namespace aniso::cad::detail {
-namespace {
-
-void readFile(STEPControl_Reader& reader, const std::string& path) { loadStepFile(reader, path); }
-
-}  // namespace
-
 std::string lostSolids(XSControl_Reader& reader, const TopoDS_Shape& shape) {
   const Handle(StepData_StepModel) model = Handle(StepData_StepModel)::DownCast(reader.Model());
   if (model.IsNull()) return {};
@@ -42,7 +36,7 @@ std::string lostSolids(XSControl_Reader& reader, const TopoDS_Shape& shape) {
 
 std::string readStepPlain(CadModel::Impl& impl) {
   STEPControl_Reader reader;
-  readFile(reader, impl.path);
+  loadStepFile(reader, impl.path);
   testCrashPoint("reader-plain");
   if (reader.TransferRoots() == 0 || reader.NbShapes() == 0)
     throw InputError(impl.path + ": STEP file has no shape OpenCASCADE can transfer");
@@ -53,7 +47,7 @@ std::string readStepPlain(CadModel::Impl& impl) {
 std::string readStepRoots(CadModel::Impl& impl) {
   OSD::SetSignal(false);  // this process only: a kernel crash becomes OSD_SIGSEGV
   STEPControl_Reader reader;
-  readFile(reader, impl.path);
+  loadStepFile(reader, impl.path);
   const int n = reader.NbRootsForTransfer();
   std::string skipped;
   BRep_Builder b;

@@ -1,13 +1,13 @@
 #include "mesher/volume/ThinBoundary.h"
 
 #include <cmath>
-#include <cstdint>
 
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <map>
 #include <set>
 
+#include "mesher/volume/BoundaryMesh.h"
 #include "mesher/volume/MeshQueries.h"
 
 namespace aniso {
@@ -104,13 +104,7 @@ double predictedTriangles(const SurfaceMesh& surface, const std::vector<SizingSo
   const auto faceOf = [&](std::size_t i) { return i < surface.triangleFace.size() ? surface.triangleFace[i] : -1; };
   int nf = 0;
   for (std::size_t i = 0; i < nt; ++i) nf = std::max(nf, faceOf(i) + 1);
-  std::vector<std::size_t> first(static_cast<std::size_t>(nf) + 2, 0);  // triangles by face, compressed rows
-  for (std::size_t i = 0; i < nt; ++i)
-    if (faceOf(i) >= 0) ++first[static_cast<std::size_t>(faceOf(i)) + 2];
-  for (std::size_t f = 2; f < first.size(); ++f) first[f] += first[f - 1];
-  std::vector<std::uint32_t> byFace(first.back());
-  for (std::size_t i = 0; i < nt; ++i)
-    if (faceOf(i) >= 0) byFace[first[static_cast<std::size_t>(faceOf(i)) + 1]++] = static_cast<std::uint32_t>(i);
+  const std::vector<std::vector<int>> byFace = trianglesByFace(surface, nf);
   std::vector<Vec3> centroid(nt);
   for (std::size_t i = 0; i < nt; ++i) {
     const auto& t = surface.triangles[i];
@@ -128,8 +122,7 @@ double predictedTriangles(const SurfaceMesh& surface, const std::vector<SizingSo
     }
     for (const int f : src.faces)
       if (f >= 0 && f < nf)
-        for (std::size_t k = first[static_cast<std::size_t>(f)]; k < first[static_cast<std::size_t>(f) + 1]; ++k)
-          visit(byFace[k]);
+        for (const int i : byFace[static_cast<std::size_t>(f)]) visit(static_cast<std::size_t>(i));
   }
   double n = 0;
   for (std::size_t i = 0; i < nt; ++i) {
