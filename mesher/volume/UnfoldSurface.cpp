@@ -215,8 +215,8 @@ std::vector<std::pair<int, int>> foldedEdgesByFace(const SurfaceMesh& mesh) {
   std::map<int, std::vector<Tri>> byFace;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) byFace[mesh.triangleFace[t]].push_back(mesh.triangles[t]);
   std::vector<std::pair<int, int>> out;
-  for (auto& [f, tris] : byFace)
-    if (const int n = FaceTriangles(mesh, std::move(tris)).countFolded(); n > 0) out.push_back({f, n});
+  for (const auto& [f, tris] : byFace)
+    if (const int n = countFoldedEdges(mesh, tris); n > 0) out.push_back({f, n});
   return out;
 }
 
