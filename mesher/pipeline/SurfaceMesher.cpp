@@ -45,6 +45,9 @@ int cancelFoldedPairs(SurfaceMesh& mesh, std::size_t first) {
     std::size_t index;
   };
   std::vector<Key> keys;
+  // (a hash of the sorted nodes, position in keys): one sort of 16-byte pairs finds the
+  // candidates; only triangles whose hash repeats are compared node by node
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> hashed;
   for (std::size_t t = first; t < mesh.triangles.size(); ++t) {
     std::array<int, 3> n = mesh.triangles[t];
     // Rotate so the smallest node is first; the parity of the rest gives the orientation.
@@ -53,19 +56,35 @@ int cancelFoldedPairs(SurfaceMesh& mesh, std::size_t first) {
     const bool even = n[1] < n[2];
     std::array<int, 3> s = n;
     std::sort(s.begin(), s.end());
+    std::uint64_t h = 0x9E3779B97F4A7C15ull;
+    for (const int v : s) h = (h ^ static_cast<std::uint32_t>(v)) * 0xFF51AFD7ED558CCDull, h ^= h >> 32;
+    hashed.push_back({h, static_cast<std::uint32_t>(keys.size())});
     keys.push_back({s, even, t});
   }
-  std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
-    return a.sorted != b.sorted ? a.sorted < b.sorted : a.index < b.index;
-  });
+  std::sort(hashed.begin(), hashed.end());
   std::vector<std::uint8_t> drop(mesh.triangles.size(), 0);
-  for (std::size_t i = 0; i < keys.size();) {
-    std::size_t j = i;
-    while (j < keys.size() && keys[j].sorted == keys[i].sorted) ++j;
-    // Pair up opposite orientations within the group.
-    std::vector<std::size_t> pos, neg;
-    for (std::size_t k = i; k < j; ++k) (keys[k].even ? pos : neg).push_back(keys[k].index);
-    for (std::size_t k = 0; k < std::min(pos.size(), neg.size()); ++k) drop[pos[k]] = drop[neg[k]] = 1;
+  std::vector<Key> group;
+  for (std::size_t i = 0; i < hashed.size();) {
+    std::size_t j = i + 1;
+    while (j < hashed.size() && hashed[j].first == hashed[i].first) ++j;
+    if (j - i < 2) {
+      i = j;
+      continue;
+    }
+    group.clear();
+    for (std::size_t k = i; k < j; ++k) group.push_back(keys[hashed[k].second]);
+    std::sort(group.begin(), group.end(), [](const Key& a, const Key& b) {
+      return a.sorted != b.sorted ? a.sorted < b.sorted : a.index < b.index;
+    });
+    for (std::size_t g = 0; g < group.size();) {
+      std::size_t h = g;
+      while (h < group.size() && group[h].sorted == group[g].sorted) ++h;
+      // Pair up opposite orientations within the triangles of the same nodes.
+      std::vector<std::size_t> pos, neg;
+      for (std::size_t k = g; k < h; ++k) (group[k].even ? pos : neg).push_back(group[k].index);
+      for (std::size_t k = 0; k < std::min(pos.size(), neg.size()); ++k) drop[pos[k]] = drop[neg[k]] = 1;
+      g = h;
+    }
     i = j;
   }
   std::size_t w = first;

@@ -2,7 +2,10 @@
 // messages come out in a deterministic order.
 #include "mesher/surface/SurfaceMesh.h"
 
+#include "mesher/core/NodeBuckets.h"
+
 #include <algorithm>
+#include <span>
 #include <sstream>
 #include <tuple>
 
@@ -99,19 +102,35 @@ std::vector<std::string> SurfaceMesh::validate() const {
 }
 
 SurfaceMesh::EdgeCounts SurfaceMesh::edgeCounts() const {
-  std::vector<EdgeKey> keys = triangleEdges(*this);
-  std::sort(keys.begin(), keys.end(), [](const EdgeKey& x, const EdgeKey& y) {
-    return std::tie(x.a, x.b, x.tri) < std::tie(y.a, y.b, y.tri);
-  });
+  const std::vector<EdgeKey> keys = triangleEdges(*this);
+  int lowest = 0, highest = -1;
+  for (const EdgeKey& k : keys) lowest = std::min(lowest, k.a), highest = std::max(highest, k.b);
   EdgeCounts c;
-  for (std::size_t i = 0; i < keys.size();) {
-    std::size_t j = i;
-    while (j < keys.size() && keys[j].a == keys[i].a && keys[j].b == keys[i].b) ++j;
-    const std::size_t uses = j - i;
-    if (uses == 1) ++c.open;
-    else if (uses > 2) ++c.nonManifold;
-    else if (keys[i].forward == keys[i + 1].forward) ++c.misoriented;
-    i = j;
+  auto count = [&c](std::span<EdgeKey> uses) {  // sorted by (a, b, tri)
+    for (std::size_t i = 0; i < uses.size();) {
+      std::size_t j = i;
+      while (j < uses.size() && uses[j].a == uses[i].a && uses[j].b == uses[i].b) ++j;
+      const std::size_t n = j - i;
+      if (n == 1) ++c.open;
+      else if (n > 2) ++c.nonManifold;
+      else if (uses[i].forward == uses[i + 1].forward) ++c.misoriented;
+      i = j;
+    }
+  };
+  auto byEnds = [](const EdgeKey& x, const EdgeKey& y) { return std::tie(x.a, x.b, x.tri) < std::tie(y.a, y.b, y.tri); };
+  if (lowest < 0) {  // an invalid node index (validate() names it): one sort of every use
+    std::vector<EdgeKey> all = keys;
+    std::sort(all.begin(), all.end(), byEnds);
+    count(all);
+    return c;
+  }
+  // the uses bucketed by their smaller end (linear), each bucket sorted (NodeBuckets.h)
+  NodeBuckets<EdgeKey> byNode = bucketByNode(std::span<const EdgeKey>(keys), static_cast<std::size_t>(highest) + 1,
+                                             [](const EdgeKey& k) { return k.a; });
+  for (std::size_t a = 0; a < byNode.nodes(); ++a) {
+    const std::span<EdgeKey> bucket = byNode.bucket(a);
+    std::sort(bucket.begin(), bucket.end(), byEnds);
+    count(bucket);
   }
   return c;
 }

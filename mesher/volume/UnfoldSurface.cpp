@@ -5,13 +5,16 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <span>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 #include <Eigen/Geometry>
 
 #include "mesher/core/Log.h"
+#include "mesher/core/NodeBuckets.h"
 #include "mesher/volume/FoldRegion.h"
 
 namespace aniso {
@@ -212,12 +215,39 @@ int repairRegions(const SurfaceMesh& mesh, std::vector<Tri>& tris, std::vector<i
 }  // namespace
 
 std::vector<std::pair<int, int>> foldedEdgesByFace(const SurfaceMesh& mesh) {
-  std::map<int, std::vector<Tri>> byFace;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) byFace[mesh.triangleFace[t]].push_back(mesh.triangles[t]);
-  std::vector<std::pair<int, int>> out;
-  for (const auto& [f, tris] : byFace)
-    if (const int n = countFoldedEdges(mesh, tris); n > 0) out.push_back({f, n});
-  return out;
+  // Every triangle edge use (a < b, face, triangle), bucketed by a (NodeBuckets.h: linear),
+  // each bucket sorted by (b, face, triangle): an edge of exactly two uses in one face is
+  // tested with its triangles in index order, as countFoldedEdges does face by face.
+  struct Use {
+    int a, b, face;
+    std::uint32_t tri;
+  };
+  std::vector<Use> uses;
+  uses.reserve(3 * mesh.triangles.size());
+  int highest = -1;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const auto [a, b] = key(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3]);
+      if (a < 0) return {};  // node out of range: not a mesh to check (SurfaceMesh::validate)
+      highest = std::max(highest, b);
+      uses.push_back({a, b, mesh.triangleFace[t], static_cast<std::uint32_t>(t)});
+    }
+  NodeBuckets<Use> byNode = bucketByNode(std::span<const Use>(uses), static_cast<std::size_t>(highest + 1),
+                                         [](const Use& u) { return u.a; });
+  std::map<int, int> folds;
+  for (std::size_t a = 0; a < byNode.nodes(); ++a) {
+    const std::span<Use> bucket = byNode.bucket(a);
+    std::sort(bucket.begin(), bucket.end(),
+              [](const Use& x, const Use& y) { return std::tie(x.b, x.face, x.tri) < std::tie(y.b, y.face, y.tri); });
+    for (std::size_t i = 0; i < bucket.size();) {
+      std::size_t j = i + 1;
+      while (j < bucket.size() && bucket[j].b == bucket[i].b && bucket[j].face == bucket[i].face) ++j;
+      if (j - i == 2 && folded(mesh, mesh.triangles[bucket[i].tri], mesh.triangles[bucket[i + 1].tri]))
+        ++folds[bucket[i].face];
+      i = j;
+    }
+  }
+  return {folds.begin(), folds.end()};
 }
 
 int countFoldedEdges(const SurfaceMesh& mesh) {

@@ -1,10 +1,12 @@
 #include "mesher/surface/improve/FaceQuality.h"
 
 #include <algorithm>
+#include <span>
 #include <utility>
 #include <vector>
 
 #include "mesher/core/Error.h"
+#include "mesher/core/NodeBuckets.h"
 #include "mesher/metric/MeanRatio.h"
 #include "mesher/metric/MetricLength.h"
 #include "mesher/metric/NonConformity.h"
@@ -56,9 +58,15 @@ FaceQuality faceQuality(std::span<const Vec2> uv, std::span<const std::array<int
     addTriangle(q, cs, uv[t[0]], uv[t[1]], uv[t[2]]);
     for (int k = 0; k < 3; ++k) edges.emplace_back(std::minmax(t[k], t[(k + 1) % 3]));
   }
-  std::sort(edges.begin(), edges.end());
-  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-  for (const auto& [a, b] : edges) addEdge(q, cs, uv[a], uv[b]);
+  // each edge once, in increasing (a, b) order (NodeBuckets.h)
+  NodeBuckets<std::pair<int, int>> byNode = bucketByNode(std::span<const std::pair<int, int>>(edges), uv.size(),
+                                                         [](const std::pair<int, int>& e) { return e.first; });
+  for (std::size_t a = 0; a < byNode.nodes(); ++a) {
+    const std::span<std::pair<int, int>> bucket = byNode.bucket(a);
+    std::sort(bucket.begin(), bucket.end());
+    for (auto it = bucket.begin(); it != bucket.end(); ++it)
+      if (it == bucket.begin() || *it != *(it - 1)) addEdge(q, cs, uv[it->first], uv[it->second]);
+  }
   return q;
 }
 

@@ -14,6 +14,7 @@ namespace {
 /// Scratch of one call: the star of the current vertex.
 struct Star {
   std::vector<VertexId> ring;
+  std::vector<TriId> tris;  ///< star triangle k = (Q, P_k, P_k+1)
   std::vector<Vec2> p;  ///< neighbour positions
   std::vector<Mat2> m;  ///< metric of star triangle k = (Q, P_k, P_k+1): blend of its vertices
 };
@@ -64,16 +65,39 @@ bool starValid(const Star& star, const Vec2& p) {
   return true;
 }
 
+/// The blended metric of each triangle (VertexMetricCache::blend of its corners), computed
+/// at its first use: smoothing moves vertices only, so neither the triangles nor the
+/// vertices' metrics change during laplaceSmoothing.
+class TriangleMetrics {
+ public:
+  TriangleMetrics(const Triangulation2d& tri, const VertexMetricCache& metrics)
+      : tri_(tri), metrics_(metrics), m_(tri.triangleSlots()), have_(tri.triangleSlots(), 0) {}
+  const Mat2& operator[](TriId t) {
+    if (!have_[t.index]) {
+      const std::uint32_t* tv = tri_.triVertices(t);
+      const VertexId corners[3] = {VertexId(tv[0]), VertexId(tv[1]), VertexId(tv[2])};
+      m_[t.index] = metrics_.blend(corners, 3);
+      have_[t.index] = 1;
+    }
+    return m_[t.index];
+  }
+
+ private:
+  const Triangulation2d& tri_;
+  const VertexMetricCache& metrics_;
+  std::vector<Mat2> m_;
+  std::vector<std::uint8_t> have_;
+};
+
 /// One vertex: gather its star, compute the target, check, then move. Updates st.
-void smoothVertex(Triangulation2d& tri, const VertexMetricCache& metrics, VertexId v,
-                  const SmoothingOptions& options, Star& star, SmoothingStats& st) {
-  if (!gatherRing(tri, v, star.ring)) return;
+void smoothVertex(Triangulation2d& tri, const VertexMetricCache& metrics, TriangleMetrics& triangleMetrics,
+                  VertexId v, const SmoothingOptions& options, Star& star, SmoothingStats& st) {
+  if (!gatherRing(tri, v, star.ring, star.tris)) return;
   star.p.clear(), star.m.clear();
   const std::size_t degree = star.ring.size();
   for (std::size_t k = 0; k < degree; ++k) {
     star.p.push_back(tri.point(star.ring[k]));
-    const VertexId corners[3] = {v, star.ring[k], star.ring[k + 1 == degree ? 0 : k + 1]};
-    star.m.push_back(metrics.blend(corners, 3));
+    star.m.push_back(triangleMetrics[star.tris[k]]);
   }
   const Vec2 q = tri.point(v);
   const bool metricVersion = metrics.gradation(v) > options.lowGradation;
@@ -107,13 +131,14 @@ SmoothingStats laplaceSmoothing(Triangulation2d& tri, const VertexMetricCache& m
     throw MeshingError("laplaceSmoothing: invalid options");
   SmoothingStats st;
   Star star;
-  star.ring.reserve(32), star.p.reserve(32), star.m.reserve(32);
+  star.ring.reserve(32), star.tris.reserve(32), star.p.reserve(32), star.m.reserve(32);
+  TriangleMetrics triangleMetrics(tri, metrics);
   const std::uint32_t n = static_cast<std::uint32_t>(tri.numVertices());
   for (int sweep = 0; sweep < options.iterations; ++sweep)
     for (std::uint32_t v = 0; v < n; ++v)
       if (metrics.movable(VertexId(v))) {
         ++st.visited;
-        smoothVertex(tri, metrics, VertexId(v), options, star, st);
+        smoothVertex(tri, metrics, triangleMetrics, VertexId(v), options, star, st);
       }
   return st;
 }

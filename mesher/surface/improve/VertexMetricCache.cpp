@@ -180,7 +180,10 @@ Mat2 VertexMetricCache::blend(const VertexId* v, int n) const {
   return inverse2(sum / m);
 }
 
-bool gatherRing(const Triangulation2d& tri, VertexId v, std::vector<VertexId>& ring, std::size_t maxDegree) {
+namespace {
+template <class OnTriangle>
+bool walkRing(const Triangulation2d& tri, VertexId v, std::vector<VertexId>& ring, std::size_t maxDegree,
+              OnTriangle onTriangle) {
   ring.clear();
   const TriId t0 = tri.vertexTriangle(v);
   if (!t0.valid()) return false;
@@ -189,10 +192,22 @@ bool gatherRing(const Triangulation2d& tri, VertexId v, std::vector<VertexId>& r
     const int k = tri.localIndex(t, v);
     if (k < 0) return false;
     ring.push_back(tri.vertex(t, kNext[k]));
+    onTriangle(t);
     t = tri.neighbour(t, kNext[k]);
     if (!t.valid() || ring.size() > maxDegree) return false;
   } while (t != t0);
   return true;
+}
+}  // namespace
+
+bool gatherRing(const Triangulation2d& tri, VertexId v, std::vector<VertexId>& ring, std::size_t maxDegree) {
+  return walkRing(tri, v, ring, maxDegree, [](TriId) {});
+}
+
+bool gatherRing(const Triangulation2d& tri, VertexId v, std::vector<VertexId>& ring, std::vector<TriId>& tris,
+                std::size_t maxDegree) {
+  tris.clear();
+  return walkRing(tri, v, ring, maxDegree, [&](TriId t) { tris.push_back(t); });
 }
 
 void moveVertex(Triangulation2d& tri, VertexId v, const Vec2& p) {

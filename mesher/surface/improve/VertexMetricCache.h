@@ -124,6 +124,9 @@ bool symmetricTransform(const Mat2& m, Mat2& s);
 /// border of the triangulation, or it has more than maxDegree neighbours.
 bool gatherRing(const Triangulation2d& tri, VertexId v, std::vector<VertexId>& ring,
                 std::size_t maxDegree = 4096);
+/// The same, and the star triangles: tris[j] = (v, ring[j], ring[j+1 mod n]).
+bool gatherRing(const Triangulation2d& tri, VertexId v, std::vector<VertexId>& ring, std::vector<TriId>& tris,
+                std::size_t maxDegree = 4096);
 
 /// Moves v to p. No check: the caller has verified that every triangle of the star stays
 /// counter-clockwise. Triangulation2d has no coordinate setter, so this writes through the
