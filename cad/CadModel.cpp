@@ -64,6 +64,7 @@ CadModel::~CadModel() = default;
 
 const std::string& CadModel::path() const { return impl_->path; }
 CadFormat CadModel::format() const { return impl_->format; }
+int CadModel::solidsLost() const { return impl_->solidsLost; }
 
 namespace {
 
