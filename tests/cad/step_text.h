@@ -1,6 +1,6 @@
 #pragma once
-// Small STEP texts written for the tests (no third-party file): a unit cube of six planar
-// faces, its boundary given as `shellKind` (CLOSED_SHELL, or OPEN_SHELL for the defect a
+// Small STEP texts written for the tests (no third-party file): stepWithContext wraps the
+// entities of a shape into a file; unitCubeStep is a unit cube of six planar faces, its boundary given as `shellKind` (CLOSED_SHELL, or OPEN_SHELL for the defect a
 // writer makes) under a MANIFOLD_SOLID_BREP, in millimetres, the solid an item of a
 // `representation` (OCCT transfers a solid over an open shell as a solid from an
 // ADVANCED_BREP_SHAPE_REPRESENTATION, as faces only from a
@@ -12,18 +12,20 @@
 
 namespace aniso::test {
 
-inline std::string unitCubeStep(const std::string& shellKind,
-                                const std::string& representation = "ADVANCED_BREP_SHAPE_REPRESENTATION") {
-  std::string s = R"(ISO-10303-21;
+/// A STEP file of one part in millimetres: the header, the product and its geometric
+/// context (#1 to #12; #7 the product definition shape, #12 the context) around `data`, the
+/// entities from #20 on that give the shape.
+inline std::string stepWithContext(const std::string& data) {
+  return R"(ISO-10303-21;
 HEADER;
-FILE_DESCRIPTION(('unit cube'),'2;1');
-FILE_NAME('cube.stp','2026-01-01T00:00:00',(''),(''),'anisomesh tests','','');
+FILE_DESCRIPTION(('anisomesh test model'),'2;1');
+FILE_NAME('test.stp','2026-01-01T00:00:00',(''),(''),'anisomesh tests','','');
 FILE_SCHEMA(('AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }'));
 ENDSEC;
 DATA;
 #1=APPLICATION_CONTEXT('automotive_design');
 #2=PRODUCT_CONTEXT('',#1,'mechanical');
-#3=PRODUCT('cube','cube','',(#2));
+#3=PRODUCT('part','part','',(#2));
 #4=PRODUCT_DEFINITION_FORMATION('','',#3);
 #5=PRODUCT_DEFINITION_CONTEXT('part definition',#1,'design');
 #6=PRODUCT_DEFINITION('','',#4,#5);
@@ -33,7 +35,12 @@ DATA;
 #10=(NAMED_UNIT(*)SI_UNIT($,.STERADIAN.)SOLID_ANGLE_UNIT());
 #11=UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(1.0E-7),#8,'distance_accuracy_value','');
 #12=(GEOMETRIC_REPRESENTATION_CONTEXT(3)GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((#11))GLOBAL_UNIT_ASSIGNED_CONTEXT((#8,#9,#10))REPRESENTATION_CONTEXT('','3D'));
-#20=CARTESIAN_POINT('',(0.,0.,0.));
+)" + data + "ENDSEC;\nEND-ISO-10303-21;\n";
+}
+
+inline std::string unitCubeStep(const std::string& shellKind,
+                                const std::string& representation = "ADVANCED_BREP_SHAPE_REPRESENTATION") {
+  std::string s = stepWithContext(R"(#20=CARTESIAN_POINT('',(0.,0.,0.));
 #21=CARTESIAN_POINT('',(1.,0.,0.));
 #22=CARTESIAN_POINT('',(1.,1.,0.));
 #23=CARTESIAN_POINT('',(0.,1.,0.));
@@ -140,9 +147,7 @@ DATA;
 #201=MANIFOLD_SOLID_BREP('cube',#200);
 #202=REPRESENTATION_KIND('',(#201),#12);
 #203=SHAPE_DEFINITION_REPRESENTATION(#7,#202);
-ENDSEC;
-END-ISO-10303-21;
-)";
+)");
   s.replace(s.find("SHELL_KIND"), 10, shellKind);
   s.replace(s.find("REPRESENTATION_KIND"), 19, representation);
   return s;
