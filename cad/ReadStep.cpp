@@ -181,6 +181,7 @@ std::string readStepXcaf(CadModel::Impl& impl) {
       impl.shape = c;
     }
     collectPartNames(tool, XCAFDoc_DocumentTool::ColorTool(doc->Main()), impl);
+    impl.facesInFile = stepFaceCount(reader.ChangeReader());
     std::string lost = lostSolids(reader.ChangeReader(), impl.shape, &impl.solidsLost);
     app->Close(doc);
     return lost;

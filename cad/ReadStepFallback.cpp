@@ -10,6 +10,7 @@
 #include <Standard_ErrorHandler.hxx>
 #include <Standard_Failure.hxx>
 #include <StepData_StepModel.hxx>
+#include <StepShape_Face.hxx>
 #include <StepShape_ManifoldSolidBrep.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
@@ -46,6 +47,15 @@ std::string lostSolids(XSControl_Reader& reader, TopoDS_Shape& shape, int* notRe
   return message;
 }
 
+int stepFaceCount(XSControl_Reader& reader) {
+  const Handle(StepData_StepModel) model = Handle(StepData_StepModel)::DownCast(reader.Model());
+  if (model.IsNull()) return 0;
+  int faces = 0;
+  for (int i = 1; i <= model->NbEntities(); ++i)
+    if (model->Value(i)->IsKind(STANDARD_TYPE(StepShape_Face))) ++faces;
+  return faces;
+}
+
 std::string readStepPlain(CadModel::Impl& impl) {
   STEPControl_Reader reader;
   loadStepFile(reader, impl.path);
@@ -53,6 +63,7 @@ std::string readStepPlain(CadModel::Impl& impl) {
   if (reader.TransferRoots() == 0 || reader.NbShapes() == 0)
     throw InputError(impl.path + ": STEP file has no shape OpenCASCADE can transfer");
   impl.shape = reader.OneShape();
+  impl.facesInFile = stepFaceCount(reader);
   return lostSolids(reader, impl.shape, &impl.solidsLost);
 }
 
@@ -82,6 +93,7 @@ std::string readStepRoots(CadModel::Impl& impl) {
   }
   if (kept == 0) throw MeshingError("no root of " + std::to_string(n) + " could be transferred");
   impl.shape = kept == 1 && n == 1 ? TopoDS_Shape(reader.OneShape()) : TopoDS_Shape(c);
+  impl.facesInFile = stepFaceCount(reader);
   const std::string lost = lostSolids(reader, impl.shape, &impl.solidsLost);
   if (skipped.empty()) return lost;
   return "skipped root(s) " + skipped + " of " + std::to_string(n) + (lost.empty() ? std::string() : "; " + lost);

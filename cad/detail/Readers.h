@@ -39,6 +39,10 @@ void loadStepFile(XSControl_Reader& reader, const std::string& path);
 /// given, receives the number of solids still missing.
 std::string lostSolids(XSControl_Reader& reader, TopoDS_Shape& shape, int* notRebuilt = nullptr);
 
+/// The FACE entities (ADVANCED_FACE, FACE_SURFACE, ...) of the file loaded in `reader`,
+/// whether or not a shape uses them.
+int stepFaceCount(XSControl_Reader& reader);
+
 /// Makes solids again of the faces outside any solid in `shape` when, sewn with a tolerance
 /// of 1e-6 of their extent, they form closed shells, at least one and at most `lost` of
 /// them: each becomes a solid turned outward (ShapeFix_Solid) if it encloses a volume. The

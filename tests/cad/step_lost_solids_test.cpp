@@ -16,6 +16,7 @@
 
 #include "cad/CadModel.h"
 #include "cad/detail/Readers.h"
+#include "mesher/core/Error.h"
 #include "tests/cad/step_text.h"
 
 namespace aniso::cad::detail {
@@ -89,6 +90,23 @@ TEST(LostSolids, KeepsTheFacesOfAnOpenShellThatDoesNotClose) {
   const ShapeSummary s = m.summary();
   EXPECT_EQ(s.solids, 0);
   EXPECT_EQ(s.faces, 5);
+  std::filesystem::remove(path);
+}
+
+// A file whose faces no transferred shape holds (here a representation of only a placement):
+// the empty model's message says the file had faces and how many.
+TEST(LostSolids, AnEmptyModelCountsTheFacesOfTheFile) {
+  std::string text = test::unitCubeStep("CLOSED_SHELL", "SHAPE_REPRESENTATION");
+  const std::string items = "('',(#201),#12)";
+  ASSERT_NE(text.find(items), std::string::npos);
+  text.replace(text.find(items), items.size(), "('',(#101),#12)");
+  const std::string path = test::writeTempStep("faces_not_used.stp", text);
+  try {
+    CadModel::read(path);
+    ADD_FAILURE() << "an empty model was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("none of the file's 6 face(s) could be read"), std::string::npos) << e.what();
+  }
   std::filesystem::remove(path);
 }
 
