@@ -64,6 +64,7 @@ CadModel::~CadModel() = default;
 
 const std::string& CadModel::path() const { return impl_->path; }
 CadFormat CadModel::format() const { return impl_->format; }
+int CadModel::solidsLost() const { return impl_->solidsLost; }
 
 namespace {
 
@@ -113,8 +114,14 @@ CadModel CadModel::read(const std::string& path, const CancelToken* cancel) {
   TopTools_IndexedMapOfShape faces, edges;
   TopExp::MapShapes(impl->shape, TopAbs_FACE, faces);
   TopExp::MapShapes(impl->shape, TopAbs_EDGE, edges);
-  if (faces.IsEmpty() && edges.IsEmpty())
+  if (faces.IsEmpty() && edges.IsEmpty()) {
+    // A file that holds faces the transfer dropped says so, with their number.
+    if (impl->facesInFile > 0)
+      throw InputError(path + ": the model is empty: none of the file's " + std::to_string(impl->facesInFile) +
+                       " face(s) could be read (OpenCASCADE rejected their geometry or topology, or no "
+                       "shape of the file uses them)");
     throw InputError(path + ": the model is empty (no faces, no edges)");
+  }
   return CadModel(std::move(impl));
 }
 

@@ -107,6 +107,10 @@ class CadModel {
 
   const std::string& path() const;
   CadFormat format() const;
+  /// Solids the file declares that reading could not give as solids, not even rebuilt from
+  /// their faces (a STEP solid bounded by an open shell that does not close, or one OCCT's
+  /// transfer dropped): their faces, if any were read, are loose faces. 0 for IGES and BREP.
+  int solidsLost() const;
 
   /// Summary of the current shape (as read, or as prepared after prepare()).
   ShapeSummary summary() const;

@@ -64,6 +64,8 @@ void writeShape(const CadModel::Impl& impl, const Exchange& x, std::ostream& met
   b.MakeCompound(all);
   putInt(meta, impl.shape.IsNull() ? 0 : 1);
   if (!impl.shape.IsNull()) b.Add(all, impl.shape);
+  putInt(meta, impl.solidsLost);
+  putInt(meta, impl.facesInFile);
   putInt(meta, static_cast<std::int64_t>(impl.names.size()));
   for (size_t i = 0; i < impl.names.size(); ++i) {
     putString(meta, impl.names[i]);
@@ -88,6 +90,8 @@ void writeShape(const CadModel::Impl& impl, const Exchange& x, std::ostream& met
 
 void readShape(CadModel::Impl& impl, const Exchange& x, std::istream& meta) {
   const bool hasShape = getInt(meta) != 0;
+  const int solidsLost = static_cast<int>(getInt(meta));
+  const int facesInFile = static_cast<int>(getInt(meta));
   std::vector<std::string> names(static_cast<size_t>(getInt(meta))), colors(names.size());
   for (size_t i = 0; i < names.size(); ++i) {
     names[i] = getString(meta);
@@ -112,6 +116,8 @@ void readShape(CadModel::Impl& impl, const Exchange& x, std::istream& meta) {
     impl.shape = it.Value();
     it.Next();
   }
+  impl.solidsLost = solidsLost;
+  impl.facesInFile = facesInFile;
   impl.names = std::move(names);
   impl.partColors = std::move(colors);
   impl.faceTags = std::move(tags);

@@ -15,6 +15,10 @@ void fixShape(CadModel::Impl& impl, double diag, PrepareReport& report) {
     Handle(ShapeFix_Shape) fixer = new ShapeFix_Shape(impl.shape);
     // Fixes may not open gaps larger than a small fraction of the model.
     fixer->SetMaxTolerance(1e-3 * diag);
+    if (const int split = splitLoopsOfClosedEdges(impl.shape, *fixer->Context()))
+      report.warnings.push_back(std::to_string(split) +
+                                " face(s) had a boundary loop made of separate closed edges (no seam joining "
+                                "them): split into one loop per edge");
     fixer->Perform();
     const TopoDS_Shape fixed = fixer->Shape();
     if (fixed.IsNull()) {

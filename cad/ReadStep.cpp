@@ -181,7 +181,8 @@ std::string readStepXcaf(CadModel::Impl& impl) {
       impl.shape = c;
     }
     collectPartNames(tool, XCAFDoc_DocumentTool::ColorTool(doc->Main()), impl);
-    std::string lost = lostSolids(reader.ChangeReader(), impl.shape);
+    impl.facesInFile = stepFaceCount(reader.ChangeReader());
+    std::string lost = lostSolids(reader.ChangeReader(), impl.shape, &impl.solidsLost);
     app->Close(doc);
     return lost;
   } catch (const Standard_Failure& e) {  // for the next rung: the child reports it as failed
@@ -190,10 +191,6 @@ std::string readStepXcaf(CadModel::Impl& impl) {
 }
 
 namespace {
-
-/// After "k of n solid(s) could not be transferred": where their faces went.
-constexpr const char* solidsLostHint =
-    " (their faces, if any were read, are meshed as surfaces: no tetrahedra inside)";
 
 /// Why a reader path failed, for the warning or the final message.
 std::string failure(const ChildOutcome& o) {
@@ -208,7 +205,7 @@ void readStep(CadModel::Impl& impl) {
   // 1: XCAF, with part names. Its refusals (not STEP, nothing to transfer) are the file's.
   const ChildOutcome xcaf = runInChild(impl, "reading", [](CadModel::Impl& i) { return readStepXcaf(i); });
   if (xcaf.kind == ChildOutcome::Done) {
-    if (!xcaf.payload.empty()) impl.readWarnings.push_back(xcaf.payload + solidsLostHint);
+    if (!xcaf.payload.empty()) impl.readWarnings.push_back(xcaf.payload);
     return;
   }
   if (xcaf.kind == ChildOutcome::Input) throw InputError(xcaf.message);
@@ -217,7 +214,7 @@ void readStep(CadModel::Impl& impl) {
   if (plain.kind == ChildOutcome::Done) {
     impl.readWarnings.push_back("the XCAF STEP reader failed (" + failure(xcaf) +
                                 "); read by the plain reader, without part names");
-    if (!plain.payload.empty()) impl.readWarnings.push_back(plain.payload + solidsLostHint);
+    if (!plain.payload.empty()) impl.readWarnings.push_back(plain.payload);
     return;
   }
   // 3: root by root, skipping the roots that fail.

@@ -10,6 +10,7 @@
 #include <Standard_ErrorHandler.hxx>
 #include <Standard_Failure.hxx>
 #include <StepData_StepModel.hxx>
+#include <StepShape_Face.hxx>
 #include <StepShape_ManifoldSolidBrep.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
@@ -20,7 +21,7 @@
 #include "mesher/core/Error.h"
 
 namespace aniso::cad::detail {
-std::string lostSolids(XSControl_Reader& reader, const TopoDS_Shape& shape) {
+std::string lostSolids(XSControl_Reader& reader, TopoDS_Shape& shape, int* notRebuilt) {
   const Handle(StepData_StepModel) model = Handle(StepData_StepModel)::DownCast(reader.Model());
   if (model.IsNull()) return {};
   int breps = 0;
@@ -30,8 +31,29 @@ std::string lostSolids(XSControl_Reader& reader, const TopoDS_Shape& shape) {
   TopExp::MapShapes(shape, TopAbs_SOLID, solids);
   for (int i = 1; i <= solids.Extent(); ++i) distinct.Add(solids(i).Located(TopLoc_Location()));
   if (distinct.Extent() >= breps) return {};
-  return std::to_string(breps - distinct.Extent()) + " of " + std::to_string(breps) +
-         " solid(s) could not be transferred";
+  const int lost = breps - distinct.Extent();
+  const int rebuilt = rebuildLostSolids(shape, lost);
+  if (notRebuilt) *notRebuilt = lost - rebuilt;
+  const std::string of = " of " + std::to_string(breps) + " solid(s)";
+  std::string message;
+  if (rebuilt > 0)
+    message = std::to_string(rebuilt) + of +
+              " came out of the STEP transfer as faces only (the file bounds them with an open shell); "
+              "rebuilt as solid(s) from their faces, which close";
+  if (rebuilt < lost)
+    message += (message.empty() ? "" : "; ") + std::to_string(lost - rebuilt) + of +
+               " could not be transferred (their faces, if any were read, are meshed as surfaces: no "
+               "tetrahedra inside)";
+  return message;
+}
+
+int stepFaceCount(XSControl_Reader& reader) {
+  const Handle(StepData_StepModel) model = Handle(StepData_StepModel)::DownCast(reader.Model());
+  if (model.IsNull()) return 0;
+  int faces = 0;
+  for (int i = 1; i <= model->NbEntities(); ++i)
+    if (model->Value(i)->IsKind(STANDARD_TYPE(StepShape_Face))) ++faces;
+  return faces;
 }
 
 std::string readStepPlain(CadModel::Impl& impl) {
@@ -41,7 +63,8 @@ std::string readStepPlain(CadModel::Impl& impl) {
   if (reader.TransferRoots() == 0 || reader.NbShapes() == 0)
     throw InputError(impl.path + ": STEP file has no shape OpenCASCADE can transfer");
   impl.shape = reader.OneShape();
-  return lostSolids(reader, impl.shape);
+  impl.facesInFile = stepFaceCount(reader);
+  return lostSolids(reader, impl.shape, &impl.solidsLost);
 }
 
 std::string readStepRoots(CadModel::Impl& impl) {
@@ -70,7 +93,8 @@ std::string readStepRoots(CadModel::Impl& impl) {
   }
   if (kept == 0) throw MeshingError("no root of " + std::to_string(n) + " could be transferred");
   impl.shape = kept == 1 && n == 1 ? TopoDS_Shape(reader.OneShape()) : TopoDS_Shape(c);
-  const std::string lost = lostSolids(reader, impl.shape);
+  impl.facesInFile = stepFaceCount(reader);
+  const std::string lost = lostSolids(reader, impl.shape, &impl.solidsLost);
   if (skipped.empty()) return lost;
   return "skipped root(s) " + skipped + " of " + std::to_string(n) + (lost.empty() ? std::string() : "; " + lost);
 }

@@ -34,6 +34,12 @@ struct CadModel::Impl {
   /// What reading had to give up (a reader path that crashed, parts skipped); logged as
   /// warnings by CadModel::read.
   std::vector<std::string> readWarnings;
+  /// Solids the STEP file declares that reading could not give as solids (not even rebuilt
+  /// from their faces: lostSolids, Readers.h).
+  int solidsLost = 0;
+  /// Faces the STEP file holds (FACE entities, whether or not a shape uses them): says why a
+  /// model that came out empty is empty.
+  int facesInFile = 0;
   /// The token of the operation under way (read, prepare): stops the child processes.
   const CancelToken* cancel = nullptr;
 

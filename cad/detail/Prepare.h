@@ -18,6 +18,12 @@ namespace aniso::cad::detail {
 /// faces it dropped put back (restoreInternalFaces), then rebuildSelfIntersecting.
 void fixShape(CadModel::Impl& impl, double diag, PrepareReport& report);
 
+/// Records in `context` (ShapeFix_Shape's, before it runs) a replacement for every face with
+/// a loop made of two or more edges each closed on itself, none joined to the next (two rim
+/// circles of a cylinder in one loop, no seam): the loop becomes one loop per edge, and
+/// ShapeFix_Face then adds the missing seam. Returns the faces changed.
+int splitLoopsOfClosedEdges(const TopoDS_Shape& shape, ShapeBuild_ReShape& context);
+
 /// Solids whose faces cross one another (BOPAlgo_ArgumentAnalyzer's self-interference:
 /// BRepCheck calls them valid, the volume mesher finds their boundary crossing itself)
 /// rebuilt from their faces by BOPAlgo_MakerVolume, faces split where they cross; a solid

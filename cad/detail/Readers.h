@@ -31,10 +31,24 @@ void readBrep(CadModel::Impl& impl);
 /// naming the file when OCCT cannot parse it.
 void loadStepFile(XSControl_Reader& reader, const std::string& path);
 
-/// "k of n solid(s) could not be transferred" when `shape` has fewer distinct solids than the
-/// file loaded in `reader` has solid B-reps (OCCT's transfer drops an entity that raised, or
-/// a solid written over an open shell, as faces), else "".
-std::string lostSolids(XSControl_Reader& reader, const TopoDS_Shape& shape);
+/// When `shape` has fewer distinct solids than the file loaded in `reader` has solid B-reps
+/// (OCCT's transfer drops an entity that raised, or keeps only the faces of a solid written
+/// over an open shell), first rebuilds what it can (rebuildLostSolids), then returns what the
+/// user should know, in plain words: "k of n solid(s) ... rebuilt as solid(s) from their
+/// faces" and/or "k of n solid(s) could not be transferred (...)"; else "". `notRebuilt`, if
+/// given, receives the number of solids still missing.
+std::string lostSolids(XSControl_Reader& reader, TopoDS_Shape& shape, int* notRebuilt = nullptr);
+
+/// The FACE entities (ADVANCED_FACE, FACE_SURFACE, ...) of the file loaded in `reader`,
+/// whether or not a shape uses them.
+int stepFaceCount(XSControl_Reader& reader);
+
+/// Makes solids again of the faces outside any solid in `shape` when, sewn with a tolerance
+/// of 1e-6 of their extent, they form closed shells, at least one and at most `lost` of
+/// them: each becomes a solid turned outward (ShapeFix_Solid) if it encloses a volume. The
+/// shape then becomes a compound of its solids, the rebuilt ones, the other loose faces and
+/// its free edges and vertices. Returns the number rebuilt (0: shape unchanged).
+int rebuildLostSolids(TopoDS_Shape& shape, int lost);
 
 /// Removes OCCT's default console printers once, so that library code prints nothing.
 void silenceOcctMessages();

@@ -46,6 +46,12 @@ ModelInput loadModel(const std::string& file, bool fragment, cad::OverlapPolicy 
   t = Clock::now();
   in.model = model.topology();
   in.times.emplace_back("topology", since(t));
+  if (model.solidsLost() > 0)  // a declared solid meshed as loose faces, or not at all
+    in.problems.push_back({EntityRef{EntityKind::Model, 0, ""}, Severity::Degraded, "solid-not-read",
+                           std::to_string(model.solidsLost()) +
+                               " solid(s) the file declares could not be read as solids: their faces, if "
+                               "any were read, are meshed as surfaces, with no tetrahedra inside",
+                           "read"});
   for (const int id : prep.unfusedSolids) {
     const std::string part =
         id >= 1 && id <= static_cast<int>(in.model.solids.size()) ? in.model.solids[id - 1].name : std::string();
