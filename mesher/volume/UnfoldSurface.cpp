@@ -44,25 +44,6 @@ bool folded(const SurfaceMesh& m, const Tri& s, const Tri& t) {
 
 std::pair<int, int> key(int a, int b) { return std::minmax(a, b); }
 
-/// FaceTriangles(m, tris).countFolded() without its edge map (most faces have no fold):
-/// the edges' (key, triangle) pairs sorted, each edge of exactly two uses tested in the
-/// same triangle order.
-int countFoldedEdges(const SurfaceMesh& m, const std::vector<Tri>& tris) {
-  std::vector<std::pair<std::pair<int, int>, int>> uses;
-  uses.reserve(3 * tris.size());
-  for (int t = 0; t < static_cast<int>(tris.size()); ++t)
-    for (int k = 0; k < 3; ++k) uses.push_back({key(tris[t][k], tris[t][(k + 1) % 3]), t});
-  std::sort(uses.begin(), uses.end());
-  int n = 0;
-  for (std::size_t i = 0; i < uses.size();) {
-    std::size_t j = i + 1;
-    while (j < uses.size() && uses[j].first == uses[i].first) ++j;
-    if (j - i == 2 && folded(m, tris[uses[i].second], tris[uses[i + 1].second])) ++n;
-    i = j;
-  }
-  return n;
-}
-
 /// The triangles of one face with their edge adjacency.
 class FaceTriangles {
  public:
@@ -265,10 +246,14 @@ UnfoldStats unfoldSurface(SurfaceMesh& mesh) {
   std::vector<int> useCount;
   std::set<Tri> existing;
   std::map<int, std::vector<Tri>> rebuilt;  // faces whose triangle count changed
+  // The faces with folds, found once (a face's repair changes only its own triangles, and
+  // no node moves: the other faces' folds stay as found).
+  std::set<int> foldedFaces;
+  for (const auto& [f, n] : foldedEdgesByFace(mesh)) foldedFaces.insert(f);
   for (const auto& [f, ids] : byFace) {
+    if (!foldedFaces.count(f)) continue;  // the common case, without FaceTriangles
     std::vector<Tri> tris;
     for (const int t : ids) tris.push_back(mesh.triangles[t]);
-    if (countFoldedEdges(mesh, tris) == 0) continue;  // the common case, without FaceTriangles
     if (useCount.empty()) {
       useCount.assign(mesh.nodes.size(), 0);
       for (const Tri& t : mesh.triangles) {
