@@ -155,12 +155,7 @@ void insertUserSizing(CSQuadtree2d& cs, const UserSizing& user, int face, const 
   std::optional<FaceGrid> grid;  // made for the first source of the face
   for (const SizingSource& src : user.sources) {
     if (!src.sizesFace(face)) continue;
-    Box3 region;
-    const double r = src.kind == SizingSource::Kind::Box ? 0.0 : src.radius;
-    region.add(src.a);
-    if (src.kind != SizingSource::Kind::Point) region.add(src.b);
-    region.lo.array() -= r;
-    region.hi.array() += r;
+    const Box3 region = src.bounds();
     if (!grid) grid.emplace(surface, bounds);
     const auto near = grid->near(region);
     if (!near) continue;

@@ -17,6 +17,16 @@ bool SizingSource::contains(const Vec3& x) const {
   return false;
 }
 
+Box3 SizingSource::bounds() const {
+  Box3 box;
+  box.add(a);
+  if (kind != Kind::Point) box.add(b);
+  const double r = kind == Kind::Box ? 0.0 : radius;
+  box.lo.array() -= r;
+  box.hi.array() += r;
+  return box;
+}
+
 bool SizingSource::sizesFace(int f) const { return faces.empty() || std::binary_search(faces.begin(), faces.end(), f); }
 
 std::optional<Metric3d> UserSizing::metricAt(const Vec3& x) const {

@@ -28,6 +28,8 @@ struct SizingSource {
 
   /// Is x inside the region of the source (ball, capsule, box)?
   bool contains(const Vec3& x) const;
+  /// The box around the region: every x that contains() accepts lies in it.
+  Box3 bounds() const;
 };
 
 /// A discrete point source (thesis 3.3.1, "Introducing discrete data"): the metric wanted at

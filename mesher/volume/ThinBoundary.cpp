@@ -1,6 +1,7 @@
 #include "mesher/volume/ThinBoundary.h"
 
 #include <cmath>
+#include <cstdint>
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -96,10 +97,98 @@ std::vector<SizingSource> thinSources(const std::vector<ThinSpot>& spots, double
   return out;
 }
 
+namespace {
+
+/// The triangles' centroids in a uniform grid (about two per cell, at most kMaxCells cells),
+/// for the sources' region queries: a source then tests the triangles of the cells its box
+/// meets instead of every triangle of its faces.
+class CentroidGrid {
+ public:
+  static constexpr std::size_t kMaxCells = std::size_t{1} << 21;
+
+  explicit CentroidGrid(const std::vector<Vec3>& centroid) {
+    for (const Vec3& c : centroid) box_.add(c);
+    if (centroid.empty()) return;
+    const Vec3 size = box_.size().cwiseMax(1e-12 * std::max(1.0, box_.diagonal()));
+    const double cells = std::clamp(static_cast<double>(centroid.size()) / 2, 1.0, static_cast<double>(kMaxCells));
+    const double cell = std::cbrt(size.prod() / cells);
+    for (int k = 0; k < 3; ++k) n_[k] = std::clamp(static_cast<int>(std::ceil(size[k] / cell)), 1, 1 << 10);
+    while (static_cast<std::size_t>(n_[0]) * n_[1] * n_[2] > kMaxCells)
+      for (int k = 0; k < 3; ++k) n_[k] = std::max(1, n_[k] / 2);
+    for (int k = 0; k < 3; ++k) scale_[k] = n_[k] / size[k];
+    const std::size_t nc = static_cast<std::size_t>(n_[0]) * n_[1] * n_[2];
+    std::vector<std::size_t> cellOf(centroid.size());
+    start_.assign(nc + 1, 0);
+    for (std::size_t i = 0; i < centroid.size(); ++i) ++start_[(cellOf[i] = cellIndex(centroid[i])) + 1];
+    for (std::size_t c = 0; c < nc; ++c) start_[c + 1] += start_[c];
+    items_.resize(centroid.size());
+    std::vector<std::size_t> fill(start_.begin(), start_.end() - 1);
+    for (std::size_t i = 0; i < centroid.size(); ++i) items_[fill[cellOf[i]]++] = static_cast<std::uint32_t>(i);
+  }
+
+  /// Would visit() pass fewer than `limit` triangles for this box, counting its cells as
+  /// work too? (Stops counting at the limit.)
+  bool cheaperThan(const Box3& b, std::size_t limit) const {
+    int a[3], z[3];
+    if (!range(b, a, z)) return true;
+    std::size_t cells = 1;
+    for (int k = 0; k < 3; ++k) cells *= static_cast<std::size_t>(z[k] - a[k] + 1);
+    if (cells >= limit) return false;
+    std::size_t n = cells;
+    for (int iz = a[2]; iz <= z[2] && n < limit; ++iz)
+      for (int iy = a[1]; iy <= z[1] && n < limit; ++iy)
+        for (int ix = a[0]; ix <= z[0]; ++ix) {
+          const std::size_t c = (static_cast<std::size_t>(iz) * n_[1] + iy) * n_[0] + ix;
+          n += start_[c + 1] - start_[c];
+        }
+    return n < limit;
+  }
+  /// f(i) for every triangle whose centroid lies in a cell the box meets.
+  template <class F>
+  void visit(const Box3& b, F f) const {
+    int a[3], z[3];
+    if (!range(b, a, z)) return;
+    for (int iz = a[2]; iz <= z[2]; ++iz)
+      for (int iy = a[1]; iy <= z[1]; ++iy)
+        for (int ix = a[0]; ix <= z[0]; ++ix) {
+          const std::size_t c = (static_cast<std::size_t>(iz) * n_[1] + iy) * n_[0] + ix;
+          for (std::size_t k = start_[c]; k < start_[c + 1]; ++k) f(items_[k]);
+        }
+  }
+
+ private:
+  int coord(const Vec3& p, int k) const {
+    return std::clamp(static_cast<int>(std::floor((p[k] - box_.lo[k]) * scale_[k])), 0, n_[k] - 1);
+  }
+  std::size_t cellIndex(const Vec3& p) const {
+    return (static_cast<std::size_t>(coord(p, 2)) * n_[1] + coord(p, 1)) * n_[0] + coord(p, 0);
+  }
+  /// The cell range of the query box; false when it meets no cell.
+  bool range(const Box3& query, int a[3], int z[3]) const {
+    if (items_.empty() || query.empty()) return false;
+    // a margin for the rounding of the region's box (SizingSource::bounds)
+    const Vec3 margin = Vec3::Constant(1e-9 * (query.diagonal() + box_.diagonal()));
+    const Vec3 lo = query.lo - margin, hi = query.hi + margin;
+    if ((hi.array() < box_.lo.array()).any() || (lo.array() > box_.hi.array()).any()) return false;
+    for (int k = 0; k < 3; ++k) a[k] = coord(lo, k), z[k] = coord(hi, k);
+    return true;
+  }
+
+  Box3 box_;
+  int n_[3] = {1, 1, 1};
+  Vec3 scale_ = Vec3::Ones();
+  std::vector<std::size_t> start_;
+  std::vector<std::uint32_t> items_;
+};
+
+}  // namespace
+
 double predictedTriangles(const SurfaceMesh& surface, const std::vector<SizingSource>& sources) {
-  // Each source visits the triangles of its faces only (all of them when it has none), its
-  // size taken once: the budget's bisection calls this a dozen times with hundreds of
-  // sources on a surface of millions of triangles. The same sum, in triangle order.
+  // Each source visits the triangles of its faces, or those of the grid cells its region's
+  // box meets when fewer (all triangles' cells when it has no faces), its size taken once:
+  // the budget's bisection calls this a dozen times with hundreds of sources on a surface
+  // of millions of triangles. Every triangle's target is the smallest size of the sources
+  // containing its centroid (in any order), then the same sum in triangle order.
   const std::size_t nt = surface.triangles.size();
   const auto faceOf = [&](std::size_t i) { return i < surface.triangleFace.size() ? surface.triangleFace[i] : -1; };
   int nf = 0;
@@ -110,14 +199,28 @@ double predictedTriangles(const SurfaceMesh& surface, const std::vector<SizingSo
     const auto& t = surface.triangles[i];
     centroid[i] = (surface.nodes[t[0]] + surface.nodes[t[1]] + surface.nodes[t[2]]) / 3;
   }
+  const CentroidGrid grid(centroid);
+  std::vector<int> faceMark(static_cast<std::size_t>(nf), -1);  // the source (index) sizing face f
   std::vector<double> target(nt, 1e300);
-  for (const SizingSource& src : sources) {
+  for (std::size_t s = 0; s < sources.size(); ++s) {
+    const SizingSource& src = sources[s];
     const double h = src.metric.axes().lengths.minCoeff();
     const auto visit = [&](std::size_t i) {
       if (src.contains(centroid[i])) target[i] = std::min(target[i], h);
     };
+    const Box3 region = src.bounds();
     if (src.faces.empty()) {
-      for (std::size_t i = 0; i < nt; ++i) visit(i);
+      grid.visit(region, visit);
+      continue;
+    }
+    std::size_t onFaces = 0;
+    for (const int f : src.faces)
+      if (f >= 0 && f < nf) onFaces += byFace[static_cast<std::size_t>(f)].size(), faceMark[f] = static_cast<int>(s);
+    if (grid.cheaperThan(region, onFaces)) {
+      grid.visit(region, [&](std::size_t i) {
+        const int f = faceOf(i);
+        if (f >= 0 && faceMark[static_cast<std::size_t>(f)] == static_cast<int>(s)) visit(i);
+      });
       continue;
     }
     for (const int f : src.faces)

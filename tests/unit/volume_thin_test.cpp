@@ -257,3 +257,42 @@ TEST(ThinBoundary, TheThinSolidsThatFitTheBudgetAreKept) {
   EXPECT_TRUE(cheapestGroupsWithinBudget(c.surface, sources, n + 0.5 * cheap, &groups, &kept).empty());
   EXPECT_EQ(kept, 0u);
 }
+
+// The prediction against its definition (every triangle's target the smallest size of the
+// sources containing its centroid, restricted to their faces): many small sources (a grid
+// cell query each) and large ones (their faces' triangles), balls, capsules and boxes.
+TEST(ThinBoundary, PredictedTrianglesAsDefined) {
+  std::set<Triple> boundary;
+  const SolidTetMesh s = slab(12, 0.05, boundary);
+  const CubeSurface c = cubeSurface(s, boundary);
+  const SurfaceMesh& m = c.surface;
+  std::vector<SizingSource> sources;
+  std::uint64_t x = 99;
+  auto next = [&x] { return (x = x * 6364136223846793005ull + 1442695040888963407ull) >> 11; };
+  auto unit = [&] { return static_cast<double>(next() % 1000001) / 1e6; };
+  for (int k = 0; k < 300; ++k) {
+    SizingSource src;
+    src.kind = static_cast<SizingSource::Kind>(k % 3);
+    src.a = Vec3(unit(), unit(), 0.05 * unit());
+    src.b = src.a + Vec3(0.2 * unit(), 0.2 * unit(), 0.02);
+    src.radius = k % 10 == 0 ? 0.8 : 0.05 * unit();  // a few cover most of the slab
+    src.metric = Metric3d::isotropic(0.002 + 0.05 * unit());
+    if (k % 2 == 0) src.faces = {static_cast<int>(next() % 6)};
+    if (k % 6 == 0) src.faces = {};
+    sources.push_back(src);
+  }
+  double expected = 0;
+  for (std::size_t i = 0; i < m.triangles.size(); ++i) {
+    const auto& t = m.triangles[i];
+    const Vec3 p[3] = {m.nodes[t[0]], m.nodes[t[1]], m.nodes[t[2]]};
+    const Vec3 centroid = (p[0] + p[1] + p[2]) / 3;
+    double target = 1e300;
+    for (const SizingSource& src : sources)
+      if (src.sizesFace(m.triangleFace[i]) && src.contains(centroid))
+        target = std::min(target, src.metric.axes().lengths.minCoeff());
+    const double size = ((p[1] - p[0]).norm() + (p[2] - p[1]).norm() + (p[0] - p[2]).norm()) / 3;
+    expected += std::max(1.0, (size / target) * (size / target));
+  }
+  EXPECT_GT(expected, 2.0 * static_cast<double>(m.triangles.size()));  // the sources refine
+  EXPECT_EQ(predictedTriangles(m, sources), expected);
+}
