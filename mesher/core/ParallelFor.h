@@ -29,32 +29,52 @@ struct PhaseProgress {
   std::function<std::string()> detail;
 };
 
-/// Runs work(i) for i in [0, n) on `threads` threads (0 = all cores).
+/// Runs work(thread, i) for i in [begin, end) on up to `threads` threads (0 = all cores;
+/// thread 0 is the caller's, so that per-thread scratch can be indexed by it), one i at a
+/// time from a shared counter; the first exception is rethrown once every thread has
+/// stopped (the items not yet started are skipped).
 template <class Work>
-void parallelFor(int n, int threads, Work work, PhaseProgress& progress) {
+void parallelForOnThreads(std::size_t begin, std::size_t end, int threads, Work work) {
+  if (end <= begin) return;
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  threads = std::clamp(threads, 1, std::max(1, n));
-  std::atomic<int> next{0};
+  threads = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(threads), end - begin));
+  if (threads <= 1) {
+    for (std::size_t i = begin; i < end; ++i) work(0, i);
+    return;
+  }
+  std::atomic<std::size_t> next{begin};
   std::exception_ptr error;
   std::mutex errorMutex;
-  auto run = [&] {
-    for (int i = next++; i < n; i = next++) {
-      try {
-        work(i);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(errorMutex);
-        if (!error) error = std::current_exception();
-        next = n;
-      }
-      ++progress.done;
-      progress.tick();
+  auto run = [&](int thread) {
+    try {
+      for (std::size_t i = next++; i < end; i = next++) work(thread, i);
+    } catch (...) {
+      std::lock_guard<std::mutex> lock(errorMutex);
+      if (!error) error = std::current_exception();
+      next = end;
     }
   };
   std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(run);
-  run();
+  for (int t = 1; t < threads; ++t) pool.emplace_back(run, t);
+  run(0);
   for (auto& t : pool) t.join();
   if (error) std::rethrow_exception(error);
+}
+
+/// Runs work(i) for i in [0, n) on `threads` threads (0 = all cores), progress ticked per
+/// finished item (also one that threw).
+template <class Work>
+void parallelFor(int n, int threads, Work work, PhaseProgress& progress) {
+  parallelForOnThreads(0, static_cast<std::size_t>(std::max(0, n)), threads, [&](int, std::size_t i) {
+    struct Tick {
+      PhaseProgress& p;
+      ~Tick() {
+        ++p.done;
+        p.tick();
+      }
+    } tick{progress};
+    work(static_cast<int>(i));
+  });
   progress.tick(true);  // the final state, whatever the rate limit let through
 }
 

@@ -1,16 +1,13 @@
 #include "mesher/volume/VolumeImprovement.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
-#include <exception>
-#include <mutex>
-#include <thread>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "mesher/core/Log.h"
+#include "mesher/core/ParallelFor.h"
 
 #include "mesher/delaunay3d/SpatialSort.h"
 #include "mesher/volume/improve/QualityFlips.h"
@@ -29,35 +26,6 @@ constexpr double kSmoothingQualityFloor = 0.3;
 
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-/// Runs work(thread, k) for k in [begin, end) on up to `threads` threads (thread 0 is the
-/// caller), one k at a time from a shared counter; the first exception is rethrown once
-/// every thread has stopped.
-template <class Work>
-void forEachOnThreads(std::size_t begin, std::size_t end, int threads, Work work) {
-  threads = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(std::max(1, threads)), end - begin));
-  if (threads <= 1) {
-    for (std::size_t k = begin; k < end; ++k) work(0, k);
-    return;
-  }
-  std::atomic<std::size_t> next{begin};
-  std::exception_ptr error;
-  std::mutex errorMutex;
-  auto run = [&](int thread) {
-    try {
-      for (std::size_t k = next++; k < end; k = next++) work(thread, k);
-    } catch (...) {
-      std::lock_guard<std::mutex> lock(errorMutex);
-      if (!error) error = std::current_exception();
-      next = end;
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(run, t);
-  run(0);
-  for (std::thread& t : pool) t.join();
-  if (error) std::rethrow_exception(error);
-}
-
 /// The smoothing sweeps of one pass: the free vertices in Hilbert order (neighbouring stars
 /// are visited one after another; the vertex numbering follows the refinement, scattered
 /// over the solid), in blocks smoothed class after class, the blocks of a class by up to
@@ -89,7 +57,7 @@ std::size_t smoothVertices(SolidTetMesh& s, improve3d::VertexMetrics& vm, improv
   s.mesh.setCertifiedDelaunay(false);  // before the threads: moves then leave the flag alone
   for (int sweep = 0; sweep < o.smoothingSweeps; ++sweep)
     for (std::size_t c = 0; c < schedule.classes(); ++c)
-      forEachOnThreads(schedule.classStart[c], schedule.classStart[c + 1], threads, [&](int t, std::size_t k) {
+      parallelForOnThreads(schedule.classStart[c], schedule.classStart[c + 1], threads, [&](int t, std::size_t k) {
         const std::uint32_t b = schedule.blocks[k];
         for (std::size_t i = schedule.blockStart[b]; i < schedule.blockStart[b + 1]; ++i)
           if (movers[static_cast<std::size_t>(t)].smooth(del3d::VertexId(schedule.vertices[i]), o.lowGradation,
