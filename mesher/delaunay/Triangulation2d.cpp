@@ -173,6 +173,8 @@ VertexId Triangulation2d::addVertex(const Vec2& p) {
 }
 
 TriId Triangulation2d::createTriangle(VertexId a, VertexId b, VertexId c) {
+  ANISO_ASSERT(a.index < numVertices() && b.index < numVertices() && c.index < numVertices());
+  ANISO_ASSERT(a != b && b != c && c != a);
   TriId t;
   if (freeHead_ != kNone) {
     t = TriId(freeHead_);
@@ -196,12 +198,15 @@ TriId Triangulation2d::createTriangle(VertexId a, VertexId b, VertexId c) {
 }
 
 void Triangulation2d::setTriangle(TriId t, VertexId a, VertexId b, VertexId c) {
+  ANISO_ASSERT(isAlive(t));
+  ANISO_ASSERT(a.index < numVertices() && b.index < numVertices() && c.index < numVertices());
   const std::size_t k = 3 * std::size_t{t.index};
   tv_[k] = a.index, tv_[k + 1] = b.index, tv_[k + 2] = c.index;
   ++revision_;
 }
 
 void Triangulation2d::freeTriangle(TriId t) {
+  ANISO_ASSERT(isAlive(t));  // not freed twice
   const std::size_t k = 3 * std::size_t{t.index};
   tv_[k] = kFreeMark;
   tv_[k + 1] = tv_[k + 2] = kNone;

@@ -34,6 +34,7 @@
 #include <memory>
 #include <vector>
 
+#include "mesher/core/Assert.h"
 #include "mesher/core/Types.h"
 #include "mesher/delaunay/Handles.h"
 #include "mesher/delaunay/SeedQuadtree.h"
@@ -86,13 +87,19 @@ class Triangulation2d {
   Triangulation2d& operator=(Triangulation2d&& other) noexcept;
 
   // ---- vertices ----
+  // Preconditions (ANISO_ASSERT, checked in Debug and sanitizer builds): a VertexId names an
+  // existing vertex; a TriId given to a triangle accessor names a live triangle (free slots
+  // are read only through nextFree), a local index is 0..2.
   std::size_t numVertices() const { return vtri_.size(); }
-  const Vec2& point(VertexId v) const { return xy_[v.index]; }
+  const Vec2& point(VertexId v) const { return xy_[checked(v)]; }
   /// Pointer to the two coordinates of v (valid until the next addVertex).
-  const double* coords(VertexId v) const { return xy_[v.index].data(); }
+  const double* coords(VertexId v) const { return xy_[checked(v)].data(); }
   /// One live triangle incident to v, or an invalid id if v is in none.
-  TriId vertexTriangle(VertexId v) const { return TriId(vtri_[v.index]); }
-  void setVertexTriangle(VertexId v, TriId t) { vtri_[v.index] = t.index; }
+  TriId vertexTriangle(VertexId v) const { return TriId(vtri_[checked(v)]); }
+  void setVertexTriangle(VertexId v, TriId t) {
+    ANISO_ASSERT(!t.valid() || t.index < tf_.size());
+    vtri_[checked(v)] = t.index;
+  }
   /// The enlarged box and its corner vertices.
   const Box2& box() const { return box_; }
   const std::array<VertexId, 4>& corners() const { return corners_; }
@@ -105,16 +112,16 @@ class Triangulation2d {
   bool isAlive(TriId t) const {
     return t.index < tf_.size() && tv_[3 * std::size_t{t.index}] != kFreeMark;
   }
-  VertexId vertex(TriId t, int i) const { return VertexId(tv_[3 * std::size_t{t.index} + i]); }
+  VertexId vertex(TriId t, int i) const { return VertexId(tv_[slot(t, i)]); }
   /// The three vertex indices of t (raw, for hot loops).
-  const std::uint32_t* triVertices(TriId t) const { return &tv_[3 * std::size_t{t.index}]; }
-  TriId neighbour(TriId t, int i) const { return TriId(tn_[3 * std::size_t{t.index} + i]); }
-  const std::uint32_t* triNeighbours(TriId t) const { return &tn_[3 * std::size_t{t.index}]; }
+  const std::uint32_t* triVertices(TriId t) const { return &tv_[slot(t, 0)]; }
+  TriId neighbour(TriId t, int i) const { return TriId(tn_[slot(t, i)]); }
+  const std::uint32_t* triNeighbours(TriId t) const { return &tn_[slot(t, 0)]; }
   /// Local index (0..2) of v in t, or −1.
   int localIndex(TriId t, VertexId v) const;
   /// Local index i with neighbour(t, i) == u, or −1.
   int neighbourIndex(TriId t, TriId u) const;
-  bool isConstrained(TriId t, int i) const { return (tf_[t.index] >> i) & 1u; }
+  bool isConstrained(TriId t, int i) const { return (tf_[slot(t, i) / 3] >> i) & 1u; }
   /// Sets or clears the constrained bit of edge i of t and of the same edge in the
   /// neighbour (if any).
   void setConstrained(TriId t, int i, bool on);
@@ -136,7 +143,8 @@ class Triangulation2d {
   void freeTriangle(TriId t);
   /// Sets the neighbour across edge i of t (one side only).
   void setNeighbour(TriId t, int i, TriId u) {
-    tn_[3 * std::size_t{t.index} + i] = u.index;
+    ANISO_ASSERT(!u.valid() || u.index < tf_.size());
+    tn_[slot(t, i)] = u.index;
     ++revision_;
   }
   /// Links edge i of t and edge j of u both ways.
@@ -146,14 +154,15 @@ class Triangulation2d {
   }
   /// Sets only this side's constrained bit of edge i of t.
   void setConstrainedBit(TriId t, int i, bool on) {
+    ANISO_ASSERT(isAlive(t) && i >= 0 && i < 3);
     ++revision_;
     if (on) tf_[t.index] |= static_cast<std::uint8_t>(1u << i);
     else tf_[t.index] &= static_cast<std::uint8_t>(~(1u << i));
   }
-  std::uint8_t flags(TriId t) const { return tf_[t.index]; }
-  void setMark(TriId t, std::uint8_t bit) { tf_[t.index] |= bit; }
-  void clearMark(TriId t, std::uint8_t bit) { tf_[t.index] &= static_cast<std::uint8_t>(~bit); }
-  bool hasMark(TriId t, std::uint8_t bit) const { return (tf_[t.index] & bit) != 0; }
+  std::uint8_t flags(TriId t) const { return tf_[inRange(t)]; }
+  void setMark(TriId t, std::uint8_t bit) { tf_[inRange(t)] |= bit; }
+  void clearMark(TriId t, std::uint8_t bit) { tf_[inRange(t)] &= static_cast<std::uint8_t>(~bit); }
+  bool hasMark(TriId t, std::uint8_t bit) const { return (tf_[inRange(t)] & bit) != 0; }
 
   // ---- acceleration and scratch ----
   /// The seeding quadtree of the vertices. Maintained lazily: vertices added since the
@@ -174,7 +183,10 @@ class Triangulation2d {
   void reserve(std::size_t vertices, std::size_t triangles);
   /// Head of the free list (kNone if empty) and successor of a free slot (for validate).
   std::uint32_t freeHead() const { return freeHead_; }
-  std::uint32_t nextFree(TriId t) const { return tn_[3 * std::size_t{t.index}]; }
+  std::uint32_t nextFree(TriId t) const {
+    ANISO_ASSERT(t.index < tf_.size() && !isAlive(t));
+    return tn_[3 * std::size_t{t.index}];
+  }
   /// Bytes held by the arrays (capacities).
   std::size_t memoryBytes() const;
 
@@ -185,6 +197,21 @@ class Triangulation2d {
 
  private:
   void rebindAttributes();
+  /// v.index, asserted to name a vertex.
+  std::uint32_t checked(VertexId v) const {
+    ANISO_ASSERT(v.index < vtri_.size());
+    return v.index;
+  }
+  /// t.index, asserted to name a slot (live or free).
+  std::uint32_t inRange(TriId t) const {
+    ANISO_ASSERT(t.index < tf_.size());
+    return t.index;
+  }
+  /// 3·t + i, asserted to be entry i of a live triangle.
+  std::size_t slot(TriId t, int i) const {
+    ANISO_ASSERT(isAlive(t) && i >= 0 && i < 3);
+    return 3 * std::size_t{t.index} + static_cast<std::size_t>(i);
+  }
 
   std::vector<Vec2> xy_;             // 1 per vertex
   std::vector<std::uint32_t> vtri_;  // 1 per vertex

@@ -30,12 +30,14 @@ class Report {
 void checkFreeList(const Triangulation2d& tri, Report& r) {
   std::size_t inList = 0;
   std::vector<std::uint8_t> seen(tri.triangleSlots(), 0);
-  for (std::uint32_t k = tri.freeHead(); k != kNone; k = tri.nextFree(TriId(k))) {
+  // each slot is checked before nextFree reads it (a live slot is not nextFree's to read)
+  for (std::uint32_t k = tri.freeHead(); k != kNone;) {
     if (k >= tri.triangleSlots()) return r.add("free list: slot ", k, " out of range");
     if (seen[k]) return r.add("free list: cycle at slot ", k);
     if (tri.isAlive(TriId(k))) return r.add("free list: live triangle ", k);
     seen[k] = 1;
     ++inList;
+    k = tri.nextFree(TriId(k));
   }
   const std::size_t freeSlots = tri.triangleSlots() - tri.numTriangles();
   if (inList != freeSlots) r.add("free list: ", inList, " slots listed, ", freeSlots, " free");

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "mesher/core/Assert.h"
 #include "mesher/core/Error.h"
 #include "mesher/predicates/Predicates.h"
 
@@ -36,6 +37,12 @@ void replaceTets(TetMesh& mesh, std::span<const TetId> oldTets,
                  std::span<const std::array<VertexId, 4>> newTets, std::span<TetId> out) {
   if (oldTets.size() > kMaxLocalTets || newTets.size() > kMaxLocalTets || out.size() != newTets.size())
     throw MeshingError("replaceTets: too many tetrahedra");
+  if constexpr (kAssertsEnabled) {
+    for (std::size_t a = 0; a < oldTets.size(); ++a) {
+      ANISO_ASSERT(mesh.isAlive(oldTets[a]));
+      for (std::size_t b = a + 1; b < oldTets.size(); ++b) ANISO_ASSERT(oldTets[a] != oldTets[b]);
+    }
+  }
   // Outer faces of the old set.
   std::array<OuterFace, 4 * kMaxLocalTets> outer;
   std::size_t nOuter = 0;

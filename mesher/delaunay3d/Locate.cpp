@@ -2,6 +2,7 @@
 
 #include <bit>
 
+#include "mesher/core/Assert.h"
 #include "mesher/predicates/Predicates.h"
 
 namespace aniso::del3d {
@@ -62,6 +63,7 @@ void scan(const TetMesh& mesh, const double p[3], LocateResult& r) {
 }  // namespace
 
 LocateResult locate(const TetMesh& mesh, const double p[3], TetId start, std::uint32_t& rng) {
+  ANISO_ASSERT(mesh.isAlive(start));
   LocateResult r;
   if (rng == 0) rng = 0x9E3779B9u;
   const std::uint64_t budget = 4 * std::uint64_t{mesh.tetSlots()} + 64;

@@ -30,6 +30,9 @@ void TetMesh::setConstrained(TetId t, int i, bool on) {
 }
 
 TetId TetMesh::createTet(VertexId a, VertexId b, VertexId c, VertexId d) {
+  ANISO_ASSERT(a.index < numVertices() && b.index < numVertices() && c.index < numVertices() &&
+               d.index < numVertices());
+  ANISO_ASSERT(a != b && a != c && a != d && b != c && b != d && c != d);
   std::uint32_t t;
   if (freeHead_ != kNone) {
     t = freeHead_;
@@ -53,6 +56,7 @@ TetId TetMesh::createTet(VertexId a, VertexId b, VertexId c, VertexId d) {
 }
 
 void TetMesh::freeTet(TetId t) {
+  ANISO_ASSERT(isAlive(t));  // not freed twice
   const std::size_t k = 4 * std::size_t{t.index};
   tv_[k] = kFreeMark;
   tv_[k + 1] = tv_[k + 2] = tv_[k + 3] = kNone;

@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "mesher/core/Assert.h"
 #include "mesher/core/Types.h"
 #include "mesher/delaunay3d/Handles.h"
 
@@ -34,20 +35,27 @@ class TetMesh {
   /// Largest number of tet slots: face codes 4·t + i must fit below kFreeMark.
   static constexpr std::size_t kMaxTets = (std::size_t{1} << 30) - 1;
 
+  // Preconditions (ANISO_ASSERT, checked in Debug and sanitizer builds): a VertexId names an
+  // existing vertex; a TetId given to a tet accessor names a live tet (free slots are read
+  // only through nextFree), a local index is 0..3.
+
   // ---- vertices ----
   VertexId addVertex(const Vec3& p);
   std::size_t numVertices() const { return vtet_.size(); }
   /// Pointer to the three coordinates of v (valid until the next addVertex).
-  const double* coords(VertexId v) const { return &xyz_[3 * std::size_t{v.index}]; }
+  const double* coords(VertexId v) const { return &xyz_[3 * std::size_t{checked(v)}]; }
   Vec3 point(VertexId v) const { const double* c = coords(v); return Vec3(c[0], c[1], c[2]); }
   /// One live tetrahedron incident to v, or an invalid id if v is in none.
-  TetId vertexTet(VertexId v) const { return TetId(vtet_[v.index]); }
-  void setVertexTet(VertexId v, TetId t) { vtet_[v.index] = t.index; }
+  TetId vertexTet(VertexId v) const { return TetId(vtet_[checked(v)]); }
+  void setVertexTet(VertexId v, TetId t) {
+    ANISO_ASSERT(!t.valid() || t.index < tf_.size());
+    vtet_[checked(v)] = t.index;
+  }
   /// Moves vertex v to p. No check: the caller (smoothing, sec. 5.6.1) has verified that
   /// every incident tet stays positively oriented. Clears certifiedDelaunay(). Threads may
   /// move distinct vertices at once when the flag is cleared before (it is then only read).
   void movePoint(VertexId v, const Vec3& p) {
-    double* c = &xyz_[3 * std::size_t{v.index}];
+    double* c = &xyz_[3 * std::size_t{checked(v)}];
     c[0] = p.x(), c[1] = p.y(), c[2] = p.z();
     if (certified_) certified_ = false;
   }
@@ -59,15 +67,15 @@ class TetMesh {
   /// Slots the arrays hold without reallocating (reserve()).
   std::size_t tetCapacity() const { return tf_.capacity(); }
   bool isAlive(TetId t) const { return t.index < tf_.size() && tv_[4 * std::size_t{t.index}] != kFreeMark; }
-  VertexId vertex(TetId t, int i) const { return VertexId(tv_[4 * std::size_t{t.index} + i]); }
+  VertexId vertex(TetId t, int i) const { return VertexId(tv_[slot(t, i)]); }
   /// The four vertex indices of t (raw, for hot loops).
-  const std::uint32_t* tetVertices(TetId t) const { return &tv_[4 * std::size_t{t.index}]; }
+  const std::uint32_t* tetVertices(TetId t) const { return &tv_[slot(t, 0)]; }
   /// Local index (0..3) of v in t, or -1.
   int localIndex(TetId t, VertexId v) const;
   /// Face code (4·u + j) of the neighbour across face i, or kNone on the hull.
-  std::uint32_t adjacentCode(TetId t, int i) const { return tn_[4 * std::size_t{t.index} + i]; }
+  std::uint32_t adjacentCode(TetId t, int i) const { return tn_[slot(t, i)]; }
   TetId neighbour(TetId t, int i) const { return codeTet(adjacentCode(t, i)); }
-  bool isConstrained(TetId t, int i) const { return (tf_[t.index] >> i) & 1u; }
+  bool isConstrained(TetId t, int i) const { return (tf_[slot(t, i) / 4] >> i) & 1u; }
   /// Sets or clears the constrained bit of face i of t and of the same face in the neighbour.
   void setConstrained(TetId t, int i, bool on);
 
@@ -78,7 +86,10 @@ class TetMesh {
   /// Puts t on the free list. Neighbours keep their codes pointing at t: the caller relinks.
   void freeTet(TetId t);
   /// Sets the neighbour code of face i of t (one side only).
-  void setAdjacentCode(TetId t, int i, std::uint32_t code) { tn_[4 * std::size_t{t.index} + i] = code; }
+  void setAdjacentCode(TetId t, int i, std::uint32_t code) {
+    ANISO_ASSERT(code == kNone || code / 4 < tf_.size());
+    tn_[slot(t, i)] = code;
+  }
   /// Links face i of t and face j of u both ways.
   void link(TetId t, int i, TetId u, int j) {
     setAdjacentCode(t, i, faceCode(u, j));
@@ -86,10 +97,11 @@ class TetMesh {
   }
   /// Sets only this side's constrained bit of face i of t.
   void setConstrainedBit(TetId t, int i, bool on) {
+    ANISO_ASSERT(isAlive(t) && i >= 0 && i < 4);
     if (on) tf_[t.index] |= static_cast<std::uint8_t>(1u << i);
     else tf_[t.index] &= static_cast<std::uint8_t>(~(1u << i));
   }
-  std::uint8_t flags(TetId t) const { return tf_[t.index]; }
+  std::uint8_t flags(TetId t) const { return tf_[inRange(t)]; }
   /// Hints the memory of t's neighbour codes and flags into the cache (hot loops: the
   /// cavity search asks for them one dependent load after another).
   void prefetchAdjacency(TetId t) const {
@@ -102,9 +114,9 @@ class TetMesh {
     const std::uint32_t* v = tetVertices(t);
     for (int i = 0; i < 4; ++i) __builtin_prefetch(&xyz_[3 * std::size_t{v[i]}]);
   }
-  void setMark(TetId t, std::uint8_t bit) { tf_[t.index] |= bit; }
-  void clearMark(TetId t, std::uint8_t bit) { tf_[t.index] &= static_cast<std::uint8_t>(~bit); }
-  bool hasMark(TetId t, std::uint8_t bit) const { return (tf_[t.index] & bit) != 0; }
+  void setMark(TetId t, std::uint8_t bit) { tf_[inRange(t)] |= bit; }
+  void clearMark(TetId t, std::uint8_t bit) { tf_[inRange(t)] &= static_cast<std::uint8_t>(~bit); }
+  bool hasMark(TetId t, std::uint8_t bit) const { return (tf_[inRange(t)] & bit) != 0; }
 
   // ---- certified Delaunay property ----
   /// True while the mesh is known to be Delaunay for the identity metric with no
@@ -131,11 +143,30 @@ class TetMesh {
   std::size_t memoryBytes() const;
   /// Head of the free list (kNone if empty) and successor of a free slot (for validate()).
   std::uint32_t freeHead() const { return freeHead_; }
-  std::uint32_t nextFree(TetId t) const { return tn_[4 * std::size_t{t.index}]; }
+  std::uint32_t nextFree(TetId t) const {
+    ANISO_ASSERT(t.index < tf_.size() && !isAlive(t));
+    return tn_[4 * std::size_t{t.index}];
+  }
   /// Raw coordinate array (3 per vertex).
   const std::vector<double>& xyz() const { return xyz_; }
 
  private:
+  /// v.index, asserted to name a vertex.
+  std::uint32_t checked(VertexId v) const {
+    ANISO_ASSERT(v.index < vtet_.size());
+    return v.index;
+  }
+  /// t.index, asserted to name a slot (live or free).
+  std::uint32_t inRange(TetId t) const {
+    ANISO_ASSERT(t.index < tf_.size());
+    return t.index;
+  }
+  /// 4·t + i, asserted to be entry i of a live tet.
+  std::size_t slot(TetId t, int i) const {
+    ANISO_ASSERT(isAlive(t) && i >= 0 && i < 4);
+    return 4 * std::size_t{t.index} + static_cast<std::size_t>(i);
+  }
+
   std::vector<double> xyz_;          // 3 per vertex
   std::vector<std::uint32_t> vtet_;  // 1 per vertex
   std::vector<std::uint32_t> tv_;    // 4 per tet slot

@@ -24,12 +24,14 @@ std::string tetName(TetId t) { return "tet " + std::to_string(t.index); }
 void checkFreeList(const TetMesh& mesh, Report& r) {
   std::vector<char> onList(mesh.tetSlots(), 0);
   std::size_t free = 0;
-  for (std::uint32_t f = mesh.freeHead(); f != kNone; f = mesh.nextFree(TetId(f))) {
+  // each slot is checked before nextFree reads it (a live slot is not nextFree's to read)
+  for (std::uint32_t f = mesh.freeHead(); f != kNone;) {
     if (f >= mesh.tetSlots()) return r.add("free list points outside the slots: " + std::to_string(f));
     if (onList[f]) return r.add("free list has a cycle at slot " + std::to_string(f));
     if (mesh.isAlive(TetId(f))) return r.add("free list holds the live " + tetName(TetId(f)));
     onList[f] = 1;
     ++free;
+    f = mesh.nextFree(TetId(f));
   }
   if (free + mesh.numTets() != mesh.tetSlots())
     r.add("free (" + std::to_string(free) + ") + live (" + std::to_string(mesh.numTets()) +

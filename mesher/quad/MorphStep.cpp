@@ -167,7 +167,9 @@ MorphResult morphFrontEdge(QuadMesh2d& mesh, VertexMetrics& metrics, int e, int 
   r.failure = MorphFailure::Enclosed;
   if (inside.empty() || inside.size() % 2 == 1) return r;
   r.failure = MorphFailure::Parity;
-  if ((onFront[c] || onFront[d]) && !parity.removalKeepsParity(mesh, inside)) return r;
+  // c or d may be the vertex a side-edge split of this step made: beyond onFront, not on it
+  const auto isOnFront = [&](int v) { return v < static_cast<int>(onFront.size()) && onFront[v]; };
+  if ((isOnFront(c) || isOnFront(d)) && !parity.removalKeepsParity(mesh, inside)) return r;
   r.failure = MorphFailure::Shape;
   if (elementQuality(mesh, metrics, quad) < o.minQuality) return r;
   const std::array<Corners, 1> added{quad};

@@ -49,7 +49,8 @@ struct MorphResult {
   bool split = false;           ///< it was the transition split
 };
 
-/// `onFront[v]`: v is a boundary vertex or a corner of a quad (the caller's bookkeeping).
+/// `onFront[v]`: v is a boundary vertex or a corner of a quad (the caller's bookkeeping); a
+/// vertex beyond its size (made by this step's splits) is not on the front.
 MorphResult morphFrontEdge(QuadMesh2d& mesh, VertexMetrics& metrics, int e, int k,
                            const std::vector<std::uint8_t>& onFront, RegionParity& parity,
                            const MorphOptions& options = {});
