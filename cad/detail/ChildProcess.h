@@ -49,7 +49,7 @@ ChildOutcome runInChild(CadModel::Impl& impl, const char* phase,
 /// used; each raises SIGSEGV there, so that the recovery from a kernel crash is tested
 /// without a model that crashes OCCT. "fork-fails" makes runInChild find no process.
 bool testCrashRequested(const char* point);
-/// Raises SIGSEGV, its default action restored, when testCrashRequested(point).
+/// Raises SIGSEGV when testCrashRequested(point).
 void testCrashPoint(const char* point);
 
 }  // namespace aniso::cad::detail
