@@ -17,6 +17,22 @@ int regionOwner(const std::vector<int>& parts, const std::vector<double>& partVo
   return best;
 }
 
+bool isFilm(double volume, double area, double diagonal) {
+  return area > 0 && 2 * volume / area < kFilmThicknessRel * diagonal;
+}
+
+int regionOwner(const CommonRegion& r, const std::vector<double>& partVolume, double diagonal) {
+  const int byVolume = regionOwner(r.parts, partVolume);
+  if (r.width.size() != r.parts.size() || !isFilm(r.volume, r.area, diagonal)) return byVolume;
+  const double widest = *std::max_element(r.width.begin(), r.width.end());
+  const auto at = [&r](int part) { return r.width[static_cast<size_t>(std::find(r.parts.begin(), r.parts.end(), part) - r.parts.begin())]; };
+  if (at(byVolume) >= kFilmWidthRatio * widest) return byVolume;
+  std::vector<int> wide;  // the parts whose added faces are the widest; the volume rule among them
+  for (size_t k = 0; k < r.parts.size(); ++k)
+    if (r.width[k] == widest) wide.push_back(r.parts[k]);
+  return regionOwner(wide, partVolume);
+}
+
 std::vector<Overlap> overlapPairs(const std::vector<CommonRegion>& regions) {
   struct Acc {
     double volume = 0, keptA = 0, keptB = 0;

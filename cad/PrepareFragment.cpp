@@ -66,12 +66,6 @@ constexpr int kMaxUnfusedSolids = 12;
 /// within 0.03 %.
 constexpr double kWireFixVolumeRel = 5e-3;
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
-
 /// The solids an argument became in the general fuse (itself when untouched).
 TopTools_IndexedMapOfShape imagesOf(BRepAlgoAPI_BuilderAlgo& gf, const TopoDS_Shape& solid) {
   TopTools_IndexedMapOfShape out;
@@ -214,7 +208,7 @@ std::vector<CommonRegion> commonRegions(const Fuse& f, int n, TopTools_IndexedMa
       const int r = regionSolids.FindIndex(im);
       if (r == 0) {
         regionSolids.Add(im);
-        regions.push_back({{firstOwner.Find(im), i}, solidVolume(im), 0});
+        regions.push_back({{firstOwner.Find(im), i}, solidVolume(im), 0, {}, 0});
       } else {
         regions[static_cast<size_t>(r - 1)].parts.push_back(i);
       }
@@ -475,7 +469,16 @@ void fragmentSolids(CadModel::Impl& impl, double diag, OverlapPolicy policy, Pre
   TopTools_IndexedMapOfShape regionSolids;
   std::vector<CommonRegion> regions = commonRegions(f, n, regionSolids);
   if (policy == OverlapPolicy::Merge)
-    for (CommonRegion& r : regions) r.owner = regionOwner(r.parts, args.volume);
+    for (int k = 1; k <= regionSolids.Extent(); ++k) {
+      CommonRegion& r = regions[static_cast<size_t>(k - 1)];
+      r.area = shapeArea(regionSolids(k));
+      if (isFilm(r.volume, r.area, diag)) {  // the faces are measured only where the rule uses them
+        std::vector<TopoDS_Shape> parts;
+        for (const int p : r.parts) parts.push_back(args.solids(p));
+        r.width = regionFaceWidths(regionSolids(k), parts, 2 * best.fuzzy);
+      }
+      r.owner = regionOwner(r, args.volume, diag);
+    }
   report.overlaps = overlapPairs(regions);
   for (Overlap& o : report.overlaps) {
     o.nameA = impl.solidName(args.originals(o.a), o.a);
@@ -493,7 +496,7 @@ void fragmentSolids(CadModel::Impl& impl, double diag, OverlapPolicy policy, Pre
       report.warnings.push_back(pairs + "; the solids are not fragmented (--overlaps keep)");
       return;
     }
-    report.warnings.push_back(pairs + ", each common region kept in the smaller part; see the report");
+    report.warnings.push_back(pairs + ", each common region kept in the smaller part (a thin film: in the part that keeps it without narrow faces elsewhere); see the report");
   }
   assembleParts(impl, args, f, regionSolids, regions, report);
   report.sharedFaces = countSharedFaces(impl.shape);

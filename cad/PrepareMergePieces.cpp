@@ -1,3 +1,4 @@
+#include <cstdio>
 #include <BOPAlgo_BuilderSolid.hxx>
 #include <BRep_Builder.hxx>
 #include <BRepGProp.hxx>
@@ -43,6 +44,12 @@ double mass(const TopoDS_Shape& shape, bool area) {
 }  // namespace
 
 double solidVolume(const TopoDS_Shape& solid) { return mass(solid, false); }
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
 double shapeArea(const TopoDS_Shape& shape) { return mass(shape, true); }
 
 void addLooseFaces(const TopoDS_Shape& shape, const TopTools_IndexedMapOfShape& solids, TopoDS_Compound& c) {

@@ -7,6 +7,7 @@
 #include <ShapeBuild_ReShape.hxx>
 #include <TopoDS_Compound.hxx>
 #include <functional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -87,6 +88,15 @@ void fragmentSolids(CadModel::Impl& impl, double diag, OverlapPolicy policy, Pre
 /// it glues: Ag9900M_MT's pieces sum 0.25 % below their part, while the merged solid is
 /// within 0.05 % of it).
 TopTools_ListOfShape mergePieces(const TopTools_ListOfShape& pieces, double partVolume);
+
+/// For a region common to several parts (a solid of the general fuse) and the parts' solids
+/// before the fuse: per part, the narrowest face of the region that lies on that part's
+/// boundary (within `tol`), as 2 × area / perimeter; infinity when none does. Keeping the
+/// region in part i adds exactly those faces to the other parts' boundaries.
+std::vector<double> regionFaceWidths(const TopoDS_Shape& region, const std::vector<TopoDS_Shape>& parts, double tol);
+
+/// A number for messages: 6 significant digits (%.6g).
+std::string num(double v);
 
 /// Volume of a solid (OCCT GProp), 0 if OCCT fails.
 double solidVolume(const TopoDS_Shape& solid);

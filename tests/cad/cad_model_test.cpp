@@ -1,6 +1,11 @@
 // CadModel: reading, part names, preparation (conformal assemblies), topology.
 #include <gtest/gtest.h>
 
+#include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <TopoDS_Compound.hxx>
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -158,4 +163,39 @@ TEST(CadModel, AFuseThatFailsAsAWholeRunsWithoutTheSolidsItBreaks) {
   bool named = false;
   for (const std::string& w : r.warnings) named = named || w.find("could not be fragmented with the others") != std::string::npos;
   EXPECT_TRUE(named);
+}
+
+namespace {
+/// A 10 × 10 × 2 plate BODY and a 1 × 1 × 3 PIN standing `depth` into its top, as a BREP file.
+std::string pinOnPlate(double depth) {
+  BRep_Builder b;
+  TopoDS_Compound c;
+  b.MakeCompound(c);
+  b.Add(c, BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 10, 10, 2).Shape());
+  b.Add(c, BRepPrimAPI_MakeBox(gp_Pnt(4, 4, 2 - depth), 1, 1, 3).Shape());
+  const auto path = std::filesystem::temp_directory_path() / ("anisomesh_pin_" + std::to_string(depth) + ".brep");
+  BRepTools::Write(c, path.string().c_str());
+  return path.string();
+}
+}  // namespace
+
+// The overlap rule (cad/OverlapRule.h) on real fuses: a pin 0.5 µm deep in a plate (diagonal
+// 15) loses its tip (a recess with 0.5 µm walls in the plate would force slivers); 0.5 deep,
+// the pin keeps it.
+TEST(CadModel, AFilmOverlapGoesToThePartItLeavesWithoutNarrowFaces) {
+  for (const double depth : {0.0005, 0.5}) {
+    const std::string path = pinOnPlate(depth);
+    CadModel m = CadModel::read(path);
+    const PrepareReport r = m.prepare({});
+    std::filesystem::remove(path);
+    ASSERT_EQ(r.overlaps.size(), 1u) << depth;
+    EXPECT_NEAR(r.overlaps[0].volume, depth, 1e-6) << depth;
+    const bool film = depth < 0.001;
+    EXPECT_EQ(r.overlaps[0].assignedTo, film ? 1 : 2) << depth;
+    const ShapeSummary s = m.summary();
+    ASSERT_EQ(s.solids, 2);
+    EXPECT_NEAR(s.solidList[0].volume, film ? 200 : 200 - depth, 1e-6) << depth;
+    EXPECT_NEAR(s.solidList[1].volume, film ? 3 - depth : 3, 1e-6) << depth;
+    EXPECT_NEAR(s.volume, 203 - depth, 1e-6) << depth;
+  }
 }

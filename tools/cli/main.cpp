@@ -25,7 +25,7 @@ constexpr const char* kMessages = "Messages";
 
 void addOverlapsOption(CLI::App& cmd, cad::OverlapPolicy& p) {
   cmd.add_option("--overlaps", p,
-                 "Overlapping solids: merge (each common region meshed once, in the smaller part), keep (left "
+                 "Overlapping solids: merge (each common region meshed once, in the smaller part; a thin film where it leaves no narrow faces), keep (left "
                  "unfragmented, overlapping meshes) or error (exit 2)")
       ->transform(CLI::CheckedTransformer(std::map<std::string, cad::OverlapPolicy>{
           {"merge", cad::OverlapPolicy::Merge}, {"keep", cad::OverlapPolicy::Keep}, {"error", cad::OverlapPolicy::Error}}))
