@@ -1,25 +1,71 @@
 #include <ShapeBuild_ReShape.hxx>
+#include <ShapeFix_Face.hxx>
 #include <ShapeFix_Shape.hxx>
+#include <ShapeFix_Shell.hxx>
+#include <ShapeFix_Solid.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
+
+#include <cmath>
 
 #include "cad/detail/FaceTags.h"
 #include "cad/detail/Prepare.h"
 
 namespace aniso::cad::detail {
+namespace {
+
+/// The fixer may change the solids' total volume by at most this fraction; beyond it the
+/// shape is kept as read. Measured on KiCad battery holders (Keystone 2466, 2462, MPD
+/// BC12AAPC, whose peg-tip faces of revolution repeat their rim circles as extra edges):
+/// ShapeFix_Shape split the 1901 mm³ body into two 0.19 mm³ solids made of the peg tips
+/// alone; on ../shared/assemblies and ../shared/models the fixer changes no total by more
+/// than 1e-5.
+constexpr double kFixVolumeRel = 1e-3;
+
+double solidsVolume(const TopoDS_Shape& shape) {
+  TopTools_IndexedMapOfShape solids;
+  TopExp::MapShapes(shape, TopAbs_SOLID, solids);
+  double v = 0;
+  for (int i = 1; i <= solids.Extent(); ++i) v += std::abs(solidVolume(solids(i)));
+  return v;
+}
+
+}  // namespace
 
 void fixShape(CadModel::Impl& impl, double diag, PrepareReport& report) {
   try {
     const InternalFaces internal = collectInternalFaces(impl.shape);
-    Handle(ShapeFix_Shape) fixer = new ShapeFix_Shape(impl.shape);
-    // Fixes may not open gaps larger than a small fraction of the model.
-    fixer->SetMaxTolerance(1e-3 * diag);
-    if (const int split = splitLoopsOfClosedEdges(impl.shape, *fixer->Context()))
+    // wireRepairs false: ShapeFix_Wire is left out (the fallback below)
+    const auto runFixer = [&impl, diag](bool wireRepairs, int& split) {
+      Handle(ShapeFix_Shape) f = new ShapeFix_Shape(impl.shape);
+      f->SetMaxTolerance(1e-3 * diag);  // fixes may not open gaps larger than a small fraction of the model
+      if (!wireRepairs) f->FixSolidTool()->FixShellTool()->FixFaceTool()->FixWireMode() = 0;
+      split = splitLoopsOfClosedEdges(impl.shape, *f->Context());
+      f->Perform();
+      return f;
+    };
+    int split = 0;
+    Handle(ShapeFix_Shape) fixer = runFixer(true, split);
+    if (split > 0)
       report.warnings.push_back(std::to_string(split) +
                                 " face(s) had a boundary loop made of separate closed edges (no seam joining "
                                 "them): split into one loop per edge");
-    fixer->Perform();
+    const double volumeBefore = solidsVolume(impl.shape);
+    const auto keepsVolume = [volumeBefore](const TopoDS_Shape& s) {
+      return !s.IsNull() && std::abs(solidsVolume(s) - volumeBefore) <= kFixVolumeRel * volumeBefore;
+    };
+    if (!fixer->Shape().IsNull() && !keepsVolume(fixer->Shape())) {
+      const std::string changed = "from " + num(volumeBefore) + " to " + num(solidsVolume(fixer->Shape()));
+      fixer = runFixer(false, split);
+      if (!keepsVolume(fixer->Shape())) {
+        report.warnings.push_back("shape fixing would change the solids' volume " + changed + "; the shape is kept as read");
+        rebuildSelfIntersecting(impl, report);
+        return;
+      }
+      report.warnings.push_back("shape fixing left the faces' boundary loops as read (repairing them would change the "
+                                "solids' volume " + changed + ")");
+    }
     const TopoDS_Shape fixed = fixer->Shape();
     if (fixed.IsNull()) {
       report.warnings.push_back("shape fixing produced nothing; the shape is kept as read");

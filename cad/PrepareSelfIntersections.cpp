@@ -2,6 +2,7 @@
 #include <BOPAlgo_MakerVolume.hxx>
 #include <BOPDS_DS.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
+#include <BRepCheck_Analyzer.hxx>
 #include <BRep_Builder.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
@@ -110,6 +111,14 @@ std::vector<TopoDS_Shape> rebuilt(const TopoDS_Shape& solid, Handle(BRepTools_Hi
     }
   const double before = std::abs(solidVolume(solid));
   if (pieces.empty() || std::abs(total - before) > kRebuildVolumeRel * before) return {};
+  // the pieces must be as valid as the solid (KiCad battery holders: the pegs' tips meet
+  // their cylinders at coincident but distinct vertices; MakerVolume dropped the tips and
+  // left the cylinders' loops open by a period in (u, v), within the volume check above)
+  BRep_Builder b;
+  TopoDS_Compound all;
+  b.MakeCompound(all);
+  for (const TopoDS_Shape& p : pieces) b.Add(all, p);
+  if (!BRepCheck_Analyzer(all).IsValid() && BRepCheck_Analyzer(solid).IsValid()) return {};
   return pieces;
 }
 

@@ -29,6 +29,7 @@
 //    neither the outer shell's nor a void shell.
 #include "cad/TopologyBuilder.h"
 
+#include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepClass3d.hxx>
 #include <BRepGProp.hxx>
@@ -37,6 +38,7 @@
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
+#include <Geom2d_Curve.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
@@ -196,6 +198,38 @@ EdgeUse makeUse(const ShapeMaps& maps, const Model& model, const TopoDS_Edge& ed
   return use;
 }
 
+/// A degenerated edge (one 3D point) whose pcurve crosses a part of the surface that is
+/// not that point is no pole: OCCT's STEP translation bridges (u, v) jumps of a periodic
+/// face with such edges (KiCad battery holders: the peg tips, surfaces of revolution that
+/// do not reach their axis, came with two, their loops 4π wide, and meshed folded over
+/// themselves). True when the surface at five points of the pcurve strays from the edge's
+/// vertex by more than kFalsePoleTolFactor times the edge's tolerance and by more than
+/// kFalsePoleRel of the face's size. (Not the vertex's tolerance: the translation grows it
+/// to cover the bridge, 0.07 and 0.8 on those tips of 0.4 radius.)
+constexpr double kFalsePoleTolFactor = 10;
+constexpr double kFalsePoleRel = 1e-3;
+
+bool falsePole(const TopoDS_Edge& edge, const TopoDS_Face& face) {
+  if (!BRep_Tool::Degenerated(edge)) return false;
+  double a = 0, b = 0;
+  const Handle(Geom2d_Curve) pc = BRep_Tool::CurveOnSurface(edge, face, a, b);
+  TopoDS_Vertex v0, v1;
+  TopExp::Vertices(edge, v0, v1);
+  if (pc.IsNull() || v0.IsNull()) return false;
+  Bnd_Box box;
+  BRepBndLib::Add(face, box);
+  const double size = box.IsVoid() ? 0 : std::sqrt(box.SquareExtent());
+  const double tol = std::max(kFalsePoleTolFactor * BRep_Tool::Tolerance(edge), kFalsePoleRel * size);
+  const gp_Pnt p = BRep_Tool::Pnt(v0);
+  const BRepAdaptor_Surface surface(face, false);  // the face's own location, no restriction
+  double stray = 0;
+  for (int k = 0; k <= 4; ++k) {
+    const gp_Pnt2d uv = pc->Value(a + 0.25 * k * (b - a));
+    stray = std::max(stray, surface.Value(uv.X(), uv.Y()).Distance(p));
+  }
+  return stray > tol;
+}
+
 /// The uses of `wire` in walking order (BRepTools_WireExplorer on the oriented face); the
 /// stored order when the explorer cannot walk the whole wire (a defective wire, which
 /// Model::validate() then reports as not closed).
@@ -225,6 +259,23 @@ Loop walkWire(const ShapeMaps& maps, const Model& model, const TopoDS_Wire& wire
       if (isForwardOrReversed(o))
         loop.uses.push_back(makeUse(maps, model, TopoDS::Edge(x.Current()), o, fi, faceReversed));
     }
+  }
+  // false poles left out: the loop is chained across their jumps by whole periods
+  try {
+    const TopoDS_Face forwardFace = TopoDS::Face(face.Oriented(TopAbs_FORWARD));
+    std::vector<EdgeUse> kept;
+    for (const EdgeUse& u : loop.uses)
+      if (!model.edges[u.edge].degenerate ||
+          !falsePole(TopoDS::Edge(maps.edges(u.edge + 1).Oriented(TopAbs_FORWARD)), forwardFace))
+        kept.push_back(u);
+    // only when an edge other than a seam is left: a loop whose rims OCCT turned into such
+    // edges altogether (seen on a lone face of revolution) has nothing to chain them by
+    const bool bounded = std::any_of(kept.begin(), kept.end(), [&model](const EdgeUse& u) {
+      return !model.edges[u.edge].degenerate && !model.edges[u.edge].seam;
+    });
+    if (bounded) loop.uses = std::move(kept);
+  } catch (const Standard_Failure&) {
+    // the loop as walked
   }
   return loop;
 }

@@ -178,7 +178,10 @@ class Validator {
     // 3D): the face mesher moves each use next to the previous one and finds whether the
     // loop closes (contour/FaceLoops.cpp); a pole without its degenerate edge does not.
     const Vec2 d = ub - ua;
-    const Vec2 ubn = ua + d;
+    Vec2 dn = d;  // the jump less whole periods: ubn is ub's copy next to ua
+    if (dom.uPeriodic && dom.uPeriod > 0) dn.x() -= dom.uPeriod * std::round(d.x() / dom.uPeriod);
+    if (dom.vPeriodic && dom.vPeriod > 0) dn.y() -= dom.vPeriod * std::round(d.y() / dom.vPeriod);
+    const Vec2 ubn = ua + dn;
     const Vec2 gap = d.cwiseAbs();
     const Vec3 sa = face.surface->point(ua), sb = face.surface->point(ubn), sm = face.surface->point(0.5 * (ua + ubn));
     const double d3 = std::max({(sb - sa).norm(), (sm - sa).norm(), (sb - sm).norm()});

@@ -10,6 +10,12 @@
 #include <BRepPrimAPI_MakeTorus.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
+#include <Geom2d_Line.hxx>
+#include <Geom_Circle.hxx>
+#include <Geom_CylindricalSurface.hxx>
+#include <Geom_Line.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Wire.hxx>
 #include <TopLoc_Location.hxx>
 #include <TopoDS_Compound.hxx>
 #include <gp_Pln.hxx>
@@ -247,6 +253,83 @@ TEST(BuildTopology, CylinderSeamHasTwoPcurvesOnTheLateralFace) {
   EXPECT_TRUE(m.shells.at(0).closed);
   expectSound(m);
   expectNormalsFrom(m, 0, Vec3(0, 0, 1.5), 1);
+}
+
+// A face of revolution as OCCT's STEP translation delivered the peg tips of KiCad battery
+// holders, on a cylinder (radius 1, height 2): its loop runs the top circle from u = 0 to
+// -2π, the seam at -2π, the bottom circle from 0 to 2π, the seam at 2π, and closes the two
+// jumps of 2π with two "degenerated" edges whose pcurves run a whole circle each (no pole:
+// the surface there is the circle, not a point). The mesher's loop leaves them out and
+// keeps the four real uses; chained across the jumps by whole periods, the boundary is
+// one rectangle of width 2π, not two overlapping ones.
+TEST(BuildTopology, FalsePolesBridgingPeriodJumpsAreLeftOut) {
+  const double h = 2, tol = 1e-7;
+  BRep_Builder b;
+  Handle(Geom_CylindricalSurface) cyl = new Geom_CylindricalSurface(gp_Ax3(gp::XOY()), 1.0);
+  TopoDS_Face face;
+  b.MakeFace(face, cyl, tol);
+  TopoDS_Vertex vb, vt;
+  b.MakeVertex(vb, gp_Pnt(1, 0, 0), tol);
+  b.MakeVertex(vt, gp_Pnt(1, 0, h), tol);
+  const auto closedEdge = [&](const TopoDS_Vertex& v) {
+    TopoDS_Edge e;
+    b.MakeEdge(e);
+    b.Add(e, v.Oriented(TopAbs_FORWARD));
+    b.Add(e, v.Oriented(TopAbs_REVERSED));
+    return e;
+  };
+  const auto line = [](double u, double v, double du, double dv) {
+    return Handle(Geom2d_Line)(new Geom2d_Line(gp_Pnt2d(u, v), gp_Dir2d(du, dv)));
+  };
+  // top circle, walked reversed: t in [0, 2π] is u = t - 2π
+  TopoDS_Edge top = closedEdge(vt);
+  b.UpdateEdge(top, new Geom_Circle(gp_Ax2(gp_Pnt(0, 0, h), gp::DZ()), 1.0), tol);
+  b.UpdateEdge(top, line(-2 * kPi, h, 1, 0), face, tol);
+  b.Range(top, 0, 2 * kPi);
+  // bottom circle, walked forward: u = t
+  TopoDS_Edge bottom = closedEdge(vb);
+  b.UpdateEdge(bottom, new Geom_Circle(gp::XOY(), 1.0), tol);
+  b.UpdateEdge(bottom, line(0, 0, 1, 0), face, tol);
+  b.Range(bottom, 0, 2 * kPi);
+  // seam: forward at u = 2π (up), reversed at u = -2π (down)
+  TopoDS_Edge seam;
+  b.MakeEdge(seam, new Geom_Line(gp_Pnt(1, 0, 0), gp::DZ()), tol);
+  b.Add(seam, vb.Oriented(TopAbs_FORWARD));
+  b.Add(seam, vt.Oriented(TopAbs_REVERSED));
+  b.UpdateEdge(seam, line(2 * kPi, 0, 0, 1), line(-2 * kPi, 0, 0, 1), face, tol);
+  b.Range(seam, 0, h);
+  // the two false poles: (2π, h) -> (0, h) at the top vertex, (-2π, 0) -> (0, 0) at the bottom one
+  const auto falsePole = [&](const TopoDS_Vertex& v, double u, double vv, double du) {
+    TopoDS_Edge e = closedEdge(v);
+    b.UpdateEdge(e, line(u, vv, du, 0), face, tol);
+    b.Range(e, 0, 2 * kPi);
+    b.Degenerated(e, true);
+    return e;
+  };
+  const TopoDS_Edge d1 = falsePole(vt, 2 * kPi, h, -1), d2 = falsePole(vb, -2 * kPi, 0, 1);
+  TopoDS_Wire wire;
+  b.MakeWire(wire);
+  b.Add(wire, d1);
+  b.Add(wire, top.Reversed());
+  b.Add(wire, seam.Reversed());
+  b.Add(wire, d2);
+  b.Add(wire, bottom);
+  b.Add(wire, seam);
+  b.Add(face, wire);
+
+  const Model m = build(face);
+  ASSERT_EQ(m.faces.size(), 1u);
+  ASSERT_EQ(m.faces[0].loops.size(), 1u);
+  const Loop& loop = m.faces[0].loops[0];
+  ASSERT_EQ(loop.uses.size(), 4u);  // top, seam, bottom, seam
+  for (const EdgeUse& u : loop.uses) EXPECT_FALSE(m.edges[static_cast<std::size_t>(u.edge)].degenerate);
+  // the two jumps are whole periods, closed in 3D: Defects the face mesher chains across
+  const std::vector<ModelIssue> issues = m.check();
+  EXPECT_EQ(issues.size(), 2u) << joined(m.validate());
+  for (const ModelIssue& i : issues) {
+    EXPECT_EQ(i.level, ModelIssue::Level::Defect) << i.message;
+    EXPECT_LT(i.uvGapShare, 1e-9) << i.message;
+  }
 }
 
 TEST(BuildTopology, SphereHasDegenerateEdgesAtThePoles) {
