@@ -67,4 +67,12 @@ double overlapExcess(const std::vector<CommonRegion>& regions) {
   return v;
 }
 
+double preparedVolumeError(double before, double after, const std::vector<Overlap>& overlaps) {
+  if (!(before > 0)) return 0;
+  double merged = 0;
+  for (const Overlap& o : overlaps)
+    if (o.assignedTo != 0) merged += o.volume;
+  return (after - (before - merged)) / before;
+}
+
 }  // namespace aniso::cad

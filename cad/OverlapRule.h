@@ -67,4 +67,10 @@ std::vector<Overlap> overlapPairs(const std::vector<CommonRegion>& regions);
 /// (= the parts' total volume minus the union's).
 double overlapExcess(const std::vector<CommonRegion>& regions);
 
+/// How far the prepared solids' volume `after` is from the volume as read `before` less the
+/// overlaps merged (each region kept once, in one part): (after − expected) / before; 0 when
+/// before is not positive. Repairs that keep the geometry give ±1e-5 on the 30 public
+/// assemblies.
+double preparedVolumeError(double before, double after, const std::vector<Overlap>& overlaps);
+
 }  // namespace aniso::cad

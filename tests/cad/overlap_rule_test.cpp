@@ -80,3 +80,18 @@ TEST(OverlapRule, AFilmGoesWhereItLeavesNoNarrowFaces) {
   // A part that adds no face at all (infinite width) is the widest choice.
   EXPECT_EQ(regionOwner(region(0.002, 2.0, std::numeric_limits<double>::infinity(), 0.002), vol, diag), 1);
 }
+
+TEST(OverlapRule, PreparedVolumeCountsEachMergedRegionOnce) {
+  Overlap kept;
+  kept.a = 1;
+  kept.b = 2;
+  kept.volume = 5;
+  kept.assignedTo = 2;
+  Overlap left = kept;  // --overlaps keep: both parts keep it, nothing to subtract
+  left.assignedTo = 0;
+  EXPECT_DOUBLE_EQ(preparedVolumeError(100, 95, {kept}), 0.0);
+  EXPECT_DOUBLE_EQ(preparedVolumeError(100, 100, {left}), 0.0);
+  EXPECT_DOUBLE_EQ(preparedVolumeError(100, 100, {kept}), 0.05);  // the overlap still counted twice
+  EXPECT_DOUBLE_EQ(preparedVolumeError(1910.5, 9.5, {}), (9.5 - 1910.5) / 1910.5);  // a body lost to a repair
+  EXPECT_DOUBLE_EQ(preparedVolumeError(0, 3, {}), 0.0);
+}

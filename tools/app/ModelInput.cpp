@@ -1,14 +1,31 @@
 #include "tools/app/ModelInput.h"
 
 #include <chrono>
+#include <cmath>
+#include <cstdio>
 #include <memory>
 
 #include "cad/CadModel.h"
+#include "cad/OverlapRule.h"
 #include "mesher/control/CSAnalytic2d.h"
 #include "mesher/core/Log.h"
 #include "tools/app/ModelJson.h"
 
 namespace aniso::app {
+namespace {
+
+/// The prepared solids may differ from the solids as read, less the overlaps merged, by this
+/// fraction of their volume before the run is degraded (`volume-changed`): the referee's
+/// bar on a mesh's volume is 1 %.
+constexpr double kPreparedVolumeRel = 0.01;
+
+std::string formatted(const char* format, double v) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
+}  // namespace
 
 ModelInput loadModel(const std::string& file, bool fragment, cad::OverlapPolicy overlaps, const CancelToken* cancel) {
   using Clock = std::chrono::steady_clock;
@@ -31,6 +48,7 @@ ModelInput loadModel(const std::string& file, bool fragment, cad::OverlapPolicy 
   phase = std::make_unique<Progress>("prepare", 0);
   in.times.emplace_back("read", since(t));
   t = Clock::now();
+  const double volumeRead = model.summary().volume;
   cad::PrepareOptions popt;
   popt.fragment = fragment;
   popt.overlaps = overlaps;
@@ -52,6 +70,14 @@ ModelInput loadModel(const std::string& file, bool fragment, cad::OverlapPolicy 
                                " solid(s) the file declares could not be read as solids: their faces, if "
                                "any were read, are meshed as surfaces, with no tetrahedra inside",
                            "read"});
+  // the repairs must keep the solids' volume, less the overlaps merged (counted once)
+  const double volumeError = cad::preparedVolumeError(volumeRead, summary.volume, prep.overlaps);
+  if (std::abs(volumeError) > kPreparedVolumeRel)
+    in.problems.push_back({EntityRef{EntityKind::Model, 0, ""}, Severity::Degraded, "volume-changed",
+                           "preparing the model changed the solids' volume by " + formatted("%+.2f", 100 * volumeError) +
+                               " % (from " + formatted("%.6g", volumeRead) + " as read to " + formatted("%.6g", summary.volume) +
+                               ", overlaps counted once): a repair lost or added geometry",
+                           "prepare"});
   for (const int id : prep.unfusedSolids) {
     const std::string part =
         id >= 1 && id <= static_cast<int>(in.model.solids.size()) ? in.model.solids[id - 1].name : std::string();
