@@ -58,6 +58,7 @@
 #include "cad/OcctCurve3d.h"
 #include "cad/OcctSurface.h"
 #include "cad/detail/SheetShell.h"
+#include "mesher/model/ChainLoop.h"
 #include "mesher/core/Error.h"
 
 namespace aniso::cad {
@@ -230,44 +231,6 @@ bool falsePole(const TopoDS_Edge& edge, const TopoDS_Face& face) {
   return stray > tol;
 }
 
-/// The uses in an order where each ends at the vertex the next starts from, at the (u, v)
-/// nearest to it among those (two closed edges at one vertex: the profile circles of a half
-/// torus); unchanged when no such order is found from the first use. For a wire the
-/// explorer cannot walk (KiCad test points: a surface of revolution periodic both ways,
-/// its four edges stored out of order).
-void chainUses(const Model& model, std::vector<EdgeUse>& uses) {
-  const auto uvAt = [&model](const EdgeUse& u, bool end) {
-    const ModelEdge& e = model.edges[static_cast<std::size_t>(u.edge)];
-    const PCurve& pc = e.pcurves[static_cast<std::size_t>(u.pcurve)];
-    return pc.curve->point(end != u.reversed ? pc.t1 : pc.t0);
-  };
-  const auto vertexAt = [&model](const EdgeUse& u, bool end) {
-    const ModelEdge& e = model.edges[static_cast<std::size_t>(u.edge)];
-    return end != u.reversed ? e.v1 : e.v0;
-  };
-  std::vector<EdgeUse> ordered{uses.front()};
-  std::vector<char> taken(uses.size(), 0);
-  taken[0] = 1;
-  while (ordered.size() < uses.size()) {
-    const int v = vertexAt(ordered.back(), true);
-    const Vec2 at = uvAt(ordered.back(), true);
-    std::size_t best = uses.size();
-    double bestDistance = 0;
-    for (std::size_t j = 0; j < uses.size(); ++j) {
-      if (taken[j] || vertexAt(uses[j], false) != v) continue;
-      const double d = (uvAt(uses[j], false) - at).norm();
-      if (best == uses.size() || d < bestDistance) {
-        best = j;
-        bestDistance = d;
-      }
-    }
-    if (best == uses.size()) return;  // no chain: the stored order stays
-    taken[best] = 1;
-    ordered.push_back(uses[best]);
-  }
-  uses = std::move(ordered);
-}
-
 /// The uses of `wire` in walking order (BRepTools_WireExplorer on the oriented face); the
 /// stored order when the explorer cannot walk the whole wire (a defective wire, which
 /// Model::validate() then reports as not closed).
@@ -297,7 +260,7 @@ Loop walkWire(const ShapeMaps& maps, const Model& model, const TopoDS_Wire& wire
       if (isForwardOrReversed(o))
         loop.uses.push_back(makeUse(maps, model, TopoDS::Edge(x.Current()), o, fi, faceReversed));
     }
-    if (!loop.uses.empty()) chainUses(model, loop.uses);
+    if (!loop.uses.empty()) chainLoopUses(model, loop.uses);
   }
   // false poles left out: the loop is chained across their jumps by whole periods
   try {
