@@ -52,13 +52,12 @@ void fixShape(CadModel::Impl& impl, double diag, PrepareReport& report) {
                                 " face(s) had a boundary loop made of separate closed edges (no seam joining "
                                 "them): split into one loop per edge");
     const double volumeBefore = solidsVolume(impl.shape);
-    const auto keepsVolume = [volumeBefore](const TopoDS_Shape& s) {
-      return !s.IsNull() && std::abs(solidsVolume(s) - volumeBefore) <= kFixVolumeRel * volumeBefore;
-    };
-    if (!fixer->Shape().IsNull() && !keepsVolume(fixer->Shape())) {
-      const std::string changed = "from " + num(volumeBefore) + " to " + num(solidsVolume(fixer->Shape()));
+    const auto changesVolume = [volumeBefore](double v) { return std::abs(v - volumeBefore) > kFixVolumeRel * volumeBefore; };
+    if (const double fixedVolume = fixer->Shape().IsNull() ? volumeBefore : solidsVolume(fixer->Shape());
+        changesVolume(fixedVolume)) {
+      const std::string changed = "from " + num(volumeBefore) + " to " + num(fixedVolume);
       fixer = runFixer(false, split);
-      if (!keepsVolume(fixer->Shape())) {
+      if (fixer->Shape().IsNull() || changesVolume(solidsVolume(fixer->Shape()))) {
         report.warnings.push_back("shape fixing would change the solids' volume " + changed + "; the shape is kept as read");
         rebuildSelfIntersecting(impl, report);
         return;

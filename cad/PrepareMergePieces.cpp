@@ -1,4 +1,3 @@
-#include <cstdio>
 #include <BOPAlgo_BuilderSolid.hxx>
 #include <BRep_Builder.hxx>
 #include <BRepGProp.hxx>
@@ -9,6 +8,7 @@
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 
 #include <cmath>
+#include <cstdio>
 
 #include "cad/detail/Prepare.h"
 
