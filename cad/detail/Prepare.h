@@ -60,7 +60,9 @@ void sewLooseFaces(CadModel::Impl& impl, double tol, PrepareReport& report);
 inline constexpr double kNoAreaRel = 1e-12;
 
 /// A loop closed in 3D within the CAD tolerance whose (u, v) gap exceeds this share of the
-/// face's parametric extent is not meshed (kLoopGapWithinTolerance, FaceLoops.cpp).
+/// face's parametric extent is meshed only by bridging the gap as a pole (FaceLoops.cpp): a
+/// fuse that leaves such loops where there were none is not trusted. (Trusting it was tried
+/// on KiCad's Schurter fuse holder: its loosest fuse then emptied another solid.)
 inline constexpr double kFuseLoopGapShare = 0.1;
 
 /// For each part (a set of solids of `whole`), how many of its faces the mesher's own rule

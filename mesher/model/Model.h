@@ -117,8 +117,8 @@ struct ModelIssue {
   std::string message;  ///< names the entity by its 1-based id
   /// For a loop that does not close: its (u, v) gap, whole periods of a periodic surface
   /// removed, over the face's parametric extent (the larger of the two axes); 0 otherwise.
-  /// The face mesher bridges a gap closed in 3D up to a tenth of the extent
-  /// (surface/contour/FaceLoops.cpp), so a Defect above that is not meshed.
+  /// The face mesher closes a narrow gap at its midpoint and bridges a wide one whose
+  /// straight (u, v) segment stays at the vertex in 3D as a pole (surface/contour/FaceLoops.cpp).
   double uvGapShare = 0;
 };
 

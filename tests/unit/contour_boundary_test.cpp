@@ -249,3 +249,43 @@ TEST(ContourBoundary, NodeTouchingTwoLoopsHasOneParameterPoint) {
   EXPECT_EQ(at[0], at[1]);
   EXPECT_LT(signedArea(b.loops[1]), 0);
 }
+
+TEST(ContourBoundary, ShortEdgeDroppedUnderAVertexToleranceIsBridgedAsAPole) {
+  // The unit square with its corner (1, 1) cut by a short edge that the CAD system dropped,
+  // widening the tolerance of the vertex that replaces it (as KiCad's Schurter fuse holder,
+  // whose fillet lost its end arc under a 0.17 mm vertex): the edges from (1, 0) and to
+  // (0, 1) end at (1, 0.7) and start at (0.7, 1), 30 % of the extent apart in (u, v), both
+  // within the tolerance of the vertex at (0.85, 0.85). The bridge is the vertex's node
+  // repeated along the cut, a pole of the face's boundary.
+  ModelBuilder b;
+  const int f = b.face(xyPlane(), box(0, 0, 1, 1));
+  const int v0 = b.vertex({0, 0, 0}), v1 = b.vertex({1, 0, 0}), vc = b.vertex({0.85, 0.85, 0}), v3 = b.vertex({0, 1, 0});
+  b.m.vertices[vc].tolerance = 0.25;
+  const auto line = [&](int va, int vb, Vec2 p, Vec2 q) {
+    const int e = b.edge(va, vb, std::make_shared<Line3d>(Vec3(p.x(), p.y(), 0), Vec3(q.x(), q.y(), 0)), 0, 1);
+    return EdgeUse{e, false, b.pcurve(e, f, std::make_shared<Line2d>(p, q))};
+  };
+  b.loop(f,
+         {line(v0, v1, {0, 0}, {1, 0}), line(v1, vc, {1, 0}, {1, 0.7}), line(vc, v3, {0.7, 1}, {0, 1}),
+          line(v3, v0, {0, 1}, {0, 0})},
+         true);
+  const Boundaries r(b.m, 0.1);
+  const FaceBoundary fb = faceBoundary(b.m, 0, r.edges, r.mesh);
+  const auto& loop = fb.loops[0];
+  EXPECT_NEAR(signedArea(loop), 1 - 0.3 * 0.3 / 2, 1e-9);  // the corner cut, nothing more
+  int copies = 0;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    copies += loop[i].node == vc;
+    EXPECT_LT((loop[(i + 1) % loop.size()].uv - loop[i].uv).norm(), 0.2) << "step " << i;
+  }
+  EXPECT_GE(copies, 4);  // the cut (0.42 long) at the spacing of its neighbours (0.1)
+  // With the vertex's own tolerance the cut is a gap: refused, naming the face.
+  b.m.vertices[vc].tolerance = 1e-7;
+  const Boundaries tight(b.m, 0.1);
+  try {
+    faceBoundary(b.m, 0, tight.edges, tight.mesh);
+    FAIL() << "the cut is a gap";
+  } catch (const MeshingError& e) {
+    EXPECT_NE(std::string(e.what()).find("face 1 loop 1: edges 2 and 3 do not meet"), std::string::npos) << e.what();
+  }
+}

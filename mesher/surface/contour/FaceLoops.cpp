@@ -9,18 +9,23 @@
 // holding: up to 30 model units on a 7e-4 tolerance in submarine.stp), the node is
 // projected onto the pcurve's image instead (step 6's projection), keeping the parameters
 // increasing along the edge.
-// Consecutive uses share their vertex node, emitted once at the midpoint of the two pcurve
-// ends. On a periodic surface each use is moved by whole periods next to the previous one,
-// and afterwards each loop as a whole so that it overlaps the face's parametric bounds
-// (the outer loop) or the outer loop (the holes) as much as possible: the control space
-// covers the face's stored bounds. Every junction, the closing one included, must then
-// meet within kLoopGapRatio of the face's parametric extent, or within
-// kLoopGapWithinTolerance of it when its two ends are one point in 3D within the CAD
-// tolerance. Copies of one node that differ
-// by round-off only (a hole touching the outer loop at a vertex) are given one (u, v).
+// Consecutive uses share their vertex node. On a periodic surface each use is moved by whole
+// periods next to the previous one, and afterwards each loop as a whole so that it overlaps
+// the face's parametric bounds (the outer loop) or the outer loop (the holes) as much as
+// possible: the control space covers the face's stored bounds. At a junction whose two
+// pcurve ends meet within kLoopGapRatio of the face's parametric extent the vertex node is
+// emitted once, at their midpoint. A wider junction is meshed only when the straight (u, v)
+// segment between the ends stays, in 3D, within the CAD tolerance of the vertex (a CAD
+// system that dropped a short edge and widened the vertex's tolerance over it): the segment
+// is then a pole of the face's boundary, the vertex node repeated along it at the spacing
+// of the neighbouring boundary nodes, as on a degenerate edge. A junction whose ends only
+// are one point in 3D is closed at its midpoint up to kLoopGapEndsWithinTolerance of the
+// extent. Any other junction is an error. Copies of one node that differ by round-off only (a hole touching the outer loop
+// at a vertex) are given one (u, v).
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -35,11 +40,15 @@ namespace {
 /// Largest (u, v) gap between consecutive uses, relative to the diagonal of the face's
 /// parametric extent (the same order as Model::validate's kUvGapRatio).
 constexpr double kLoopGapRatio = 1e-2;
-/// A wider gap, up to this share of the extent, is bridged when its two ends are one point in
-/// 3D within the CAD tolerance (kMissFactor × the largest tolerance of the vertex, the two
-/// edges and the face, plus kMissRelative × the model size): a loop that CAD closes by its
-/// vertex tolerance on a face small in (u, v).
-constexpr double kLoopGapWithinTolerance = 0.1;
+/// A wider gap is bridged as a pole when the bridge's image lies within the CAD tolerance
+/// of the vertex (kMissFactor × the largest tolerance of the vertex, the two edges and the
+/// face, plus kMissRelative × the model size), tested at this many points along it.
+constexpr int kBridgeSamples = 16;
+/// Most copies of the vertex node along one bridge.
+constexpr int kMaxBridgeCopies = 64;
+/// A gap whose bridge strays but whose two ends are one point in 3D within that tolerance
+/// is still closed at its midpoint up to this share of the extent.
+constexpr double kLoopGapEndsWithinTolerance = 0.1;
 /// Copies of one node closer than this (relative to the parametric extent) are made equal:
 /// a hole touching the outer loop at a vertex, the two pcurve ends differing by round-off.
 constexpr double kSnapRatio = 1e-9;
@@ -56,7 +65,8 @@ struct UseNodes {
 struct Junction {
   double gap = 0;
   int from = -1, to = -1;  ///< edges (0-based) of the two uses
-  bool closedIn3d = false;  ///< the two ends are one point within the CAD tolerance
+  bool bridged = false;     ///< wide, but its straight bridge is one point in 3D: a pole
+  bool endsClosedIn3d = false;  ///< the two ends are one point within the CAD tolerance
 };
 
 std::string where(int face, std::size_t loop) {
@@ -127,16 +137,30 @@ UseNodes useNodes(const Model& model, int face, std::size_t loop, const EdgeUse&
   return out;
 }
 
+/// True when the straight (u, v) segment from `a` to `b` lies, in 3D, within `tol` of `x`.
+bool bridgeWithin(const ParametricSurface& s, const Vec2& a, const Vec2& b, const Vec3& x, double tol) {
+  for (int i = 0; i <= kBridgeSamples; ++i) {
+    const double w = static_cast<double>(i) / kBridgeSamples;
+    if (!((s.point((1 - w) * a + w * b) - x).norm() <= tol)) return false;
+  }
+  return true;
+}
+
 /// The loop's nodes chained in (u, v); `junctions` receives the gap at every junction.
+/// `extent` is the face's parametric extent (kLoopGapRatio); +inf: no bridge, every vertex
+/// at its midpoint.
 std::vector<BoundaryNode> chainLoop(const Model& model, int face, std::size_t l, const contour::PeriodicUv& periodic,
                                     const std::vector<EdgeDiscretization>& edges, const SurfaceMesh& mesh,
-                                    std::vector<Junction>& junctions) {
+                                    double extent, std::vector<Junction>& junctions) {
   const Loop& loop = model.faces[face].loops[l];
   if (loop.uses.empty()) throw MeshingError(where(face, l) + ": empty loop");
   std::vector<BoundaryNode> out;
   Vec2 end(0, 0);
   int endNode = -1, endEdge = -1;
-  const auto join = [&](Vec2& start, int startNode, int startEdge) {
+  // The junction of the previous use's end with `start` (the next use's first node, whose
+  // neighbour along that use is `next`): the vertex at the midpoint, or a bridge of copies
+  // of it appended to `out` from `end` up to, not including, `start`.
+  const auto join = [&](Vec2& start, const Vec2& next, int startNode, int startEdge) {
     if (startNode != endNode) {
       std::ostringstream s;
       s << where(face, l) << ": edge " << endEdge + 1 << " ends at node " << endNode << " but edge " << startEdge + 1
@@ -150,23 +174,35 @@ std::vector<BoundaryNode> chainLoop(const Model& model, int face, std::size_t l,
     const double vertexTol = on.kind == NodeOn::Kind::Vertex ? model.vertices[static_cast<std::size_t>(on.entity)].tolerance : 0.0;
     const double tol = kMissFactor * std::max({ea.tolerance, eb.tolerance, f.tolerance, vertexTol}) +
                        kMissRelative * model.diagonal();
-    const bool closedIn3d = (f.surface->point(start) - f.surface->point(end)).norm() <= tol;
-    junctions.push_back({(start - end).norm(), endEdge, startEdge, closedIn3d});
-    start = 0.5 * (start + end);
+    const double gap = (start - end).norm();
+    const bool bridged = !(gap <= kLoopGapRatio * extent) &&
+                         bridgeWithin(*f.surface, end, start, mesh.nodes[static_cast<std::size_t>(startNode)], tol);
+    const bool endsClosed = (f.surface->point(start) - f.surface->point(end)).norm() <= tol;
+    junctions.push_back({gap, endEdge, startEdge, bridged, endsClosed});
+    if (!bridged) {
+      start = 0.5 * (start + end);
+      return;
+    }
+    const Vec2 before = out.empty() ? end : out.back().uv;
+    const double spacing = 0.5 * ((end - before).norm() + (next - start).norm());
+    const int copies = std::clamp(static_cast<int>(std::ceil(gap / std::max(spacing, 1e-300))), 1, kMaxBridgeCopies);
+    for (int i = 0; i < copies; ++i)
+      out.push_back({end + (start - end) * (static_cast<double>(i) / copies), startNode});
   };
   for (std::size_t k = 0; k < loop.uses.size(); ++k) {
     UseNodes un = useNodes(model, face, l, loop.uses[k], edges, mesh);
     if (k > 0) {
       const Vec2 shift = periodic.shiftToward(un.uv.front(), end);
       for (Vec2& p : un.uv) p += shift;
-      join(un.uv.front(), un.node.front(), loop.uses[k].edge);
+      join(un.uv.front(), un.uv[1], un.node.front(), loop.uses[k].edge);
     }
     for (std::size_t i = 0; i + 1 < un.uv.size(); ++i) out.push_back({un.uv[i], un.node[i]});
     end = un.uv.back();
     endNode = un.node.back();
     endEdge = loop.uses[k].edge;
   }
-  join(out.front().uv, out.front().node, loop.uses.front().edge);
+  const Vec2 next = out.size() > 1 ? out[1].uv : out.front().uv;
+  join(out.front().uv, next, out.front().node, loop.uses.front().edge);
   return out;
 }
 
@@ -238,13 +274,23 @@ FaceBoundary faceBoundary(const Model& model, int face, const std::vector<EdgeDi
   FaceBoundary out;
   out.face = face;
   std::vector<std::vector<Junction>> junctions(f.loops.size());
-  for (std::size_t l = 0; l < f.loops.size(); ++l)
-    out.loops.push_back(chainLoop(model, face, l, periodic, edges, mesh, junctions[l]));
-
-  const double extent = extentDiagonal(f, out.loops);
+  const auto chainAll = [&](double extent) {
+    out.loops.clear();
+    for (std::size_t l = 0; l < f.loops.size(); ++l) {
+      junctions[l].clear();
+      out.loops.push_back(chainLoop(model, face, l, periodic, edges, mesh, extent, junctions[l]));
+    }
+  };
+  double extent = f.uvBounds.diagonal();
+  if (!(std::isfinite(extent) && extent > 0)) {  // no stored bounds: the loops' own box
+    chainAll(std::numeric_limits<double>::infinity());
+    extent = extentDiagonal(f, out.loops);
+  }
+  chainAll(extent);
   for (std::size_t l = 0; l < junctions.size(); ++l)
     for (const Junction& j : junctions[l])
-      if (!(j.gap <= kLoopGapRatio * extent) && !(j.closedIn3d && j.gap <= kLoopGapWithinTolerance * extent)) {
+      if (!(j.gap <= kLoopGapRatio * extent) && !j.bridged &&
+          !(j.endsClosedIn3d && j.gap <= kLoopGapEndsWithinTolerance * extent)) {
         std::ostringstream s;
         s << where(face, l) << ": edges " << j.from + 1 << " and " << j.to + 1 << " do not meet in (u,v): gap " << j.gap
           << " for a parametric extent of " << extent << " (the loop is not closed)";
