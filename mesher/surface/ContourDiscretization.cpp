@@ -47,6 +47,13 @@ constexpr double kMaxSegmentsPerEdge = 1e7;
 constexpr int kMinClosedSegments = 3;
 /// Fewest segments of a loop.
 constexpr int kMinLoopSegments = 3;
+/// Small-feature floor, relative to the model's diagonal: vertices closer than this are one
+/// node, CAD edges shorter collapse to it, and edges that close together are twins
+/// (contour/CoincidentEdges.h). The general fuse of the assembly treats parts this close as
+/// touching (its largest fuzzy value, cad/PrepareFragment.cpp's kFuzzyMaxRel); an element
+/// this small against a part would be a sliver. Not with --quad (a collapsed edge would
+/// leave its loops with an odd count).
+constexpr double kSmallFeatureRel = 1e-6;
 
 std::string edgeName(int e) { return "edge " + std::to_string(e + 1); }
 
@@ -197,6 +204,7 @@ void separateParallelEdges(const Model& model, const std::vector<char>& used, co
     const ModelEdge& ed = model.edges[e];
     if (!used[e] || ed.degenerate || ed.v0 == ed.v1 || n[e] != 1 || twins.of[e] >= 0) continue;
     const int p = rep[ed.v0], q = rep[ed.v1];
+    if (p == q) continue;  // collapsed to a point
     keys.push_back({std::min(p, q), std::max(p, q), length[e], static_cast<int>(e)});
   }
   std::sort(keys.begin(), keys.end());
@@ -246,6 +254,8 @@ std::vector<int> segmentCounts(const Model& model, const std::vector<const Contr
     if (twins.of[e] >= 0) n[e] = n[twins.of[e]] = std::max(n[e], n[twins.of[e]]);
   for (std::size_t e = 0; e < n.size(); ++e)
     if (twins.of[e] >= 0) n[e] = n[twins.of[e]];
+  for (std::size_t e = 0; e < n.size(); ++e)  // one node: its two ends are it
+    if (used[e] && contour::collapsedEdge(model, static_cast<int>(e), rep)) n[e] = 1;
   return n;
 }
 
@@ -355,8 +365,9 @@ std::vector<EdgeDiscretization> discretizeEdges(const Model& model,
     }
   }
   // after the checks above: every used edge has valid vertices
-  const std::vector<int> rep = contour::coincidentVertices(model, used);
-  const contour::EdgeTwins twins = contour::coincidentEdges(model, used, rep);
+  const double floor = options.evenSegments ? 0.0 : kSmallFeatureRel * model.diagonal();
+  const std::vector<int> rep = contour::coincidentVertices(model, used, floor);
+  const contour::EdgeTwins twins = contour::coincidentEdges(model, used, rep, floor);
   const std::vector<int> n = segmentCounts(model, faceSpaces, used, length, rep, twins, options);
 
   // Vertex nodes first, in vertex order.
@@ -380,6 +391,8 @@ std::vector<EdgeDiscretization> discretizeEdges(const Model& model,
     contour::matchCuspNodes(model, faceSpaces, params);
   else  // (a node more would break the even counts quads need)
     contour::addNodesNearVertices(model, faceSpaces, params);
+  for (int e = 0; e < ne; ++e)
+    if (used[e] && contour::collapsedEdge(model, e, rep)) params[e] = {model.edges[e].t0, model.edges[e].t1};
   std::vector<EdgeDiscretization> out(ne);
   for (int e = 0; e < ne; ++e) {
     if (!used[e]) continue;

@@ -1,10 +1,13 @@
 // CoincidentEdges (surface/contour/CoincidentEdges.h): model vertices within their CAD
 // tolerance share a representative; edges joining the same represented vertices along the
-// same curve are twins; edges that only share their ends are not.
+// same curve are twins; edges that only share their ends are not. Below the small-feature
+// floor a face narrower than it collapses: its short edges to points, its long ones to twins.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
 
+#include "mesher/geometry/Circle3d.h"
 #include "mesher/geometry/Line3d.h"
 #include "mesher/surface/contour/CoincidentEdges.h"
 
@@ -82,6 +85,50 @@ TEST(CoincidentEdges, SameEndsDifferentCurvesAreNotTwins) {
   const std::vector<char> used(2, 1);
   const contour::EdgeTwins twins = contour::coincidentEdges(m, used, contour::coincidentVertices(m, used));
   EXPECT_EQ(twins.count, 0);
+}
+
+/// A face 2e-6 wide and 1 long (as KiCad's barrel jacks carry along an edge): vertices 0, 1
+/// on one side, 3, 2 on the other; edges 0: 0→1, 1: 1→3 (short), 2: 3→2, 3: 2→0 (short).
+Model stripModel() {
+  Model m;
+  m.vertices = {vertex(0, 0, 0), vertex(1, 0, 0), vertex(1, 2e-6, 0), vertex(0, 2e-6, 0)};
+  m.edges = {lineEdge(m, 0, 1), lineEdge(m, 1, 2), lineEdge(m, 2, 3), lineEdge(m, 3, 0)};
+  return m;
+}
+
+TEST(CoincidentEdges, AStripNarrowerThanTheFloorCollapses) {
+  const Model m = stripModel();
+  const std::vector<char> used(m.edges.size(), 1);
+  const std::vector<int> rep = contour::coincidentVertices(m, used, 1e-5);
+  EXPECT_EQ(rep, (std::vector<int>{0, 1, 1, 0}));
+  EXPECT_TRUE(contour::collapsedEdge(m, 1, rep));
+  EXPECT_TRUE(contour::collapsedEdge(m, 3, rep));
+  EXPECT_FALSE(contour::collapsedEdge(m, 0, rep));
+  const contour::EdgeTwins twins = contour::coincidentEdges(m, used, rep, 1e-5);
+  EXPECT_EQ(twins.count, 1);
+  EXPECT_EQ(twins.of[2], 0);
+  EXPECT_TRUE(twins.reversed[2]);
+  // without the floor (its CAD tolerances only) the strip stays
+  const std::vector<int> tight = contour::coincidentVertices(m, used);
+  EXPECT_EQ(tight, (std::vector<int>{0, 1, 2, 3}));
+  EXPECT_EQ(contour::coincidentEdges(m, used, tight).count, 0);
+}
+
+TEST(CoincidentEdges, ALongEdgeWhoseEndsAlmostMeetDoesNotCollapse) {
+  // a circle of radius 1 open by 1e-6 (its ends within the floor, its length 2π is not)
+  Model m;
+  const double gap = 1e-6, kPi = std::acos(-1.0);
+  m.vertices = {vertex(1, 0, 0), vertex(std::cos(2 * kPi - gap), std::sin(2 * kPi - gap), 0)};
+  ModelEdge arc;
+  arc.v0 = 0;
+  arc.v1 = 1;
+  arc.curve = std::make_shared<Circle3d>(Frame(), 1.0);
+  arc.t0 = 0;
+  arc.t1 = 2 * kPi - gap;
+  m.edges.push_back(arc);
+  const std::vector<int> rep = contour::coincidentVertices(m, {1}, 1e-5);
+  EXPECT_EQ(rep, (std::vector<int>{0, 1}));
+  EXPECT_FALSE(contour::collapsedEdge(m, 0, rep));
 }
 
 }  // namespace
