@@ -85,6 +85,9 @@ struct PrepareReport {
   /// Solids (1-based, as prepared) left out of the fragmenting because the fuse failed on
   /// them: meshed on their own, not conformal with the parts they touch.
   std::vector<int> unfusedSolids;
+  /// Volume the solids as read counted more than once because their own faces overlap (a
+  /// wire whose legs interpenetrate): the rebuild keeps it once (PrepareSelfIntersections).
+  double selfOverlapVolume = 0;
   std::vector<std::string> warnings;
 };
 

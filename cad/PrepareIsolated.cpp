@@ -11,7 +11,7 @@ namespace {
 // The report crosses the process boundary as text: numbers space-separated, strings
 // length-prefixed. Every field of PrepareReport must be here (CadModel.h says so); the size
 // check makes a new field a build error here instead of a field silently lost.
-static_assert(sizeof(PrepareReport) == 2 * sizeof(int) + sizeof(double) + 3 * sizeof(std::vector<int>),
+static_assert(sizeof(PrepareReport) == 2 * sizeof(int) + 2 * sizeof(double) + 3 * sizeof(std::vector<int>),
               "PrepareReport changed: add the new field to encode() and decode()");
 std::string encode(const PrepareReport& r) {
   std::ostringstream out;
@@ -22,6 +22,7 @@ std::string encode(const PrepareReport& r) {
         << ' ' << o.nameB.size() << ':' << o.nameB;
   out << ' ' << r.unfusedSolids.size();
   for (const int id : r.unfusedSolids) out << ' ' << id;
+  out << ' ' << r.selfOverlapVolume;
   out << ' ' << r.warnings.size();
   for (const std::string& w : r.warnings) out << ' ' << w.size() << ':' << w;
   return out.str();
@@ -48,6 +49,7 @@ PrepareReport decode(const std::string& text) {
   in >> n;
   r.unfusedSolids.resize(n);
   for (int& id : r.unfusedSolids) in >> id;
+  in >> r.selfOverlapVolume;
   in >> n;
   r.warnings.resize(n);
   for (std::string& w : r.warnings) readString(w);

@@ -1,9 +1,19 @@
 #include <BOPAlgo_CheckerSI.hxx>
 #include <BOPAlgo_MakerVolume.hxx>
 #include <BOPDS_DS.hxx>
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepBndLib.hxx>
+#include <BRepClass3d_SolidClassifier.hxx>
+#include <BRepGProp_Face.hxx>
+#include <BRepTools.hxx>
+#include <Bnd_Box.hxx>
+#include <IntCurvesFace_ShapeIntersector.hxx>
+#include <gp_Lin.hxx>
 #include <BRepBuilderAPI_MakeSolid.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <TopoDS_Shell.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
@@ -14,6 +24,7 @@
 #include <TopoDS_Solid.hxx>
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -85,10 +96,107 @@ TopoDS_Shape withoutFlatShells(const TopoDS_Shape& piece, double pieceVolume) {
   return solid;
 }
 
+/// Ray directions for the winding number: not along a coordinate axis or diagonal (CAD
+/// faces and edges are), and two of them, which must agree.
+constexpr double kRayDirections[2][3] = {{0.5734, 0.3917, 0.7196}, {-0.4421, 0.8139, 0.3770}};
+/// Inward step from a face of a piece to a point inside it, relative to the piece's box.
+constexpr double kInsideStepRel = 1e-4;
+
+/// A point strictly inside `piece`: a step inward from the middle of one of its faces,
+/// confirmed by the classifier; none when no face gives one.
+std::optional<gp_Pnt> pointInside(const TopoDS_Shape& piece) {
+  Bnd_Box box;
+  BRepBndLib::Add(piece, box);
+  if (box.IsVoid()) return std::nullopt;
+  const double step = kInsideStepRel * std::sqrt(box.SquareExtent());
+  BRepClass3d_SolidClassifier classifier(piece);
+  for (TopExp_Explorer x(piece, TopAbs_FACE); x.More(); x.Next()) {
+    const TopoDS_Face& f = TopoDS::Face(x.Current());
+    double u0, u1, v0, v1;
+    BRepTools::UVBounds(f, u0, u1, v0, v1);
+    for (const double w : {0.5, 0.37, 0.63}) {
+      BRepGProp_Face props(f);  // the normal follows the face's orientation: outward
+      gp_Pnt p;
+      gp_Vec n;
+      props.Normal(u0 + w * (u1 - u0), v0 + w * (v1 - v0), p, n);
+      if (n.Magnitude() <= 0) continue;
+      const gp_Pnt q = p.Translated(-step * n.Normalized());
+      classifier.Perform(q, step * 1e-3);
+      if (classifier.State() == TopAbs_IN) return q;
+    }
+  }
+  return std::nullopt;
+}
+
+/// How many times the faces of `solid` wind around `p`: the signed count of their crossings
+/// by a ray from p (+1 leaving through a face, −1 entering), along each of kRayDirections;
+/// none when the two rays disagree (a ray grazing an edge).
+std::optional<int> windingNumber(const TopoDS_Shape& solid, const gp_Pnt& p) {
+  std::optional<int> out;
+  for (const auto& d : kRayDirections) {
+    const gp_Dir dir(d[0], d[1], d[2]);
+    IntCurvesFace_ShapeIntersector hits;
+    hits.Load(solid, Precision::Confusion());
+    hits.Perform(gp_Lin(p, dir), 0.0, Precision::Infinite());
+    if (!hits.IsDone()) return std::nullopt;
+    int w = 0;
+    for (int i = 1; i <= hits.NbPnt(); ++i) {
+      if (hits.WParameter(i) <= 0) continue;
+      BRepGProp_Face props(hits.Face(i));
+      gp_Pnt q;
+      gp_Vec n;
+      props.Normal(hits.UParameter(i), hits.VParameter(i), q, n);
+      const double c = n.Dot(gp_Vec(dir));
+      if (c == 0) return std::nullopt;  // tangent: this ray tells nothing
+      w += c > 0 ? 1 : -1;
+    }
+    if (out && *out != w) return std::nullopt;
+    out = w;
+  }
+  return out;
+}
+
+/// The union of pieces that share faces: one solid bounded by the faces used by one piece
+/// only (those two pieces share are inside it); none when they do not close a shell.
+std::optional<TopoDS_Shape> unionOf(const std::vector<TopoDS_Shape>& pieces) {
+  BRep_Builder b;
+  TopoDS_Compound all;
+  b.MakeCompound(all);
+  for (const TopoDS_Shape& p : pieces) b.Add(all, p);
+  TopTools_IndexedDataMapOfShapeListOfShape faceSolids;
+  TopExp::MapShapesAndAncestors(all, TopAbs_FACE, TopAbs_SOLID, faceSolids);
+  TopoDS_Shell shell;
+  b.MakeShell(shell);
+  int faces = 0;
+  for (const TopoDS_Shape& p : pieces)
+    for (TopExp_Explorer x(p, TopAbs_FACE); x.More(); x.Next()) {
+      TopTools_IndexedMapOfShape owners;
+      for (const TopoDS_Shape& s : faceSolids.FindFromKey(x.Current())) owners.Add(s);
+      if (owners.Extent() != 1) continue;  // between two pieces: inside the union
+      b.Add(shell, x.Current());
+      ++faces;
+    }
+  if (faces == 0) return std::nullopt;
+  shell.Closed(BRep_Tool::IsClosed(shell));
+  if (!shell.Closed()) return std::nullopt;
+  TopoDS_Solid solid;
+  b.MakeSolid(solid);
+  b.Add(solid, shell);
+  if (!BRepCheck_Analyzer(solid).IsValid() || !(solidVolume(solid) > 0)) return std::nullopt;
+  return TopoDS_Shape(solid);
+}
+
 /// The solids with positive volume MakerVolume builds from the solid's faces (without
-/// their flat shells); empty when they do not add up to its volume or one of them is not
-/// manifold. `history`: what became of the faces.
-std::vector<TopoDS_Shape> rebuilt(const TopoDS_Shape& solid, Handle(BRepTools_History)& history) {
+/// their flat shells) that lie inside the solid's material; empty when one of them is not
+/// manifold or when they do not account for its volume: a solid whose faces overlap itself
+/// (a wire bent so tightly that its legs interpenetrate, KiCad's 1.8 mm test point) counts
+/// the overlap twice, so each piece counts its winding number times (windingNumber), and
+/// pieces the faces do not wind around (air enclosed by crossing faces) are not material.
+/// When a piece touches itself along an edge (the legs on either side of their overlap) the
+/// pieces are replaced by their union (unionOf), kept when manifold.
+/// `history`: what became of the faces; `counted` receives the volume the solid counted
+/// more than once (Σ (w − 1) V over the pieces).
+std::vector<TopoDS_Shape> rebuilt(const TopoDS_Shape& solid, Handle(BRepTools_History)& history, double& counted) {
   BOPAlgo_MakerVolume mv;
   TopTools_ListOfShape faces;
   for (TopExp_Explorer f(solid, TopAbs_FACE); f.More(); f.Next()) faces.Append(f.Current());
@@ -101,16 +209,27 @@ std::vector<TopoDS_Shape> rebuilt(const TopoDS_Shape& solid, Handle(BRepTools_Hi
   TopTools_IndexedMapOfShape out;
   TopExp::MapShapes(mv.Shape(), TopAbs_SOLID, out);
   std::vector<TopoDS_Shape> pieces;
-  double total = 0;
+  double total = 0, extra = 0;
+  bool manifold = true;
   for (int k = 1; k <= out.Extent(); ++k)
     if (const double v = solidVolume(out(k)); v > 0) {
       const TopoDS_Shape piece = withoutFlatShells(out(k), v);
-      if (nonManifold(piece)) return {};
+      manifold = manifold && !nonManifold(piece);
+      const std::optional<gp_Pnt> inside = pointInside(piece);
+      const std::optional<int> w = inside ? windingNumber(solid, *inside) : std::nullopt;
+      if (!w || *w < 0) return {};
+      if (*w == 0) continue;  // enclosed by the crossing faces, outside the material
       pieces.push_back(piece);
       total += v;
+      extra += (*w - 1) * v;
     }
   const double before = std::abs(solidVolume(solid));
-  if (pieces.empty() || std::abs(total - before) > kRebuildVolumeRel * before) return {};
+  if (pieces.empty() || std::abs(total + extra - before) > kRebuildVolumeRel * before) return {};
+  if (!manifold) {  // a piece touches itself (the legs on either side of their overlap): their union
+    const std::optional<TopoDS_Shape> one = unionOf(pieces);
+    if (!one || nonManifold(*one) || std::abs(solidVolume(*one) - total) > kRebuildVolumeRel * total) return {};
+    pieces = {*one};
+  }
   // the pieces must be as valid as the solid (KiCad battery holders: the pegs' tips meet
   // their cylinders at coincident but distinct vertices; MakerVolume dropped the tips and
   // left the cylinders' loops open by a period in (u, v), within the volume check above)
@@ -119,6 +238,7 @@ std::vector<TopoDS_Shape> rebuilt(const TopoDS_Shape& solid, Handle(BRepTools_Hi
   b.MakeCompound(all);
   for (const TopoDS_Shape& p : pieces) b.Add(all, p);
   if (!BRepCheck_Analyzer(all).IsValid() && BRepCheck_Analyzer(solid).IsValid()) return {};
+  counted = extra;
   return pieces;
 }
 
@@ -133,7 +253,9 @@ void rebuildSelfIntersecting(CadModel::Impl& impl, PrepareReport& report) {
   for (int i = 1; i <= solids.Extent(); ++i) {
     try {
       if (!selfInterfering(solids(i))) continue;
-      replacement[static_cast<std::size_t>(i)] = rebuilt(solids(i), history[static_cast<std::size_t>(i)]);
+      double counted = 0;
+      replacement[static_cast<std::size_t>(i)] = rebuilt(solids(i), history[static_cast<std::size_t>(i)], counted);
+      if (!replacement[static_cast<std::size_t>(i)].empty()) report.selfOverlapVolume += counted;
     } catch (const Standard_Failure&) {
       continue;  // left as it is
     }

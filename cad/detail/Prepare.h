@@ -28,8 +28,11 @@ int splitLoopsOfClosedEdges(const TopoDS_Shape& shape, ShapeBuild_ReShape& conte
 /// Solids whose faces cross one another (BOPAlgo_ArgumentAnalyzer's self-interference:
 /// BRepCheck calls them valid, the volume mesher finds their boundary crossing itself)
 /// rebuilt from their faces by BOPAlgo_MakerVolume, faces split where they cross; a solid
-/// is replaced only when the rebuilt pieces add up to its volume. Run at the end of
-/// fixShape. A warning names the solids rebuilt.
+/// is replaced only when the rebuilt pieces, each counted as often as the solid's faces wind
+/// around it, add up to its volume (a solid overlapping itself counts the overlap twice:
+/// kept once, its volume in PrepareReport::selfOverlapVolume). Pieces that touch themselves
+/// along an edge are replaced by their union. Run at the end of fixShape. A warning names
+/// the solids rebuilt.
 void rebuildSelfIntersecting(CadModel::Impl& impl, PrepareReport& report);
 
 /// The INTERNAL faces of each solid of a shape (faces inside its material: a crack, an

@@ -1,7 +1,16 @@
 // CadModel: reading, part names, preparation (conformal assemblies), topology.
 #include <gtest/gtest.h>
 
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepOffsetAPI_MakePipe.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <GC_MakeArcOfCircle.hxx>
+#include <Geom_BezierCurve.hxx>
+#include <TColgp_Array1OfPnt.hxx>
+#include <TopoDS.hxx>
+#include <gp_Circ.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <TopoDS_Compound.hxx>
@@ -198,4 +207,56 @@ TEST(CadModel, AFilmOverlapGoesToThePartItLeavesWithoutNarrowFaces) {
     EXPECT_NEAR(s.solidList[1].volume, film ? 3 - depth : 3, 1e-6) << depth;
     EXPECT_NEAR(s.volume, 203 - depth, 1e-6) << depth;
   }
+}
+
+namespace {
+/// A wire loop as KiCad models its test points: a circle of radius 0.25 swept up a leg at
+/// x = −0.235, out along a Bézier bend, over a half circle of radius 0.635 and down again
+/// to x = +0.235. The legs are 0.47 apart, less than the wire's diameter: they
+/// interpenetrate along their whole length (a lens 0.0107 in volume), so the solid counts
+/// that lens twice. Written as a BREP file.
+std::string overlappingLoop() {
+  const double x = 0.235, X = 0.635, r = 0.25, L = 3, H = 3.985;
+  const auto bezier = [](gp_Pnt a, gp_Pnt b, gp_Pnt c, gp_Pnt d) {
+    TColgp_Array1OfPnt p(1, 4);
+    p(1) = a, p(2) = b, p(3) = c, p(4) = d;
+    return BRepBuilderAPI_MakeEdge(new Geom_BezierCurve(p)).Edge();
+  };
+  BRepBuilderAPI_MakeWire spine;
+  spine.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(-x, 0, 0), gp_Pnt(-x, 0, L)).Edge());
+  spine.Add(bezier(gp_Pnt(-x, 0, L), gp_Pnt(-x, 0, L + 0.5), gp_Pnt(-X, 0, H - 0.5), gp_Pnt(-X, 0, H)));
+  spine.Add(BRepBuilderAPI_MakeEdge(GC_MakeArcOfCircle(gp_Pnt(-X, 0, H), gp_Pnt(0, 0, H + X), gp_Pnt(X, 0, H)).Value()).Edge());
+  spine.Add(bezier(gp_Pnt(X, 0, H), gp_Pnt(X, 0, H - 0.5), gp_Pnt(x, 0, L + 0.5), gp_Pnt(x, 0, L)));
+  spine.Add(BRepBuilderAPI_MakeEdge(gp_Pnt(x, 0, L), gp_Pnt(x, 0, 0)).Edge());
+  const gp_Circ section(gp_Ax2(gp_Pnt(-x, 0, 0), gp_Dir(0, 0, 1)), r);
+  const TopoDS_Face profile =
+      BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(section).Edge()).Wire()).Face();
+  BRepOffsetAPI_MakePipe pipe(spine.Wire(), profile);
+  pipe.Build();
+  const auto path = std::filesystem::temp_directory_path() / "anisomesh_overlapping_loop.brep";
+  BRepTools::Write(pipe.Shape(), path.string().c_str());
+  return path.string();
+}
+}  // namespace
+
+// A solid whose own faces overlap (PrepareSelfIntersections): rebuilt from its faces, each
+// piece counted as often as the faces wind around it. The lens between the legs (winding
+// number 2) is kept once; the pieces either side of it touch along two lines, so the solid
+// becomes their union, one manifold solid the mesher can recover. Before, its boundary mesh
+// crossed itself and the solid was lost (KiCad's 1.8 mm test point: −20 % volume).
+TEST(CadModel, ASolidOverlappingItselfIsRebuiltAsItsUnion) {
+  const std::string path = overlappingLoop();
+  CadModel m = CadModel::read(path);
+  const double asRead = m.summary().volume;
+  const PrepareReport r = m.prepare({});
+  std::filesystem::remove(path);
+  EXPECT_NEAR(asRead, 1.998193, 1e-5);
+  EXPECT_NEAR(r.selfOverlapVolume, 0.010667, 1e-5);
+  const ShapeSummary s = m.summary();
+  ASSERT_EQ(s.solids, 1);
+  EXPECT_NEAR(s.volume, asRead - r.selfOverlapVolume, 1e-5);
+  bool rebuilt = false;
+  for (const std::string& w : r.warnings) rebuilt = rebuilt || w.find("rebuilt from their faces") != std::string::npos;
+  EXPECT_TRUE(rebuilt);
+  for (const ModelIssue& issue : m.topology().check()) EXPECT_NE(issue.level, ModelIssue::Level::Unusable) << issue.message;
 }

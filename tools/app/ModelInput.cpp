@@ -70,8 +70,10 @@ ModelInput loadModel(const std::string& file, bool fragment, cad::OverlapPolicy 
                                " solid(s) the file declares could not be read as solids: their faces, if "
                                "any were read, are meshed as surfaces, with no tetrahedra inside",
                            "read"});
-  // the repairs must keep the solids' volume, less the overlaps merged (counted once)
-  const double volumeError = cad::preparedVolumeError(volumeRead, summary.volume, prep.overlaps);
+  // the repairs must keep the solids' volume, less the overlaps merged (counted once), and
+  // less what a solid overlapping itself counted twice
+  const double volumeError =
+      cad::preparedVolumeError(volumeRead - prep.selfOverlapVolume, summary.volume, prep.overlaps);
   if (std::abs(volumeError) > kPreparedVolumeRel)
     in.problems.push_back({EntityRef{EntityKind::Model, 0, ""}, Severity::Degraded, "volume-changed",
                            "preparing the model changed the solids' volume by " + formatted("%+.2f", 100 * volumeError) +
