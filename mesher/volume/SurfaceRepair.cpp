@@ -14,10 +14,10 @@ void SurfaceRepairStats::add(const SurfaceRepairStats& o) {
   facesChanged.insert(facesChanged.end(), o.facesChanged.begin(), o.facesChanged.end());
 }
 
-SurfaceRepairStats repairSurface(const Model& model, double tolerance, SurfaceMesh& mesh) {
+SurfaceRepairStats repairSurface(const Model& model, double tolerance, SurfaceMesh& mesh, int keepFrom) {
   SurfaceRepairStats r;
   if (!mesh.quads.empty() || !mesh.triangleMid.empty() || !mesh.quadMid.empty()) return r;
-  const SurfaceSliverStats s = mendSurfaceSlivers(mesh, tolerance, &model);
+  const SurfaceSliverStats s = mendSurfaceSlivers(mesh, tolerance, &model, keepFrom);
   r.nodesMerged = s.nodesMerged;
   r.capsFlipped = s.capsFlipped;
   r.facesChanged = s.facesChanged;
@@ -36,7 +36,7 @@ SurfaceRepairStats repairSurface(const Model& model, double tolerance, SurfaceMe
   // and caps again: mended once more, kept only when it leaves no more folds
   if (u.flips + u.regions > 0) {
     SurfaceMesh again = mesh;
-    const SurfaceSliverStats s2 = mendSurfaceSlivers(again, tolerance, &model);
+    const SurfaceSliverStats s2 = mendSurfaceSlivers(again, tolerance, &model, keepFrom);
     if (s2.nodesMerged + s2.capsFlipped > 0 && countFoldedEdges(again) <= u.foldedAfter) {
       mesh = std::move(again);
       r.nodesMerged += s2.nodesMerged;

@@ -26,7 +26,8 @@ struct SurfaceRepairStats {
 };
 
 /// Repairs `mesh` of `model` in place (see above); `tolerance` bounds how far the surface
-/// moves (the volume mesher's kSurfaceSliverTolerance times h_min).
-SurfaceRepairStats repairSurface(const Model& model, double tolerance, SurfaceMesh& mesh);
+/// moves (the volume mesher's kSurfaceSliverTolerance times h_min). Nodes from index
+/// `keepFrom` on (>= 0) are not merged away (mendSurfaceSlivers).
+SurfaceRepairStats repairSurface(const Model& model, double tolerance, SurfaceMesh& mesh, int keepFrom = -1);
 
 }  // namespace aniso

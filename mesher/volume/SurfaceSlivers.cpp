@@ -68,8 +68,8 @@ class SliverPass {
   // refused — so the result is the full pass's. Its adjacency holds the triangles it can
   // reach from those (the stars of their nodes).
   SliverPass(SurfaceMesh& m, double tolerance, const MidEdgeGeometry* geo, SurfaceSliverStats& stats,
-             const std::vector<std::uint8_t>* previous)
-      : m_(m), tol_(tolerance), geo_(geo), stats_(stats), dirty_(m.nodes.size(), 0) {
+             const std::vector<std::uint8_t>* previous, int keepFrom)
+      : m_(m), tol_(tolerance), geo_(geo), stats_(stats), keepFrom_(keepFrom), dirty_(m.nodes.size(), 0) {
     const int nt = static_cast<int>(m.triangles.size());
     std::vector<int> known;  // the triangles in the adjacency, ascending
     if (!previous) {
@@ -211,6 +211,8 @@ class SliverPass {
   double tol_;
   const MidEdgeGeometry* geo_;
   SurfaceSliverStats& stats_;
+  int keepFrom_;  ///< nodes from this index on are never removed by a merge
+  bool kept(int v) const { return keepFrom_ >= 0 && v >= keepFrom_; }
   std::vector<int> scan_;                ///< the triangles the pass looks at, ascending
   std::vector<std::uint64_t> edgeKeys_;  ///< sorted (edge key, triangle): the keys ...
   std::vector<int> edgeTris_;            ///< ... and the triangles
@@ -224,8 +226,8 @@ class SliverPass {
 // operation 1).
 bool SliverPass::merge(int a, int c) {
   if (rank(m_.nodeOn[c]) < rank(m_.nodeOn[a]) || (rank(m_.nodeOn[c]) == rank(m_.nodeOn[a]) && c < a)) std::swap(a, c);
-  if (collapse(a, c)) return true;
-  return rank(m_.nodeOn[c]) == rank(m_.nodeOn[a]) && collapse(c, a);
+  if (!kept(c) && collapse(a, c)) return true;
+  return rank(m_.nodeOn[c]) == rank(m_.nodeOn[a]) && !kept(a) && collapse(c, a);
 }
 
 // c moved onto a (rank(c) >= rank(a)), when legal (header, operation 1).
@@ -341,7 +343,7 @@ void SliverPass::compact() {
 
 }  // namespace
 
-SurfaceSliverStats mendSurfaceSlivers(SurfaceMesh& mesh, double tolerance, const Model* model) {
+SurfaceSliverStats mendSurfaceSlivers(SurfaceMesh& mesh, double tolerance, const Model* model, int keepFrom) {
   SurfaceSliverStats stats;
   if (!mesh.quads.empty() || !mesh.triangleMid.empty() || !(tolerance > 0)) return stats;
   // Nothing a pass would act on (no edge within the tolerance, no cap: the common case):
@@ -367,7 +369,7 @@ SurfaceSliverStats mendSurfaceSlivers(SurfaceMesh& mesh, double tolerance, const
   }
   std::vector<std::uint8_t> changed;
   for (int pass = 0; pass < kMaxSliverPasses; ++pass) {
-    SliverPass p(mesh, tolerance, geo ? &*geo : nullptr, stats, pass == 0 ? nullptr : &changed);
+    SliverPass p(mesh, tolerance, geo ? &*geo : nullptr, stats, pass == 0 ? nullptr : &changed, keepFrom);
     if (!p.run()) break;
     changed = p.changedNodes();
   }

@@ -71,8 +71,11 @@ struct SurfaceSliverStats {
 };
 
 /// `model` (optional) gives the CAD surfaces for the fidelity test of cap flips inside a face
-/// (left out when the mesh's nodes name entities the model lacks).
-SurfaceSliverStats mendSurfaceSlivers(SurfaceMesh& mesh, double tolerance, const Model* model = nullptr);
+/// (left out when the mesh's nodes name entities the model lacks). Nodes from index
+/// `keepFrom` on (when >= 0) are never removed by a merge: the boundary splits of the volume
+/// mesher's recovery, which a merge would undo, so that the same entity went missing again.
+SurfaceSliverStats mendSurfaceSlivers(SurfaceMesh& mesh, double tolerance, const Model* model = nullptr,
+                                      int keepFrom = -1);
 
 /// Number of caps (an angle above kCapAngleDeg) among the mesh's triangles.
 int countSurfaceCaps(const SurfaceMesh& mesh);

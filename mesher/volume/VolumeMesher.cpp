@@ -341,9 +341,9 @@ std::vector<char> solidsNearThin(const Model& model, const SurfaceMesh& surface,
 /// collinear rim nodes): the surface repair stage (SurfaceRepair.h) once more. Returns the
 /// faces whose triangles changed.
 std::vector<int> repairAfterSplit(const Model& model, const MeshOptions& options, SurfaceMesh& surface,
-                                  VolumeMeshResult& r) {
-  const SurfaceRepairStats s =
-      repairSurface(model, kSurfaceSliverTolerance * options.sizing.hminFor(model.diagonal()), surface);
+                                  int splitNodesFrom, VolumeMeshResult& r) {
+  const SurfaceRepairStats s = repairSurface(model, kSurfaceSliverTolerance * options.sizing.hminFor(model.diagonal()),
+                                             surface, splitNodesFrom);
   r.surfaceNodesMerged += s.nodesMerged;
   r.surfaceCapsFlipped += s.capsFlipped;
   r.foldsRepaired += s.foldsRepaired;
@@ -405,9 +405,11 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
   std::vector<int> todo(static_cast<std::size_t>(ns));
   for (int s = 0; s < ns; ++s) todo[s] = s;
   // A crack triangle with every node on the crack's front could not open: split first.
+  // the splits' nodes stay through the repairs after them (a merge would undo the split)
+  const int splitNodesFrom = static_cast<int>(surface.nodes.size());
   if (const auto open = crackEdgesToOpen(model, crackFaces(model, in.options.internalFaces), surface); !open.empty()) {
     splitSurfaceEdges(model, surface, open);
-    repairAfterSplit(model, in.options, surface, r);
+    repairAfterSplit(model, in.options, surface, splitNodesFrom, r);
   }
   std::size_t firstMissing = 0;
   for (int round = 0;; ++round) {  // bounded by maxSplitRounds
@@ -446,7 +448,7 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
     if (requests.empty() || round >= in.maxSplitRounds || requests.size() > 2 * firstMissing) break;
     std::vector<std::uint8_t> touched = facesUsingEdges(surface, requests, nf);
     const SplitStats split = splitSurfaceEdges(model, surface, requests);
-    for (const int f : repairAfterSplit(model, in.options, surface, r)) touched[f] = 1;
+    for (const int f : repairAfterSplit(model, in.options, surface, splitNodesFrom, r)) touched[f] = 1;
     if (split.edgesSplit == 0) break;
     ++r.splitRounds;
     r.boundarySplits += split.edgesSplit;
