@@ -40,6 +40,7 @@ nlohmann::ordered_json prepareJson(const cad::PrepareReport& r) {
   }
   j["overlaps"] = ov;
   j["unfused_solids"] = r.unfusedSolids;
+  j["self_overlap_volume"] = r.selfOverlapVolume;
   j["warnings"] = r.warnings;
   return j;
 }
