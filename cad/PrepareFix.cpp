@@ -3,12 +3,14 @@
 #include <ShapeFix_Shape.hxx>
 #include <ShapeFix_Shell.hxx>
 #include <ShapeFix_Solid.hxx>
+#include <ShapeFix_Wire.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 
 #include <cmath>
 
+#include "cad/FalsePole.h"
 #include "cad/detail/FaceTags.h"
 #include "cad/detail/Prepare.h"
 
@@ -36,17 +38,36 @@ double solidsVolume(const TopoDS_Shape& shape) {
 void fixShape(CadModel::Impl& impl, double diag, PrepareReport& report) {
   try {
     const InternalFaces internal = collectInternalFaces(impl.shape);
-    // wireRepairs false: ShapeFix_Wire is left out (the fallback below)
-    const auto runFixer = [&impl, diag](bool wireRepairs, int& split) {
+    // Wires::None: ShapeFix_Wire is left out (the volume fallback below); NoDegenerated: its
+    // edges are not turned into degenerated ones (the false-pole fallback)
+    enum class Wires { All, NoDegenerated, None };
+    const auto runFixer = [&impl, diag](Wires wires, int& split) {
       Handle(ShapeFix_Shape) f = new ShapeFix_Shape(impl.shape);
       f->SetMaxTolerance(1e-3 * diag);  // fixes may not open gaps larger than a small fraction of the model
-      if (!wireRepairs) f->FixSolidTool()->FixShellTool()->FixFaceTool()->FixWireMode() = 0;
+      if (wires == Wires::None) f->FixSolidTool()->FixShellTool()->FixFaceTool()->FixWireMode() = 0;
+      if (wires == Wires::NoDegenerated) f->FixSolidTool()->FixShellTool()->FixFaceTool()->FixWireTool()->FixDegeneratedMode() = 0;
       split = splitLoopsOfClosedEdges(impl.shape, *f->Context());
       f->Perform();
       return f;
     };
     int split = 0;
-    Handle(ShapeFix_Shape) fixer = runFixer(true, split);
+    Handle(ShapeFix_Shape) fixer = runFixer(Wires::All, split);
+    // A rim circle lying within its vertex's tolerance (inflated by the STEP translation's
+    // false poles) is turned into a degenerated edge by the wire fixing: a face whose rims
+    // are then all false poles covers its surface several times over (KiCad's CHK EI48
+    // transformer: the pins' fillets of revolution, 4π and 6π wide, meshed folded). Fixed
+    // again without that repair when it made such faces.
+    if (const int asRead = facesBoundedByFalsePoles(impl.shape);
+        !fixer->Shape().IsNull() && facesBoundedByFalsePoles(fixer->Shape()) > asRead) {
+      int again = 0;
+      Handle(ShapeFix_Shape) other = runFixer(Wires::NoDegenerated, again);
+      if (!other->Shape().IsNull() && facesBoundedByFalsePoles(other->Shape()) <= asRead) {
+        fixer = other;
+        split = again;
+        report.warnings.push_back("shape fixing left the rim circles that lie within their vertices' tolerance as "
+                                  "they are (turning them into poles would have folded their faces)");
+      }
+    }
     if (split > 0)
       report.warnings.push_back(std::to_string(split) +
                                 " face(s) had a boundary loop made of separate closed edges (no seam joining "
@@ -56,7 +77,7 @@ void fixShape(CadModel::Impl& impl, double diag, PrepareReport& report) {
     if (const double fixedVolume = fixer->Shape().IsNull() ? volumeBefore : solidsVolume(fixer->Shape());
         changesVolume(fixedVolume)) {
       const std::string changed = "from " + num(volumeBefore) + " to " + num(fixedVolume);
-      fixer = runFixer(false, split);
+      fixer = runFixer(Wires::None, split);
       if (fixer->Shape().IsNull() || changesVolume(solidsVolume(fixer->Shape()))) {
         report.warnings.push_back("shape fixing would change the solids' volume " + changed + "; the shape is kept as read");
         rebuildSelfIntersecting(impl, report);

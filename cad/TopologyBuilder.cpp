@@ -54,6 +54,7 @@
 #include <cmath>
 #include <memory>
 
+#include "cad/FalsePole.h"
 #include "cad/OcctCurve2d.h"
 #include "cad/OcctCurve3d.h"
 #include "cad/OcctSurface.h"
@@ -197,38 +198,6 @@ EdgeUse makeUse(const ShapeMaps& maps, const Model& model, const TopoDS_Edge& ed
     throw MeshingError(entityName("edge", use.edge) + " has no pcurve on " +
                        entityName("face", fi));
   return use;
-}
-
-/// A degenerated edge (one 3D point) whose pcurve crosses a part of the surface that is
-/// not that point is no pole: OCCT's STEP translation bridges (u, v) jumps of a periodic
-/// face with such edges (KiCad battery holders: the peg tips, surfaces of revolution that
-/// do not reach their axis, came with two, their loops 4π wide, and meshed folded over
-/// themselves). True when the surface at five points of the pcurve strays from the edge's
-/// vertex by more than kFalsePoleTolFactor times the edge's tolerance and by more than
-/// kFalsePoleRel of the face's size. (Not the vertex's tolerance: the translation grows it
-/// to cover the bridge, 0.07 and 0.8 on those tips of 0.4 radius.)
-constexpr double kFalsePoleTolFactor = 10;
-constexpr double kFalsePoleRel = 1e-3;
-
-bool falsePole(const TopoDS_Edge& edge, const TopoDS_Face& face) {
-  if (!BRep_Tool::Degenerated(edge)) return false;
-  double a = 0, b = 0;
-  const Handle(Geom2d_Curve) pc = BRep_Tool::CurveOnSurface(edge, face, a, b);
-  TopoDS_Vertex v0, v1;
-  TopExp::Vertices(edge, v0, v1);
-  if (pc.IsNull() || v0.IsNull()) return false;
-  Bnd_Box box;
-  BRepBndLib::Add(face, box);
-  const double size = box.IsVoid() ? 0 : std::sqrt(box.SquareExtent());
-  const double tol = std::max(kFalsePoleTolFactor * BRep_Tool::Tolerance(edge), kFalsePoleRel * size);
-  const gp_Pnt p = BRep_Tool::Pnt(v0);
-  const BRepAdaptor_Surface surface(face, false);  // the face's own location, no restriction
-  double stray = 0;
-  for (int k = 0; k <= 4; ++k) {
-    const gp_Pnt2d uv = pc->Value(a + 0.25 * k * (b - a));
-    stray = std::max(stray, surface.Value(uv.X(), uv.Y()).Distance(p));
-  }
-  return stray > tol;
 }
 
 /// The uses of `wire` in walking order (BRepTools_WireExplorer on the oriented face); the

@@ -24,6 +24,7 @@
 #include "mesher/volume/CrackSplit.h"
 #include "mesher/volume/SolidMeshCache.h"
 #include "mesher/volume/SolidTetMesh.h"
+#include "mesher/volume/SplitRounds.h"
 #include "mesher/volume/SplitSurfaceEdges.h"
 #include "mesher/volume/VolumeControlSpace.h"
 #include "mesher/volume/SurfaceRepair.h"
@@ -411,7 +412,7 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
     splitSurfaceEdges(model, surface, open);
     repairAfterSplit(model, in.options, surface, splitNodesFrom, r);
   }
-  std::size_t firstMissing = 0;
+  SplitRounds rounds(in.maxSplitRounds, in.maxStalledSplitRounds);
   for (int round = 0;; ++round) {  // bounded by maxSplitRounds
     checkCancel(in.options.cancel.get(), "volume meshing");
     const std::vector<std::vector<int>> faceTriangles = trianglesByFace(surface, nf);
@@ -442,10 +443,9 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
         if (n.size() == 2) requests.push_back({n[0], n[1]});
         if (n.size() == 3) requests.push_back(longestEdge(surface, {n[0], n[1], n[2]}));
       }
-    // Every round meshes the solids again: stop when splitting diverges (twice as many
-    // entities missing as at first), so a hopeless case does not run on.
-    if (round == 0) firstMissing = requests.size();
-    if (requests.empty() || round >= in.maxSplitRounds || requests.size() > 2 * firstMissing) break;
+    // Every round meshes the solids again: stop when splitting diverges or stalls, so a
+    // hopeless case does not run on (SplitRounds.h).
+    if (rounds.stop(round, requests.size())) break;
     std::vector<std::uint8_t> touched = facesUsingEdges(surface, requests, nf);
     const SplitStats split = splitSurfaceEdges(model, surface, requests);
     for (const int f : repairAfterSplit(model, in.options, surface, splitNodesFrom, r)) touched[f] = 1;

@@ -6,6 +6,14 @@
 #include <BRepBuilderAPI_MakeWire.hxx>
 #include <BRepOffsetAPI_MakePipe.hxx>
 #include <BRepPrimAPI_MakeBox.hxx>
+#include <BRepPrimAPI_MakeRevol.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomConvert.hxx>
+#include <Geom_BSplineCurve.hxx>
+#include <Geom_TrimmedCurve.hxx>
+#include <TopExp.hxx>
+#include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS_Vertex.hxx>
 #include <GC_MakeArcOfCircle.hxx>
 #include <Geom_BezierCurve.hxx>
 #include <TColgp_Array1OfPnt.hxx>
@@ -259,4 +267,64 @@ TEST(CadModel, ASolidOverlappingItselfIsRebuiltAsItsUnion) {
   for (const std::string& w : r.warnings) rebuilt = rebuilt || w.find("rebuilt from their faces") != std::string::npos;
   EXPECT_TRUE(rebuilt);
   for (const ModelIssue& issue : m.topology().check()) EXPECT_NE(issue.level, ModelIssue::Level::Unusable) << issue.message;
+}
+
+namespace {
+/// A pin of radius 0.22 with a filleted foot (a quarter circle of radius 0.24 out to radius
+/// 0.46), turned about z, the fillet a B-spline surface of revolution; every vertex off the
+/// axis with a tolerance of twice its radius, as KiCad's CHK EI48 transformer pins came out
+/// of the STEP translation (0.44 and 0.92). Written as a BREP file.
+std::string pinWithInflatedTolerances() {
+  const double r = 0.22, f = 0.24, h = 2;
+  const gp_Pnt a(r, 0, -h), b(r, 0, 0), c(r + f, 0, f), d(0, 0, f), e(0, 0, -h);
+  const Handle(Geom_TrimmedCurve) arc =
+      GC_MakeArcOfCircle(b, gp_Pnt(r + f - f * std::cos(M_PI / 4), 0, f * std::sin(M_PI / 4)), c).Value();
+  BRepBuilderAPI_MakeWire w;
+  w.Add(BRepBuilderAPI_MakeEdge(a, b).Edge());
+  w.Add(BRepBuilderAPI_MakeEdge(GeomConvert::CurveToBSplineCurve(arc)).Edge());
+  w.Add(BRepBuilderAPI_MakeEdge(c, d).Edge());
+  w.Add(BRepBuilderAPI_MakeEdge(d, e).Edge());
+  w.Add(BRepBuilderAPI_MakeEdge(e, a).Edge());
+  const TopoDS_Shape pin =
+      BRepPrimAPI_MakeRevol(BRepBuilderAPI_MakeFace(w.Wire(), true).Face(), gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(0, 0, 1))).Shape();
+  TopTools_IndexedMapOfShape vertices;
+  TopExp::MapShapes(pin, TopAbs_VERTEX, vertices);
+  BRep_Builder builder;
+  for (int i = 1; i <= vertices.Extent(); ++i) {
+    const TopoDS_Vertex& v = TopoDS::Vertex(vertices(i));
+    const gp_Pnt p = BRep_Tool::Pnt(v);
+    if (const double radius = std::hypot(p.X(), p.Y()); radius > 1e-9) builder.UpdateVertex(v, 2 * radius);
+  }
+  const auto path = std::filesystem::temp_directory_path() / "anisomesh_pin_inflated.brep";
+  BRepTools::Write(pin, path.string().c_str());
+  return path.string();
+}
+}  // namespace
+
+// OpenCASCADE's wire fixing turns the fillet's two rim circles, which lie within their
+// vertices' tolerance of the axis, into degenerated edges: the fillet becomes a face
+// bounded by false poles, which in the transformer's pins (whose loops the translation had
+// already doubled) covered the surface twice and meshed folded (over 300 s). The shape is
+// fixed again without that repair: the fillet keeps its circles.
+TEST(CadModel, RimCirclesWithinAnInflatedVertexToleranceStayCircles) {
+  const std::string path = pinWithInflatedTolerances();
+  CadModel m = CadModel::read(path);
+  const double asRead = m.summary().volume;
+  const PrepareReport r = m.prepare({});
+  std::filesystem::remove(path);
+  bool kept = false;
+  for (const std::string& w : r.warnings) kept = kept || w.find("rim circles") != std::string::npos;
+  EXPECT_TRUE(kept);
+  const Model model = m.topology();
+  int fillets = 0;
+  for (std::size_t f = 0; f < model.faces.size(); ++f) {
+    if (model.faces[f].cadArea < 0.7 || model.faces[f].cadArea > 0.75) continue;  // the fillet: 0.7277
+    ++fillets;
+    int circles = 0;
+    for (const Loop& loop : model.faces[f].loops)
+      for (const EdgeUse& u : loop.uses) circles += !model.edges[u.edge].degenerate && !model.edges[u.edge].seam;
+    EXPECT_EQ(circles, 2) << "face " << f + 1;
+  }
+  EXPECT_EQ(fillets, 1);
+  EXPECT_NEAR(m.summary().volume, asRead, 1e-6 * asRead);
 }
