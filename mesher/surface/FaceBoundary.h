@@ -2,6 +2,7 @@
 // The boundary of one face in its parametric plane, as the contour discretization
 // (thesis alg. 4.1) hands it to the face mesher, and the face mesher's result.
 #include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,9 @@ namespace aniso {
 struct BoundaryNode {
   Vec2 uv;
   int node = -1;  ///< global SurfaceMesh node
+  /// The node's 3D position where it is not p(uv): the copies of a vertex along a gap of the
+  /// loop bridged as a pole (contour/FaceLoops.cpp); NaN elsewhere.
+  Vec3 at = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
 };
 
 /// Closed loops of boundary nodes in (u, v), the first node not repeated at the end.

@@ -75,6 +75,16 @@ void runPipeline(const face::FlatBoundary& flat, const ControlSpace2d& cs, const
   ro.cancel = options.cancel;
   const face::SurfaceLift lift(options.surface);
   ro.lift = &lift;
+  // a bridged gap's copies of a vertex are that vertex in 3D (FaceBoundary.h): lifted there,
+  // with no normal (as a pole's), so that the fold guard sees the fan the assembly will make
+  if (lift.active())
+    for (std::size_t k = 0; k < flat.size(); ++k)
+      if (k < flat.at.size() && flat.at[k].allFinite() && bt.vertexOf[k].valid()) {
+        face::LiftedPoint l = lift.lift(flat.uv[k]);
+        l.p = flat.at[k];
+        l.n = Vec3::Zero();
+        lift.remember(bt.vertexOf[k], l);
+      }
   const face::RefineStats rs = face::refineFace(tri, cs, ro);
   res.stats.insertedInner = static_cast<int>(rs.inserted);
   res.stats.cancelledInsertions = static_cast<int>(rs.cancelled);

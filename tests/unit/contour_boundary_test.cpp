@@ -4,6 +4,7 @@
 // parameterized like their 3D curve, open loops rejected naming the face.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "contour_test_models.h"
@@ -276,9 +277,12 @@ TEST(ContourBoundary, ShortEdgeDroppedUnderAVertexToleranceIsBridgedAsAPole) {
   int copies = 0;
   for (std::size_t i = 0; i < loop.size(); ++i) {
     copies += loop[i].node == vc;
+    // the copies inside the bridge carry the vertex's own position (FaceBoundary.h)
+    if (loop[i].at.allFinite()) EXPECT_EQ(loop[i].at, b.m.vertices[vc].p) << "node " << i;
     EXPECT_LT((loop[(i + 1) % loop.size()].uv - loop[i].uv).norm(), 0.2) << "step " << i;
   }
   EXPECT_GE(copies, 4);  // the cut (0.42 long) at the spacing of its neighbours (0.1)
+  EXPECT_GE(std::count_if(loop.begin(), loop.end(), [](const BoundaryNode& n) { return n.at.allFinite(); }), copies - 1);
   // With the vertex's own tolerance the cut is a gap: refused, naming the face.
   b.m.vertices[vc].tolerance = 1e-7;
   const Boundaries tight(b.m, 0.1);

@@ -186,8 +186,9 @@ std::vector<BoundaryNode> chainLoop(const Model& model, int face, std::size_t l,
     const Vec2 before = out.empty() ? end : out.back().uv;
     const double spacing = 0.5 * ((end - before).norm() + (next - start).norm());
     const int copies = std::clamp(static_cast<int>(std::ceil(gap / std::max(spacing, 1e-300))), 1, kMaxBridgeCopies);
+    const Vec3& at = mesh.nodes[static_cast<std::size_t>(startNode)];
     for (int i = 0; i < copies; ++i)
-      out.push_back({end + (start - end) * (static_cast<double>(i) / copies), startNode});
+      out.push_back({end + (start - end) * (static_cast<double>(i) / copies), startNode, at});
   };
   for (std::size_t k = 0; k < loop.uses.size(); ++k) {
     UseNodes un = useNodes(model, face, l, loop.uses[k], edges, mesh);

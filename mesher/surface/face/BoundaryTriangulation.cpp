@@ -43,6 +43,7 @@ FlatBoundary flattenBoundary(const FaceBoundary& boundary) {
                            std::to_string(loop[i].node) + " has a non-finite (u, v)");
       f.uv.push_back(loop[i].uv);
       f.node.push_back(loop[i].node);
+      f.at.push_back(loop[i].at);
       f.next.push_back(i + 1 < loop.size() ? static_cast<std::uint32_t>(f.uv.size()) : begin);
     }
   }

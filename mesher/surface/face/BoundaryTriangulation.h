@@ -29,6 +29,7 @@ namespace aniso::face {
 struct FlatBoundary {
   std::vector<Vec2> uv;
   std::vector<int> node;                   ///< global node of each boundary vertex
+  std::vector<Vec3> at;                    ///< BoundaryNode::at of each (NaN: p(uv))
   std::vector<std::uint32_t> loopBegin;    ///< loop l is [loopBegin[l], loopBegin[l+1])
   std::vector<std::uint32_t> next;         ///< the following node in the same loop
 
