@@ -1,7 +1,6 @@
 #include <BOPAlgo_CheckerSI.hxx>
 #include <BOPAlgo_MakerVolume.hxx>
 #include <BOPDS_DS.hxx>
-#include <BRepAdaptor_Surface.hxx>
 #include <BRepBndLib.hxx>
 #include <BRepClass3d_SolidClassifier.hxx>
 #include <BRepGProp_Face.hxx>
@@ -187,11 +186,12 @@ std::optional<TopoDS_Shape> unionOf(const std::vector<TopoDS_Shape>& pieces) {
 }
 
 /// The solids with positive volume MakerVolume builds from the solid's faces (without
-/// their flat shells) that lie inside the solid's material; empty when one of them is not
-/// manifold or when they do not account for its volume: a solid whose faces overlap itself
-/// (a wire bent so tightly that its legs interpenetrate, KiCad's 1.8 mm test point) counts
-/// the overlap twice, so each piece counts its winding number times (windingNumber), and
-/// pieces the faces do not wind around (air enclosed by crossing faces) are not material.
+/// their flat shells) that lie inside the solid's material; empty when they do not account
+/// for its volume, or one is not manifold and neither is their union. A solid whose faces
+/// overlap itself (a wire bent so tightly that its legs interpenetrate, KiCad's 1.8 mm test
+/// point) counts the overlap twice, so each piece counts its winding number times
+/// (windingNumber), and pieces the faces do not wind around (air enclosed by crossing faces)
+/// are not material.
 /// When a piece touches itself along an edge (the legs on either side of their overlap) the
 /// pieces are replaced by their union (unionOf), kept when manifold.
 /// `history`: what became of the faces; `counted` receives the volume the solid counted

@@ -20,8 +20,8 @@
 // is then a pole of the face's boundary, the vertex node repeated along it at the spacing
 // of the neighbouring boundary nodes, as on a degenerate edge. A junction whose ends only
 // are one point in 3D is closed at its midpoint up to kLoopGapEndsWithinTolerance of the
-// extent. Any other junction is an error. Copies of one node that differ by round-off only (a hole touching the outer loop
-// at a vertex) are given one (u, v).
+// extent. Any other junction is an error. Copies of one node that differ by round-off only
+// (a hole touching the outer loop at a vertex) are given one (u, v).
 #include <algorithm>
 #include <array>
 #include <cmath>
