@@ -57,8 +57,10 @@ void fixShape(CadModel::Impl& impl, double diag, PrepareReport& report) {
     // are then all false poles covers its surface several times over (KiCad's CHK EI48
     // transformer: the pins' fillets of revolution, 4π and 6π wide, meshed folded). Fixed
     // again without that repair when it made such faces.
-    if (const int asRead = facesBoundedByFalsePoles(impl.shape);
-        !fixer->Shape().IsNull() && facesBoundedByFalsePoles(fixer->Shape()) > asRead) {
+    // (the shape as read is counted only when the fixed one has such faces: the common case
+    // costs one pass over the faces)
+    const int fixedCount = fixer->Shape().IsNull() ? 0 : facesBoundedByFalsePoles(fixer->Shape());
+    if (const int asRead = fixedCount > 0 ? facesBoundedByFalsePoles(impl.shape) : 0; fixedCount > asRead) {
       int again = 0;
       Handle(ShapeFix_Shape) other = runFixer(Wires::NoDegenerated, again);
       if (!other->Shape().IsNull() && facesBoundedByFalsePoles(other->Shape()) <= asRead) {

@@ -113,8 +113,8 @@ std::optional<gp_Pnt> pointInside(const TopoDS_Shape& piece) {
     const TopoDS_Face& f = TopoDS::Face(x.Current());
     double u0, u1, v0, v1;
     BRepTools::UVBounds(f, u0, u1, v0, v1);
+    const BRepGProp_Face props(f);  // the normal follows the face's orientation: outward
     for (const double w : {0.5, 0.37, 0.63}) {
-      BRepGProp_Face props(f);  // the normal follows the face's orientation: outward
       gp_Pnt p;
       gp_Vec n;
       props.Normal(u0 + w * (u1 - u0), v0 + w * (v1 - v0), p, n);

@@ -79,12 +79,8 @@ void runPipeline(const face::FlatBoundary& flat, const ControlSpace2d& cs, const
   // with no normal (as a pole's), so that the fold guard sees the fan the assembly will make
   if (lift.active())
     for (std::size_t k = 0; k < flat.size(); ++k)
-      if (k < flat.at.size() && flat.at[k].allFinite() && bt.vertexOf[k].valid()) {
-        face::LiftedPoint l = lift.lift(flat.uv[k]);
-        l.p = flat.at[k];
-        l.n = Vec3::Zero();
-        lift.remember(bt.vertexOf[k], l);
-      }
+      if (flat.at[k].allFinite() && bt.vertexOf[k].valid())
+        lift.remember(bt.vertexOf[k], face::LiftedPoint{flat.uv[k], flat.at[k], Vec3::Zero()});
   const face::RefineStats rs = face::refineFace(tri, cs, ro);
   res.stats.insertedInner = static_cast<int>(rs.inserted);
   res.stats.cancelledInsertions = static_cast<int>(rs.cancelled);

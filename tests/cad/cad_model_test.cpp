@@ -36,6 +36,20 @@ using namespace aniso::cad;
 namespace {
 const std::string kModels = std::string(ANISOMESH_SOURCE_DIR) + "/models/";
 const std::string kShared = std::string(ANISOMESH_SHARED_DIR) + "/models/";
+
+/// `shape` written as the BREP file `name` in the temporary folder; its path.
+std::string writeTempBrep(const TopoDS_Shape& shape, const std::string& name) {
+  const auto path = std::filesystem::temp_directory_path() / name;
+  BRepTools::Write(shape, path.string().c_str());
+  return path.string();
+}
+
+/// A warning of `r` contains `words`.
+bool warned(const PrepareReport& r, const std::string& words) {
+  for (const std::string& w : r.warnings)
+    if (w.find(words) != std::string::npos) return true;
+  return false;
+}
 }  // namespace
 
 TEST(CadModel, ReadsStepWithPartName) {
@@ -190,9 +204,7 @@ std::string pinOnPlate(double depth) {
   b.MakeCompound(c);
   b.Add(c, BRepPrimAPI_MakeBox(gp_Pnt(0, 0, 0), 10, 10, 2).Shape());
   b.Add(c, BRepPrimAPI_MakeBox(gp_Pnt(4, 4, 2 - depth), 1, 1, 3).Shape());
-  const auto path = std::filesystem::temp_directory_path() / ("anisomesh_pin_" + std::to_string(depth) + ".brep");
-  BRepTools::Write(c, path.string().c_str());
-  return path.string();
+  return writeTempBrep(c, "anisomesh_pin_" + std::to_string(depth) + ".brep");
 }
 }  // namespace
 
@@ -241,9 +253,7 @@ std::string overlappingLoop() {
       BRepBuilderAPI_MakeFace(BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(section).Edge()).Wire()).Face();
   BRepOffsetAPI_MakePipe pipe(spine.Wire(), profile);
   pipe.Build();
-  const auto path = std::filesystem::temp_directory_path() / "anisomesh_overlapping_loop.brep";
-  BRepTools::Write(pipe.Shape(), path.string().c_str());
-  return path.string();
+  return writeTempBrep(pipe.Shape(), "anisomesh_overlapping_loop.brep");
 }
 }  // namespace
 
@@ -263,9 +273,7 @@ TEST(CadModel, ASolidOverlappingItselfIsRebuiltAsItsUnion) {
   const ShapeSummary s = m.summary();
   ASSERT_EQ(s.solids, 1);
   EXPECT_NEAR(s.volume, asRead - r.selfOverlapVolume, 1e-5);
-  bool rebuilt = false;
-  for (const std::string& w : r.warnings) rebuilt = rebuilt || w.find("rebuilt from their faces") != std::string::npos;
-  EXPECT_TRUE(rebuilt);
+  EXPECT_TRUE(warned(r, "rebuilt from their faces"));
   for (const ModelIssue& issue : m.topology().check()) EXPECT_NE(issue.level, ModelIssue::Level::Unusable) << issue.message;
 }
 
@@ -295,9 +303,7 @@ std::string pinWithInflatedTolerances() {
     const gp_Pnt p = BRep_Tool::Pnt(v);
     if (const double radius = std::hypot(p.X(), p.Y()); radius > 1e-9) builder.UpdateVertex(v, 2 * radius);
   }
-  const auto path = std::filesystem::temp_directory_path() / "anisomesh_pin_inflated.brep";
-  BRepTools::Write(pin, path.string().c_str());
-  return path.string();
+  return writeTempBrep(pin, "anisomesh_pin_inflated.brep");
 }
 }  // namespace
 
@@ -312,9 +318,7 @@ TEST(CadModel, RimCirclesWithinAnInflatedVertexToleranceStayCircles) {
   const double asRead = m.summary().volume;
   const PrepareReport r = m.prepare({});
   std::filesystem::remove(path);
-  bool kept = false;
-  for (const std::string& w : r.warnings) kept = kept || w.find("rim circles") != std::string::npos;
-  EXPECT_TRUE(kept);
+  EXPECT_TRUE(warned(r, "rim circles"));
   const Model model = m.topology();
   int fillets = 0;
   for (std::size_t f = 0; f < model.faces.size(); ++f) {

@@ -175,8 +175,8 @@ std::vector<BoundaryNode> chainLoop(const Model& model, int face, std::size_t l,
     const double tol = kMissFactor * std::max({ea.tolerance, eb.tolerance, f.tolerance, vertexTol}) +
                        kMissRelative * model.diagonal();
     const double gap = (start - end).norm();
-    const bool bridged = !(gap <= kLoopGapRatio * extent) &&
-                         bridgeWithin(*f.surface, end, start, mesh.nodes[static_cast<std::size_t>(startNode)], tol);
+    const Vec3& vertex = mesh.nodes[static_cast<std::size_t>(startNode)];
+    const bool bridged = !(gap <= kLoopGapRatio * extent) && bridgeWithin(*f.surface, end, start, vertex, tol);
     const bool endsClosed = (f.surface->point(start) - f.surface->point(end)).norm() <= tol;
     junctions.push_back({gap, endEdge, startEdge, bridged, endsClosed});
     if (!bridged) {
@@ -186,9 +186,8 @@ std::vector<BoundaryNode> chainLoop(const Model& model, int face, std::size_t l,
     const Vec2 before = out.empty() ? end : out.back().uv;
     const double spacing = 0.5 * ((end - before).norm() + (next - start).norm());
     const int copies = std::clamp(static_cast<int>(std::ceil(gap / std::max(spacing, 1e-300))), 1, kMaxBridgeCopies);
-    const Vec3& at = mesh.nodes[static_cast<std::size_t>(startNode)];
     for (int i = 0; i < copies; ++i)
-      out.push_back({end + (start - end) * (static_cast<double>(i) / copies), startNode, at});
+      out.push_back({end + (start - end) * (static_cast<double>(i) / copies), startNode, vertex});
   };
   for (std::size_t k = 0; k < loop.uses.size(); ++k) {
     UseNodes un = useNodes(model, face, l, loop.uses[k], edges, mesh);
