@@ -33,7 +33,7 @@ verdict=$(/usr/bin/python3 - "$tmp/p.json" <<'PY'
 import json, sys
 r = json.load(open(sys.argv[1]))
 solids = {s["solid"]: s for s in r["solids"]}
-rebuilt = any("crossing one another" in w for w in r["model"]["warnings"])
+rebuilt = any("rebuilt from their faces" in w for w in r["model"]["warnings"])
 ok = r["status"] == "ok" and len(solids) == 7 and all(s["status"] == "ok" for s in solids.values())
 ok = ok and rebuilt and abs(solids[1]["volume"] - 109.684) < 0.01 * 109.684
 print("ok" if ok else f"bad: status {r['status']}, rebuilt {rebuilt}, solids {[(k, s['status'], s['volume']) for k, s in solids.items()]}")
