@@ -9,7 +9,29 @@
 #include <TopTools_IndexedDataMapOfShapeListOfShape.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 
+#include <cmath>
+
 namespace aniso::cad::detail {
+
+namespace {
+/// accurateVolume's relative error bound. At 1e-5: 1.4 s for the 35 solids of
+/// assembly_workbench (the fixed-order integral 0.2 s).
+constexpr double kVolumeIntegralRel = 1e-5;
+}  // namespace
+
+double accurateVolume(const TopoDS_Shape& solid) {
+  try {
+    GProp_GProps fixed, adaptive;
+    BRepGProp::VolumeProperties(solid, fixed);
+    BRepGProp::VolumeProperties(solid, adaptive, kVolumeIntegralRel);
+    // within the adaptive integral's bound the fixed-order one is kept: exact to rounding
+    // on planes, cylinders and the like, where the adaptive one is only within its bound
+    const double a = adaptive.Mass();
+    return std::abs(fixed.Mass() - a) <= kVolumeIntegralRel * std::abs(a) ? fixed.Mass() : a;
+  } catch (const Standard_Failure&) {
+    return 0;
+  }
+}
 
 Box3 exactBoundingBox(const TopoDS_Shape& shape) {
   Box3 box;
@@ -45,14 +67,7 @@ ShapeSummary summarize(const CadModel::Impl& impl) {
   s.edges = edges.Extent();
   s.vertices = vertices.Extent();
   for (int i = 1; i <= solids.Extent(); ++i) {
-    GProp_GProps g;
-    double v = 0;
-    try {
-      BRepGProp::VolumeProperties(solids(i), g);
-      v = g.Mass();
-    } catch (const Standard_Failure&) {
-      v = 0;
-    }
+    const double v = accurateVolume(solids(i));
     s.volume += v;
     s.solidList.push_back({i, impl.solidName(solids(i), i), v, impl.solidColor(solids(i))});
   }

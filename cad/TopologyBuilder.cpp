@@ -58,6 +58,7 @@
 #include "cad/OcctCurve2d.h"
 #include "cad/OcctCurve3d.h"
 #include "cad/OcctSurface.h"
+#include "cad/detail/ShapeSummary.h"
 #include "cad/detail/SheetShell.h"
 #include "mesher/model/ChainLoop.h"
 #include "mesher/core/Error.h"
@@ -368,7 +369,7 @@ void buildSolid(const ShapeMaps& maps, int si, Model& model,
     }
   }
   ms.outerShell = indexIn(maps.shells, outer, "shell");
-  ms.cadVolume = measure([&](GProp_GProps& g) { BRepGProp::VolumeProperties(solid, g); });
+  ms.cadVolume = std::max(0.0, detail::accurateVolume(solid));
   for (const TopoDS_Shape& s : shells) {
     // Faces met INTERNAL lie inside the material. A shell made only of them encloses no
     // volume (OCCT's way of keeping a face inside a solid, e.g. after a general fuse of

@@ -100,7 +100,7 @@ struct ModelSolid {
   int outerShell = -1;
   std::vector<int> voidShells; ///< inner shells bounding cavities
   std::vector<EmbeddedFace> embedded;  ///< faces inside the material, each once
-  double cadVolume = 0;        ///< the CAD kernel's volume of the solid; 0 when not known
+  double cadVolume = 0;        ///< the CAD kernel's volume of the solid (adaptive integral); 0 when not known
 };
 
 /// One finding of Model::check(), on the entity (kind, 0-based index) it concerns.
