@@ -194,7 +194,9 @@ TEST(CadModel, BrepRoundTrip) {
 // without naming one, and where it runs it leaves faces the face mesher cannot close. The
 // pairs that fail name the culprits, the mesher's own loop rule names the solids the fuse
 // broke: the rest is fused (shared faces), the others are reported and meshed on their own
-// (11 at the strict fuzzy value, 6 at the model's own tolerance, which is kept).
+// (11 at the strict fuzzy value, then 6 at the model's own tolerance; 4 since a solid's
+// volume change is excused by the assembly's share only up to 2 % of itself). The solids
+// whose volume the fuse changed within that are named (7, up to 0.14 %).
 TEST(CadModel, AFuseThatFailsAsAWholeRunsWithoutTheSolidsItBreaks) {
   const std::string path = std::string(ANISOMESH_SHARED_DIR) + "/assemblies/Ag9900M_MT.stp";
   if (!std::filesystem::exists(path)) GTEST_SKIP() << path << " not found";
@@ -202,10 +204,9 @@ TEST(CadModel, AFuseThatFailsAsAWholeRunsWithoutTheSolidsItBreaks) {
   const PrepareReport r = m.prepare({});
   EXPECT_GT(r.sharedFaces, 0);
   EXPECT_FALSE(r.unfusedSolids.empty());
-  EXPECT_LT(r.unfusedSolids.size(), 11u);
-  bool named = false;
-  for (const std::string& w : r.warnings) named = named || w.find("could not be fragmented with the others") != std::string::npos;
-  EXPECT_TRUE(named);
+  EXPECT_LE(r.unfusedSolids.size(), 4u);
+  EXPECT_TRUE(warned(r, "could not be fragmented with the others"));
+  EXPECT_TRUE(warned(r, "changed volume in the fuse by up to"));
 }
 
 namespace {
@@ -292,9 +293,9 @@ TEST(CadModel, ASolidOverlappingItselfIsRebuiltAsItsUnion) {
 namespace {
 /// A pin of radius 0.22 with a filleted foot (a quarter circle of radius 0.24 out to radius
 /// 0.46), turned about z, the fillet a B-spline surface of revolution; every vertex off the
-/// axis with a tolerance of twice its radius, as KiCad's CHK EI48 transformer pins came out
-/// of the STEP translation (0.44 and 0.92). Written as a BREP file.
-std::string pinWithInflatedTolerances() {
+/// axis with a tolerance of `inflation` times its radius, as KiCad's CHK EI48 transformer
+/// pins came out of the STEP translation (0.44 and 0.92: inflation 2).
+TopoDS_Shape pinWithInflatedTolerances(double inflation) {
   const double r = 0.22, f = 0.24, h = 2;
   const gp_Pnt a(r, 0, -h), b(r, 0, 0), c(r + f, 0, f), d(0, 0, f), e(0, 0, -h);
   const Handle(Geom_TrimmedCurve) arc =
@@ -313,9 +314,9 @@ std::string pinWithInflatedTolerances() {
   for (int i = 1; i <= vertices.Extent(); ++i) {
     const TopoDS_Vertex& v = TopoDS::Vertex(vertices(i));
     const gp_Pnt p = BRep_Tool::Pnt(v);
-    if (const double radius = std::hypot(p.X(), p.Y()); radius > 1e-9) builder.UpdateVertex(v, 2 * radius);
+    if (const double radius = std::hypot(p.X(), p.Y()); radius > 1e-9) builder.UpdateVertex(v, inflation * radius);
   }
-  return writeTempBrep(pin, "anisomesh_pin_inflated.brep");
+  return pin;
 }
 }  // namespace
 
@@ -325,7 +326,7 @@ std::string pinWithInflatedTolerances() {
 // already doubled) covered the surface twice and meshed folded (over 300 s). The shape is
 // fixed again without that repair: the fillet keeps its circles.
 TEST(CadModel, RimCirclesWithinAnInflatedVertexToleranceStayCircles) {
-  const std::string path = pinWithInflatedTolerances();
+  const std::string path = writeTempBrep(pinWithInflatedTolerances(2), "anisomesh_pin_inflated.brep");
   CadModel m = CadModel::read(path);
   const double asRead = m.summary().volume;
   const PrepareReport r = m.prepare({});
@@ -343,4 +344,32 @@ TEST(CadModel, RimCirclesWithinAnInflatedVertexToleranceStayCircles) {
   }
   EXPECT_EQ(fillets, 1);
   EXPECT_NEAR(m.summary().volume, asRead, 1e-6 * asRead);
+}
+
+// The pin above with tolerances of 4 times its radius (1.84 at the fillet's rim), through a
+// 4 × 4 × 1 plate: OpenCASCADE's fuse takes what lies in those tolerance balls for
+// coincident and the pin came out of it with 0.159 of its 0.362, at every fuzzy value (KiCad's
+// Breve TEZ transformer: 9 of its 13 pins lost 85 %). With the solids' tolerances reset to
+// what their geometry needs the fuse keeps the pin whole, shares its faces with the plate
+// and the common region (0.152) goes to the pin. Shape fixing is off: here it would mend
+// the pin before the fuse, which the transformers' pins it did not.
+TEST(CadModel, InflatedTolerancesAreResetWhenTheFuseFailsWithThem) {
+  BRep_Builder b;
+  TopoDS_Compound c;
+  b.MakeCompound(c);
+  b.Add(c, pinWithInflatedTolerances(4));
+  b.Add(c, BRepPrimAPI_MakeBox(gp_Pnt(-2, -2, -1.5), 4, 4, 1).Shape());
+  const std::string path = writeTempBrep(c, "anisomesh_pin_through_plate.brep");
+  CadModel m = CadModel::read(path);
+  PrepareOptions options;
+  options.fix = false;
+  const PrepareReport r = m.prepare(options);
+  std::filesystem::remove(path);
+  EXPECT_TRUE(warned(r, "reset to what their geometry needs"));
+  EXPECT_TRUE(r.unfusedSolids.empty());
+  EXPECT_GT(r.sharedFaces, 0);
+  const ShapeSummary s = m.summary();
+  ASSERT_EQ(s.solids, 2);
+  EXPECT_NEAR(s.solidList[0].volume, 0.361849, 1e-5);  // the pin, whole, with the common region
+  EXPECT_NEAR(s.solidList[1].volume, 16 - 0.152053, 1e-5);
 }
