@@ -160,8 +160,8 @@ Fuse runFuse(Arguments& args, double fuzzy, const std::vector<char>& excluded) {
       const double own = std::abs(args.volume[i]);
       const double slack =
           kImageVolumeRel * own + std::min(fuzzy * args.area[i] + kAssemblyVolumeRel * args.total, kImageSlackCapRel * own);
-      if (const double change = std::abs(v - args.volume[i]) / own; own > 0 && change > kImageVolumeRel)
-        f.changed.push_back({i, change});
+      if (own > 0 && std::abs(v - args.volume[i]) > kImageVolumeRel * own)
+        f.changed.push_back({i, std::abs(v - args.volume[i]) / own});
       if (std::abs(v - args.volume[i]) > slack) {
         f.failure = "solid " + std::to_string(i) + " became volume " + num(v) + " instead of " + num(args.volume[i]);
         f.failedSolid = i;

@@ -27,15 +27,14 @@ int splitLoopsOfClosedEdges(const TopoDS_Shape& shape, ShapeBuild_ReShape& conte
 
 /// Solids whose faces cross or touch one another (BOPAlgo_ArgumentAnalyzer's
 /// self-interference: BRepCheck calls them valid, the volume mesher finds their boundary
-/// crossing itself) rebuilt from their faces by BOPAlgo_MakerVolume, faces split where
-/// they meet; a solid
-/// is replaced only when the rebuilt pieces, each counted as often as the solid's faces wind
-/// around it, add up to its volume (a solid overlapping itself counts the overlap twice:
-/// kept once, its volume in PrepareReport::selfOverlapVolume). Pieces that touch themselves
-/// along an edge are replaced by their union; a solid that only touched itself comes back
-/// as one piece of the same volume, the edge it touched itself along now shared by the
-/// face it lay on. Run at the end of fixShape. A warning names
-/// the solids rebuilt.
+/// crossing itself) rebuilt from their faces by BOPAlgo_MakerVolume, faces split where they
+/// meet; a solid is replaced only when the rebuilt pieces, each counted as often as the
+/// solid's faces wind around it, add up to its volume (a solid overlapping itself counts the
+/// overlap twice: kept once, its volume in PrepareReport::selfOverlapVolume). Pieces that
+/// touch themselves along an edge are replaced by their union; a solid that only touched
+/// itself comes back as one piece of the same volume, the edge it touched itself along now
+/// shared by the face it lay on. Run at the end of fixShape. A warning names the solids
+/// rebuilt.
 void rebuildSelfIntersecting(CadModel::Impl& impl, PrepareReport& report);
 
 /// The INTERNAL faces of each solid of a shape (faces inside its material: a crack, an

@@ -9,10 +9,11 @@ namespace aniso::cad::detail {
 /// The solids' volumes (accurateVolume) and the shape's counts and areas.
 ShapeSummary summarize(const CadModel::Impl& impl);
 
-/// The volume of a solid by OCCT's adaptive integral (relative error at most 1e-5), or its
-/// fixed-order integral when the two agree within that; 0 when OCCT fails. The fixed-order integral OCCT gives by default can be far off on B-spline
-/// solids: bug23138_thread.brep (a helical thread) 19.057, where the adaptive integral gives
-/// 14.389 and a tessellation at 0.2 µm deflection encloses 14.390.
+/// The volume of a solid by OCCT's adaptive integral (relative error at most 1e-5), or by
+/// its fixed-order integral when the two agree within that; 0 when OCCT fails. The
+/// fixed-order integral OCCT gives by default can be far off on B-spline solids:
+/// bug23138_thread.brep (a helical thread) 19.057, where the adaptive integral gives 14.389
+/// and a tessellation at 0.2 µm deflection encloses 14.390.
 double accurateVolume(const TopoDS_Shape& solid);
 
 /// Bounding box of the shape from its geometry (no triangulation); B-splines bounded by
