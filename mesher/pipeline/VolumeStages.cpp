@@ -77,7 +77,7 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
     if (r.volume.solidsDeferred > 0)
       logInfo("proximity " + name + ": " + std::to_string(r.volume.solidsDeferred) +
               " solids touching a thin one wait for the finer surface (recovered, not refined)");
-    const std::vector<SizingSource> failed = failedSolidSources(*in.model, r.surface.mesh, r.volume.solids);
+    std::vector<SizingSource> failed = failedSolidSources(*in.model, r.surface.mesh, r.volume.solids);
     if (r.volume.thin.empty() && failed.empty()) {
       decide(r, "proximity", name + ": not needed", "no solid thinner than its boundary triangles");
       return true;
@@ -103,15 +103,25 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
       }
     }
     const double triangles = static_cast<double>(r.surface.mesh.triangles.size());
+    // thin as a whole or in places: decided on the first surface (a finer surface of a part
+    // refined at a few times its thickness is mostly thin spots again)
+    if (!thinWhole) thinWhole = static_cast<double>(r.volume.thin.size()) >= kThinWholeShare * triangles;
+    const bool whole = *thinWhole;
+    if (const double failedLimit = std::min(budget, kThinInPlacesGrowth * firstTriangles);
+        !failed.empty() && !whole && failedLimit > triangles &&
+        predictedTriangles(r.surface.mesh, failed) > failedLimit) {
+      // a solid left without tetrahedra is refined as far as the thin-in-places budget allows,
+      // not left so (KiCad's Finder 40.11 relay at the defaults: its 0.5 mm housing asked
+      // 35 times the surface)
+      double factor = 1;
+      failed = sourcesWithinBudget(r.surface.mesh, failed, failedLimit, &factor);
+      decide(r, "proximity", name + ": failed solids' sources scaled to the budget", "factor " + num(factor));
+    }
     std::vector<std::pair<int, double>> faceSizes;
     double roundFactor = 1;  // this round's budget scaling of the sizes
     std::vector<SizingSource> sources = thinSources(r.volume.thin, hmin, &faceSizes, in.model);
     sources.insert(sources.end(), failed.begin(), failed.end());
     px.predictedTriangles = predictedTriangles(r.surface.mesh, sources);
-    // thin as a whole or in places: decided on the first surface (a finer surface of a part
-    // refined at a few times its thickness is mostly thin spots again)
-    if (!thinWhole) thinWhole = static_cast<double>(r.volume.thin.size()) >= kThinWholeShare * triangles;
-    const bool whole = *thinWhole;
     std::string notRun = "nothing the minimum size would refine";
     const double thinLimit = std::min(budget, std::max(kThinInPlacesGrowth * firstTriangles, kThinInPlacesTriangles));
     if (px.predictedTriangles > thinLimit && !whole) {
