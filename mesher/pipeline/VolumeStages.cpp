@@ -108,11 +108,10 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
     if (!thinWhole) thinWhole = static_cast<double>(r.volume.thin.size()) >= kThinWholeShare * triangles;
     const bool whole = *thinWhole;
     if (const double failedLimit = std::min(budget, kThinInPlacesGrowth * firstTriangles);
-        !failed.empty() && !whole && failedLimit > triangles &&
-        predictedTriangles(r.surface.mesh, failed) > failedLimit) {
-      // a solid left without tetrahedra is refined as far as the thin-in-places budget allows,
-      // not left so (KiCad's Finder 40.11 relay at the defaults: its 0.5 mm housing asked
-      // 35 times the surface)
+        !failed.empty() && !whole && failedLimit > triangles && predictedTriangles(r.surface.mesh, failed) > budget) {
+      // a solid left without tetrahedra whose refinement asks more than the budget is refined
+      // as far as the thin-in-places budget allows, not left so (KiCad's Finder 40.11 relay
+      // at the defaults: its 0.5 mm housing asked 35 times the surface)
       double factor = 1;
       failed = sourcesWithinBudget(r.surface.mesh, failed, failedLimit, &factor);
       decide(r, "proximity", name + ": failed solids' sources scaled to the budget", "factor " + num(factor));
