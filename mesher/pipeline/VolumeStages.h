@@ -7,10 +7,12 @@
 //     edges stay consistent). Sources asking for more than the budget (kMaxProximityGrowth
 //     times the first surface, all rounds together) are scaled to fit when the model is
 //     thin as a whole (kThinWholeShare); a model thin in places has a smaller budget
-//     (kThinInPlacesGrowth, kMaxThinAspect); a solid failing on a finer surface has its
-//     refinement undone (UndoRefinement.h); a round is not run when its sources are empty,
-//     beyond the budget, or add too little (kMinProximityGrowth); a finer surface that
-//     leaves more faces unmeshed is dropped.
+//     (kThinInPlacesGrowth, kMaxThinAspect), and the sources of a solid the volume mesher
+//     failed on that ask more than the whole budget are scaled to fit that smaller one (a
+//     solid without tetrahedra is refined as far as it allows); a solid failing on a finer
+//     surface has its refinement undone (UndoRefinement.h); a round is not run when its
+//     sources are empty, beyond the budget, or add too little (kMinProximityGrowth); a finer
+//     surface that leaves more faces unmeshed is dropped.
 //   2 the final volume of the surface kept (no stop when thin);
 //   3 fallback: when a finer surface was kept and its volume failed, the volume of the
 //     first surface instead (once);
