@@ -151,7 +151,9 @@ PrepareReport CadModel::prepare(const PrepareOptions& options) {
 
 Model CadModel::topology() const {
   const Impl& impl = *impl_;
-  Model model = buildTopology(impl.shape, [&impl](const TopoDS_Shape& s, int id) { return impl.solidName(s, id); });
+  Model model = buildTopology(
+      impl.shape, [&impl](const TopoDS_Shape& s, int id) { return impl.solidName(s, id); },
+      [&impl](const TopoDS_Shape& s) { return detail::solidVolumeOf(impl, s); });
   if (!impl.faceTagIndex.IsEmpty()) {  // face ids: MapShapes order, as buildTopology's
     TopTools_IndexedMapOfShape faces;
     TopExp::MapShapes(impl.shape, TopAbs_FACE, faces);

@@ -14,7 +14,9 @@ std::vector<int> flawedFaceCounts(const TopoDS_Shape& whole, const std::vector<T
   std::vector<char> flawed;
   try {
     TopExp::MapShapes(whole, TopAbs_FACE, faces);
-    const Model model = buildTopology(whole, [](const TopoDS_Shape&, int) { return std::string(); });
+    // the check reads faces only: no solid volumes (an adaptive integral per solid per fuse)
+    const Model model = buildTopology(whole, [](const TopoDS_Shape&, int) { return std::string(); },
+                                      [](const TopoDS_Shape&) { return 0.0; });
     flawed.assign(model.faces.size(), 0);
     for (const ModelIssue& issue : model.check())
       if (issue.kind == EntityKind::Face && issue.index >= 0 && static_cast<std::size_t>(issue.index) < flawed.size() &&

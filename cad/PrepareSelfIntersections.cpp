@@ -236,7 +236,7 @@ std::vector<TopoDS_Shape> rebuilt(const TopoDS_Shape& solid, Handle(BRepTools_Hi
   const double before = std::abs(solidVolume(solid));
   if (pieces.empty() || std::abs(total + extra - before) > kRebuildVolumeRel * before) return {};
   if (!manifold) {  // a piece touches itself (the legs on either side of their overlap): their union
-    const std::optional<TopoDS_Shape> one = unionOf(pieces);
+    const std::optional<TopoDS_Shape> one = pieces.size() > 1 ? unionOf(pieces) : std::nullopt;
     if (one && !nonManifold(*one) && std::abs(solidVolume(*one) - total) <= kRebuildVolumeRel * total)
       pieces = {*one};
     else if (pieces.size() != 1 || extra != 0 || std::abs(total - before) > kImprintVolumeRel * before)

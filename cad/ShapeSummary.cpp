@@ -33,6 +33,13 @@ double accurateVolume(const TopoDS_Shape& solid) {
   }
 }
 
+double solidVolumeOf(const CadModel::Impl& impl, const TopoDS_Shape& solid) {
+  if (const double* v = impl.volumes.Seek(solid)) return *v;
+  const double v = accurateVolume(solid);
+  impl.volumes.Bind(solid, v);
+  return v;
+}
+
 Box3 exactBoundingBox(const TopoDS_Shape& shape) {
   Box3 box;
   Bnd_Box b;
@@ -67,7 +74,7 @@ ShapeSummary summarize(const CadModel::Impl& impl) {
   s.edges = edges.Extent();
   s.vertices = vertices.Extent();
   for (int i = 1; i <= solids.Extent(); ++i) {
-    const double v = accurateVolume(solids(i));
+    const double v = solidVolumeOf(impl, solids(i));
     s.volume += v;
     s.solidList.push_back({i, impl.solidName(solids(i), i), v, impl.solidColor(solids(i))});
   }

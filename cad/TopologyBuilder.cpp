@@ -348,7 +348,8 @@ double boxDiagonal(const TopoDS_Shape& s) {
 }
 
 void buildSolid(const ShapeMaps& maps, int si, Model& model,
-                const std::function<std::string(const TopoDS_Shape&, int)>& solidName) {
+                const std::function<std::string(const TopoDS_Shape&, int)>& solidName,
+                const std::function<double(const TopoDS_Shape&)>& solidVolume) {
   const TopoDS_Solid& solid = TopoDS::Solid(maps.solids(si + 1));
   ModelSolid& ms = model.solids[si];
   ms.name = solidName ? solidName(solid, si + 1) : "SOLID" + std::to_string(si + 1);
@@ -369,7 +370,7 @@ void buildSolid(const ShapeMaps& maps, int si, Model& model,
     }
   }
   ms.outerShell = indexIn(maps.shells, outer, "shell");
-  ms.cadVolume = std::max(0.0, detail::accurateVolume(solid));
+  ms.cadVolume = std::max(0.0, solidVolume(solid));
   for (const TopoDS_Shape& s : shells) {
     // Faces met INTERNAL lie inside the material. A shell made only of them encloses no
     // volume (OCCT's way of keeping a face inside a solid, e.g. after a general fuse of
@@ -395,11 +396,12 @@ void buildSolid(const ShapeMaps& maps, int si, Model& model,
 }
 
 void buildSolids(const ShapeMaps& maps, Model& model,
-                 const std::function<std::string(const TopoDS_Shape&, int)>& solidName) {
+                 const std::function<std::string(const TopoDS_Shape&, int)>& solidName,
+                 const std::function<double(const TopoDS_Shape&)>& solidVolume) {
   model.solids.resize(maps.solids.Extent());
   for (int i = 0; i < maps.solids.Extent(); ++i) {
     try {
-      buildSolid(maps, i, model, solidName);
+      buildSolid(maps, i, model, solidName, solidVolume);
     } catch (const Standard_Failure& e) {
       throw MeshingError(entityName("solid", i) + ": OCCT failed: " + occtMessage(e));
     }
@@ -433,7 +435,8 @@ Box3 boundingBox(const TopoDS_Shape& shape, const ShapeMaps& maps, const Model& 
 }  // namespace
 
 Model buildTopology(const TopoDS_Shape& shape,
-                    const std::function<std::string(const TopoDS_Shape&, int)>& solidName) {
+                    const std::function<std::string(const TopoDS_Shape&, int)>& solidName,
+                    const std::function<double(const TopoDS_Shape&)>& solidVolume) {
   Model model;
   try {
     const ShapeMaps maps(shape);
@@ -441,7 +444,7 @@ Model buildTopology(const TopoDS_Shape& shape,
     buildEdges(maps, model);
     buildFaces(maps, model);
     buildShells(maps, model);
-    buildSolids(maps, model, solidName);
+    buildSolids(maps, model, solidName, solidVolume ? solidVolume : detail::accurateVolume);
     model.bbox = boundingBox(shape, maps, model);
   } catch (const Standard_Failure& e) {
     throw MeshingError("building the topology: OCCT failed: " + occtMessage(e));

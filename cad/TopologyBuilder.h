@@ -11,9 +11,11 @@
 
 namespace aniso::cad {
 
-/// `solidName(solid, id)` names each solid (see CadModel::Impl::solidName).
+/// `solidName(solid, id)` names each solid (see CadModel::Impl::solidName); `solidVolume`
+/// gives ModelSolid::cadVolume (detail::accurateVolume when empty).
 /// Throws MeshingError naming the face when a face has no usable pcurve or surface.
 Model buildTopology(const TopoDS_Shape& shape,
-                    const std::function<std::string(const TopoDS_Shape&, int)>& solidName);
+                    const std::function<std::string(const TopoDS_Shape&, int)>& solidName,
+                    const std::function<double(const TopoDS_Shape&)>& solidVolume = {});
 
 }  // namespace aniso::cad

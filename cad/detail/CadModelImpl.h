@@ -2,6 +2,7 @@
 // Internal: what a CadModel holds. Includes OCCT; only cad/ sources include this.
 #include <TopoDS_Shape.hxx>
 #include <TopTools_DataMapOfShapeInteger.hxx>
+#include <TopTools_DataMapOfShapeReal.hxx>
 
 #include <map>
 #include <string>
@@ -40,6 +41,9 @@ struct CadModel::Impl {
   /// Faces the STEP file holds (FACE entities, whether or not a shape uses them): says why a
   /// model that came out empty is empty.
   int facesInFile = 0;
+  /// accurateVolume of the solids measured so far, keyed by the solid (TShape + location):
+  /// summary() and topology() of one prepared shape integrate each solid once.
+  mutable TopTools_DataMapOfShapeReal volumes;
   /// The token of the operation under way (read, prepare): stops the child processes.
   const CancelToken* cancel = nullptr;
 

@@ -16,6 +16,9 @@ ShapeSummary summarize(const CadModel::Impl& impl);
 /// and a tessellation at 0.2 µm deflection encloses 14.390.
 double accurateVolume(const TopoDS_Shape& solid);
 
+/// accurateVolume of a solid of impl's shape, remembered in impl.volumes.
+double solidVolumeOf(const CadModel::Impl& impl, const TopoDS_Shape& solid);
+
 /// Bounding box of the shape from its geometry (no triangulation); B-splines bounded by
 /// their poles, so it may be slightly larger than the exact box.
 Box3 exactBoundingBox(const TopoDS_Shape& shape);
