@@ -83,6 +83,7 @@ void fixShape(CadModel::Impl& impl, double diag, PrepareReport& report) {
       if (fixer->Shape().IsNull() || changesVolume(solidsVolume(fixer->Shape()))) {
         report.warnings.push_back("shape fixing would change the solids' volume " + changed + "; the shape is kept as read");
         rebuildSelfIntersecting(impl, report);
+        imprintSelfContacts(impl, report);
         return;
       }
       report.warnings.push_back("shape fixing left the faces' boundary loops as read (repairing them would change the "
@@ -125,6 +126,7 @@ void fixShape(CadModel::Impl& impl, double diag, PrepareReport& report) {
     carryFaceTags(impl, before, [&context](const TopoDS_Shape& f) { return imageList(context->Apply(f)); });
     dropStaleFaceTags(impl);
     rebuildSelfIntersecting(impl, report);
+    imprintSelfContacts(impl, report);
   } catch (const Standard_Failure& e) {
     report.warnings.push_back(std::string("shape fixing failed (") + e.GetMessageString() +
                               "); the shape is kept as read");

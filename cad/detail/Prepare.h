@@ -37,6 +37,17 @@ int splitLoopsOfClosedEdges(const TopoDS_Shape& shape, ShapeBuild_ReShape& conte
 /// rebuilt.
 void rebuildSelfIntersecting(CadModel::Impl& impl, PrepareReport& report);
 
+/// Solids two of whose faces touch along a line through both, without an edge there (two
+/// battery cradles, cylinders tangent to one another, pinch the wall between them to
+/// nothing): the line is imprinted on both faces (general fuse of the solid and the line's
+/// edge), which become four faces sharing that edge, so that the mesh has nodes on it
+/// rather than two surfaces a tolerance apart, a cusp no tetrahedron fits. Found between
+/// cylinders with parallel axes as far apart as their radii add up or differ, and between
+/// a cylinder and a plane along its axis at its radius (analytic faces only); kept when
+/// the solid stays valid, of the same volume to 1e-5, each edge between four faces. Run
+/// after rebuildSelfIntersecting. A warning names the solids.
+void imprintSelfContacts(CadModel::Impl& impl, PrepareReport& report);
+
 /// The INTERNAL faces of each solid of a shape (faces inside its material: a crack, an
 /// interface; ModelSolid::embedded) and the faces of its sheet shells (SheetShell.h), solid
 /// by solid, with their placement in the shape.

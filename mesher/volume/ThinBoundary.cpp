@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "mesher/volume/BoundaryMesh.h"
@@ -13,9 +14,72 @@
 
 namespace aniso {
 
-std::vector<ThinSpot> findThinBoundary(const SolidTetMesh& s, const SolidBoundary& b) {
+namespace {
+
+/// The CAD faces around the solid's boundary nodes (with the outward normal of each node's
+/// triangles on each) and the faces closing a cusp with each face (meeting it along an
+/// edge at an angle below kCuspAngle): what tells a cusp from a thin wall
+/// (findThinBoundary).
+class FaceNeighbourhood {
+ public:
+  FaceNeighbourhood(const Model& model, const del3d::TetMesh& m, const SolidBoundary& b)
+      : adjacent_(model.faces.size()) {
+    for (const ModelEdge& e : model.edges) {
+      if (e.degenerate || e.pcurves.size() < 2) continue;
+      // the faces' normals at the edge's middle: opposed, the faces close a cusp there
+      const double tm = 0.5 * (e.t0 + e.t1);
+      std::vector<std::pair<int, Vec3>> normals;
+      for (const PCurve& pc : e.pcurves) {
+        if (pc.face < 0 || static_cast<std::size_t>(pc.face) >= adjacent_.size() || !pc.curve) continue;
+        const ModelFace& face = model.faces[static_cast<std::size_t>(pc.face)];
+        if (!face.surface) continue;
+        const Vec3 n = face.surface->normal(pc.curve->point(tm));
+        normals.push_back({pc.face, face.reversed ? Vec3(-n) : n});
+      }
+      for (const auto& [f, nf] : normals)
+        for (const auto& [g, ng] : normals)
+          if (f != g && nf.dot(ng) < -std::cos(kCuspAngle)) adjacent_[static_cast<std::size_t>(f)].push_back(g);
+    }
+    for (auto& a : adjacent_) std::sort(a.begin(), a.end()), a.erase(std::unique(a.begin(), a.end()), a.end());
+    for (std::size_t k = 0; k < b.embeddedFrom; ++k) {
+      const auto& t = b.triangles[k];
+      const Vec3 n = (m.point(t[1]) - m.point(t[0])).cross(m.point(t[2]) - m.point(t[0]));
+      for (const del3d::VertexId v : t) nodeFaces_.push_back({{v.index, b.triangleFace[k]}, n});
+    }
+    std::sort(nodeFaces_.begin(), nodeFaces_.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    std::size_t w = 0;  // one entry per (node, face), normals summed
+    for (std::size_t r = 0; r < nodeFaces_.size(); ++r)
+      if (w > 0 && nodeFaces_[w - 1].first == nodeFaces_[r].first)
+        nodeFaces_[w - 1].second += nodeFaces_[r].second;
+      else
+        nodeFaces_[w++] = nodeFaces_[r];
+    nodeFaces_.resize(w);
+  }
+  /// Does the face of node v that faces the triangle of face f with outward normal n (its
+  /// normal there the most opposed to n) close a cusp with f?
+  bool oppositeFaceAdjacent(std::size_t v, int f, const Vec3& n) const {
+    const auto lo = std::lower_bound(nodeFaces_.begin(), nodeFaces_.end(), v,
+                                     [](const auto& e, std::size_t key) { return e.first.first < key; });
+    int opposite = -1;
+    double best = 2;
+    for (auto it = lo; it != nodeFaces_.end() && it->first.first == v; ++it)
+      if (const double c = n.dot(it->second.normalized()); c < best) best = c, opposite = it->first.second;
+    return opposite >= 0 && opposite != f && f >= 0 && static_cast<std::size_t>(f) < adjacent_.size() &&
+           std::binary_search(adjacent_[f].begin(), adjacent_[f].end(), opposite);
+  }
+
+ private:
+  std::vector<std::vector<int>> adjacent_;
+  std::vector<std::pair<std::pair<std::size_t, int>, Vec3>> nodeFaces_;  // ((node, face), normal), sorted
+};
+
+}  // namespace
+
+std::vector<ThinSpot> findThinBoundary(const SolidTetMesh& s, const SolidBoundary& b, const Model* model) {
   const del3d::TetMesh& m = s.mesh;
   const std::size_t nb = b.embeddedFrom;  // the boundary triangles (the embedded ones follow)
+  std::optional<FaceNeighbourhood> near;
+  if (model) near.emplace(*model, m, b);
   // Outward (area-weighted) normals at the surface nodes, from the boundary triangles.
   std::vector<Vec3> normal(m.numVertices(), Vec3::Zero());
   for (std::size_t k = 0; k < nb; ++k) {
@@ -41,6 +105,7 @@ std::vector<ThinSpot> findThinBoundary(const SolidTetMesh& s, const SolidBoundar
     }
     if (!s.isFixed(x) || !(normal[x.index].norm() > 0)) continue;
     if (n.dot(normal[x.index].normalized()) > kOppositeNormalCos) continue;
+    if (near && near->oppositeFaceAdjacent(x.index, b.triangleFace[k], n)) continue;  // a cusp
     const Vec3 centroid = (p[0] + p[1] + p[2]) / 3;
     const double height = -n.dot(m.point(x) - centroid);
     const double size = ((p[1] - p[0]).norm() + (p[2] - p[1]).norm() + (p[0] - p[2]).norm()) / 3;

@@ -10,7 +10,13 @@
 // kOppositeNormalCos), x lies on T's inner side — and the height of x over T's plane is
 // below kThinRatio times T's mean edge length (a regular tet's apex stands at 0.816 of its
 // edge). Folds and corners of the surface (the apex on a neighbouring patch) have normals
-// that do not oppose, so they are not reported.
+// that do not oppose, so they are not reported. Nor are cusps (with the model): the apex's
+// CAD face across from T (of the faces around it, the one whose normal there opposes T's
+// the most) meets T's face along an edge at an angle below kCuspAngle (their normals at
+// the edge's middle opposed). A cusp is thinner than any triangle near its edge, and finer
+// triangles make it worse: the tets at the edge have the angle between the chords of the
+// two faces, which shrinks with their length (two battery cradles, cylinders tangent along
+// the edge imprinted by cad/PrepareSelfContacts).
 //
 // thinSources() turns the spots into sizing sources for the surface control spaces: per
 // CAD face, a box around its thin triangles (grown by the largest of them) that sizes the
@@ -33,6 +39,8 @@ namespace aniso {
 inline constexpr double kThinRatio = 0.8;
 /// The outward normals at the triangle and at the apex oppose below this cosine.
 inline constexpr double kOppositeNormalCos = -0.5;
+/// Two faces meeting along an edge at less than this angle (radians, 3°) close a cusp.
+inline constexpr double kCuspAngle = 0.0523598775598;
 /// A solid is too coarse for its thickness when at least this fraction of its boundary
 /// triangles is thin: a few thin spots (a narrow rib of a large part) are left to sliver
 /// removal, meshing the surface again is for parts that are thin as a whole (measured:
@@ -58,7 +66,8 @@ struct ThinSpot {
 /// The thin boundary triangles of s; empty when fewer than kThinFraction of them are thin.
 /// `b`: the solid's boundary in s's kernel ids (triangulateBoundary: outward, the inner side
 /// is where their normal points away from; the embedded triangles are not looked at).
-std::vector<ThinSpot> findThinBoundary(const SolidTetMesh& s, const SolidBoundary& b);
+/// With `model`, cusps are left out (see above).
+std::vector<ThinSpot> findThinBoundary(const SolidTetMesh& s, const SolidBoundary& b, const Model* model = nullptr);
 
 /// The box sources of the faces with thin spots (see above), faces in increasing order. With
 /// `faces`, it receives the (0-based face, size asked) of each source, in the same order.

@@ -128,8 +128,8 @@ std::vector<int> unmeshedFaces(const Model& model, const std::vector<std::vector
 
 /// Alg. 3.3's proximity check on the solid's tets as they are (ThinBoundary.h): its thin
 /// spots into p.thin; true when it has some.
-bool findThin(SolidPiece& p, const BoundaryTriangulation& bt, int solid) {
-  p.thin = findThinBoundary(bt.tets, bt.boundary);
+bool findThin(SolidPiece& p, const BoundaryTriangulation& bt, const Model& model, int solid) {
+  p.thin = findThinBoundary(bt.tets, bt.boundary, &model);
   for (ThinSpot& spot : p.thin) spot.solid = solid;
   return !p.thin.empty();
 }
@@ -187,7 +187,7 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
     if (in.stopWhenThin) {
       // a solid thin for its triangles gets a finer surface anyway: its missing entities
       // are not split and recovered again (each try of a thin part is costly)
-      if (findThin(p, bt, solid)) return p;
+      if (findThin(p, bt, *in.model, solid)) return p;
     }
     reportLeft(p, solid, *in.surface, rr.left);
     for (const RecoveryFailure& f : rr.left) p.missing.push_back(f.nodes);
@@ -199,7 +199,7 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
   p.outcome.times.emplace_back("volume carving", since(t0));
   for (const std::string& s : carved) fail(p, solidRef(solid), s);
   if (!carved.empty() || !validated(p, in, bt.tets, b, "boundary recovery")) return p;
-  if (findThin(p, bt, solid) && in.stopWhenThin) return p;
+  if (findThin(p, bt, *in.model, solid) && in.stopWhenThin) return p;
   if (keep) {
     *keep = std::make_unique<SolidWork>(SolidWork{std::move(b), std::move(bt)});
     return p;

@@ -1,0 +1,87 @@
+// A solid two of whose faces touch along a line through both, with no edge there
+// (cad/PrepareSelfContacts.cpp): KiCad's battery holders, whose cradles are cylinders
+// tangent to one another, pinch the wall between them to nothing. Unimprinted, the two
+// faces' meshes pass each other a tolerance apart and the tetrahedra there are slivers
+// (0.02–0.07°).
+#include <gtest/gtest.h>
+
+#include <BRepBuilderAPI_MakeEdge.hxx>
+#include <BRepBuilderAPI_MakeFace.hxx>
+#include <BRepBuilderAPI_MakePolygon.hxx>
+#include <BRepBuilderAPI_MakeWire.hxx>
+#include <BRepPrimAPI_MakePrism.hxx>
+#include <BRepTools.hxx>
+#include <TopoDS.hxx>
+#include <gp_Circ.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "cad/CadModel.h"
+#include "mesher/pipeline/Pipeline.h"
+
+namespace aniso::cad {
+namespace {
+
+/// A 10 × 8 block, 6 long along x, with two bores of radius 2 along x whose axes are 4
+/// apart (at y = 3 and y = 7, z = 4): the bores touch along the line y = 5, z = 4. Written
+/// as a BREP file.
+std::string blockWithTangentBores() {
+  BRepBuilderAPI_MakePolygon outer;
+  for (const auto& [y, z] : std::vector<std::pair<double, double>>{{0, 0}, {10, 0}, {10, 8}, {0, 8}})
+    outer.Add(gp_Pnt(0, y, z));
+  outer.Close();
+  BRepBuilderAPI_MakeFace face(outer.Wire(), true);
+  for (const double y : {3.0, 7.0}) {
+    // a hole: the circle walked clockwise seen from +x (the face's normal)
+    const gp_Circ c(gp_Ax2(gp_Pnt(0, y, 4), gp_Dir(-1, 0, 0)), 2);
+    face.Add(BRepBuilderAPI_MakeWire(BRepBuilderAPI_MakeEdge(c).Edge()).Wire());
+  }
+  const TopoDS_Shape s = BRepPrimAPI_MakePrism(face.Face(), gp_Vec(6, 0, 0)).Shape();
+  const auto path = std::filesystem::temp_directory_path() / "anisomesh_tangent_bores.brep";
+  BRepTools::Write(s, path.string().c_str());
+  return path.string();
+}
+
+TEST(SelfContact, TheLineWhereTwoBoresTouchBecomesAnEdgeOfBoth) {
+  const std::string path = blockWithTangentBores();
+  CadModel cad = CadModel::read(path);
+  const PrepareReport r = cad.prepare({});
+  std::filesystem::remove(path);
+  const double volume = 6 * (80 - 2 * M_PI * 4);
+  bool imprinted = false;
+  for (const std::string& w : r.warnings) imprinted = imprinted || w.find("touch themselves along a line") != std::string::npos;
+  EXPECT_TRUE(imprinted);
+  ASSERT_EQ(cad.summary().solids, 1);
+  EXPECT_NEAR(cad.summary().volume, volume, 1e-6 * volume);
+
+  const Model model = cad.topology();
+  // the contact line: one edge between four faces (each bore split in two along it)
+  std::vector<int> uses(model.edges.size(), 0);
+  for (const ModelFace& f : model.faces)
+    for (const Loop& l : f.loops)
+      for (const EdgeUse& u : l.uses) ++uses[static_cast<std::size_t>(u.edge)];
+  ASSERT_EQ(std::count(uses.begin(), uses.end(), 4), 1);
+  const ModelEdge& contact = model.edges[static_cast<std::size_t>(std::find(uses.begin(), uses.end(), 4) - uses.begin())];
+  EXPECT_EQ(contact.faces.size(), 4u);
+
+  MeshRequest request;
+  request.options.dim = 3;
+  const MeshResult m = meshModel(model, request);
+  ASSERT_TRUE(m.meshed());
+  double meshed = 0;
+  const VolumeMesh& v = m.volume.mesh;
+  for (const auto& t : v.tets) {
+    const Vec3 a = v.nodes()[t[0]], e1 = v.nodes()[t[1]] - a, e2 = v.nodes()[t[2]] - a, e3 = v.nodes()[t[3]] - a;
+    meshed += e1.dot(e2.cross(e3)) / 6;
+  }
+  EXPECT_NEAR(meshed, volume, 0.01 * volume);
+}
+
+}  // namespace
+}  // namespace aniso::cad
