@@ -115,7 +115,7 @@ bool joinedAlong(const TopoDS_Face& a, const TopoDS_Face& b, const gp_Lin& line,
   return false;
 }
 
-/// The stretches of the line (within the solid's box) lying on both faces.
+/// The stretches of the line (within `box`, one face's) lying on both faces.
 std::vector<std::pair<gp_Pnt, gp_Pnt>> contactRuns(const gp_Lin& line, const TopoDS_Face& fa,
                                                     const BRepAdaptor_Surface& sa, const TopoDS_Face& fb,
                                                     const BRepAdaptor_Surface& sb, const Bnd_Box& box, double tol,
@@ -162,6 +162,7 @@ std::vector<std::pair<gp_Pnt, gp_Pnt>> contactRuns(const gp_Lin& line, const Top
 std::vector<TopoDS_Edge> contactEdges(const TopoDS_Shape& solid, double diag) {
   std::vector<TopoDS_Face> faces;
   std::vector<BRepAdaptor_Surface> surfaces;
+  std::vector<Bnd_Box> boxes;
   for (TopExp_Explorer x(solid, TopAbs_FACE); x.More(); x.Next()) {
     const TopoDS_Face f = TopoDS::Face(x.Current());
     BRepAdaptor_Surface s(f, false);
@@ -170,18 +171,20 @@ std::vector<TopoDS_Edge> contactEdges(const TopoDS_Shape& solid, double diag) {
       continue;
     faces.push_back(f);
     surfaces.emplace_back(f, false);
+    boxes.emplace_back();
+    BRepBndLib::Add(f, boxes.back());
   }
-  Bnd_Box box;
-  BRepBndLib::Add(solid, box);
   std::vector<TopoDS_Edge> out;
   for (std::size_t i = 0; i < faces.size(); ++i)
     for (std::size_t j = i + 1; j < faces.size(); ++j) {
       if (surfaces[i].GetType() == GeomAbs_Plane && surfaces[j].GetType() == GeomAbs_Plane) continue;
       const double tol =
           std::max({kContactRel * diag, BRep_Tool::Tolerance(faces[i]), BRep_Tool::Tolerance(faces[j])});
+      if (boxes[i].IsOut(boxes[j])) continue;  // the faces are apart
       const std::optional<gp_Lin> line = contactLine(surfaces[i], surfaces[j], tol);
       if (!line || joinedAlong(faces[i], faces[j], *line, tol)) continue;
-      for (const auto& [p, q] : contactRuns(*line, faces[i], surfaces[i], faces[j], surfaces[j], box, tol,
+      if (boxes[i].IsOut(*line) || boxes[j].IsOut(*line)) continue;  // the line misses a face
+      for (const auto& [p, q] : contactRuns(*line, faces[i], surfaces[i], faces[j], surfaces[j], boxes[j], tol,
                                             kMinRunRel * diag)) {
         // through both faces, not along a boundary of either
         const gp_Pnt mid((p.XYZ() + q.XYZ()) / 2);
