@@ -18,6 +18,7 @@
 #include <TopoDS_Compound.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
+#include <TopoDS_Vertex.hxx>
 #include <gp_Cylinder.hxx>
 #include <gp_Lin.hxx>
 #include <gp_Pln.hxx>
@@ -46,6 +47,9 @@ constexpr int kContactSamples = 256;
 constexpr int kEndBisections = 40;
 /// A run shorter than this fraction of the diagonal is not imprinted.
 constexpr double kMinRunRel = 1e-4;
+/// The imprinted edges' pieces between four faces must cover each contact edge but this
+/// fraction of its length.
+constexpr double kCoveredRel = 1e-6;
 /// The imprinted solid must keep its volume to this fraction.
 constexpr double kImprintVolumeRel = 1e-5;
 
@@ -212,17 +216,26 @@ std::optional<TopoDS_Shape> imprinted(const TopoDS_Shape& solid, const std::vect
   if (out.ShapeType() != TopAbs_SOLID || !BRepCheck_Analyzer(out).IsValid()) return std::nullopt;
   const double before = std::abs(solidVolume(solid)), after = std::abs(solidVolume(out));
   if (std::abs(after - before) > kImprintVolumeRel * before) return std::nullopt;
-  // every contact edge now lies between four faces of the solid
+  // every contact edge now lies between four faces of the solid, all along (the fuse may
+  // leave a piece of no length beside a vertex it ends on, in no face)
   TopTools_IndexedDataMapOfShapeListOfShape edgeFaces;
   TopExp::MapShapesAndAncestors(out, TopAbs_EDGE, TopAbs_FACE, edgeFaces);
+  const auto length = [](const TopoDS_Shape& edge) {
+    TopoDS_Vertex a, b;
+    TopExp::Vertices(TopoDS::Edge(edge), a, b);
+    return a.IsNull() || b.IsNull() ? 0.0 : BRep_Tool::Pnt(a).Distance(BRep_Tool::Pnt(b));
+  };
   for (const TopoDS_Edge& e : edges) {
     const TopTools_ListOfShape& pieces = gf.Modified(e).IsEmpty() ? imageList(e) : gf.Modified(e);
+    double covered = 0;
     for (const TopoDS_Shape& piece : pieces) {
-      if (!edgeFaces.Contains(piece)) return std::nullopt;
+      if (!edgeFaces.Contains(piece)) continue;
       TopTools_IndexedMapOfShape distinct;
       for (const TopoDS_Shape& f : edgeFaces.FindFromKey(piece)) distinct.Add(f);
       if (distinct.Extent() != 4) return std::nullopt;
+      covered += length(piece);
     }
+    if (covered < (1 - kCoveredRel) * length(e)) return std::nullopt;
   }
   history = gf.History();
   return out;
