@@ -203,7 +203,7 @@ std::vector<TopoDS_Edge> contactEdges(const TopoDS_Shape& solid, double diag) {
 /// the solid and the edges), when that keeps it valid, of the same volume, one solid, each
 /// edge's pieces shared by four faces; none otherwise.
 std::optional<TopoDS_Shape> imprinted(const TopoDS_Shape& solid, const std::vector<TopoDS_Edge>& edges,
-                                      Handle(BRepTools_History)& history) {
+                                      Handle(BRepTools_History)& history, std::vector<TopoDS_Shape>& contact) {
   BOPAlgo_Builder gf;
   gf.AddArgument(solid);
   for (const TopoDS_Edge& e : edges) gf.AddArgument(e);
@@ -234,6 +234,7 @@ std::optional<TopoDS_Shape> imprinted(const TopoDS_Shape& solid, const std::vect
       for (const TopoDS_Shape& f : edgeFaces.FindFromKey(piece)) distinct.Add(f);
       if (distinct.Extent() != 4) return std::nullopt;
       covered += length(piece);
+      contact.push_back(piece);
     }
     if (covered < (1 - kCoveredRel) * length(e)) return std::nullopt;
   }
@@ -252,12 +253,22 @@ void imprintSelfContacts(CadModel::Impl& impl, PrepareReport& report) {
   const double diag = std::sqrt(all.SquareExtent());
   std::vector<std::optional<TopoDS_Shape>> replacement(static_cast<std::size_t>(solids.Extent()) + 1);
   std::vector<Handle(BRepTools_History)> history(replacement.size());
-  std::string fixed;
+  std::string fixed, fins;
   for (int i = 1; i <= solids.Extent(); ++i) {
     try {
       const std::vector<TopoDS_Edge> edges = contactEdges(solids(i), diag);
       if (edges.empty()) continue;
-      replacement[static_cast<std::size_t>(i)] = imprinted(solids(i), edges, history[static_cast<std::size_t>(i)]);
+      std::vector<TopoDS_Shape> contact;
+      replacement[static_cast<std::size_t>(i)] =
+          imprinted(solids(i), edges, history[static_cast<std::size_t>(i)], contact);
+      if (replacement[static_cast<std::size_t>(i)])
+        if (std::optional<FinRemoval> fin = withoutCuspFins(*replacement[static_cast<std::size_t>(i)], contact, diag)) {
+          replacement[static_cast<std::size_t>(i)] = fin->solid;
+          history[static_cast<std::size_t>(i)]->Merge(fin->history);
+          fins += std::string(fins.empty() ? "" : "; ") + "solid " + std::to_string(i) + ": " + num(fin->volume) +
+                  " (" + num(100 * fin->volume / std::abs(solidVolume(solids(i)))) + " % of it), about " +
+                  num(fin->thickness) + " thick";
+        }
     } catch (const Standard_Failure&) {
       continue;  // left as it is
     }
@@ -289,6 +300,9 @@ void imprintSelfContacts(CadModel::Impl& impl, PrepareReport& report) {
   report.warnings.push_back("solid(s) " + fixed +
                             " touch themselves along a line (two of their faces tangent there): the line is made an "
                             "edge of both faces, so that the mesh meets there");
+  if (!fins.empty())
+    report.warnings.push_back("material too thin for any tetrahedron, a fin standing on such a line, was taken off (" +
+                              fins + ")");
 }
 
 }  // namespace aniso::cad::detail

@@ -4,9 +4,11 @@
 // the STEP face names and colours: it passes impl.faceTagIndex on by its history (FaceTags.h).
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopTools_ListOfShape.hxx>
+#include <BRepTools_History.hxx>
 #include <ShapeBuild_ReShape.hxx>
 #include <TopoDS_Compound.hxx>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -47,6 +49,24 @@ void rebuildSelfIntersecting(CadModel::Impl& impl, PrepareReport& report);
 /// the solid stays valid, of the same volume to 1e-5, each edge between four faces. Run
 /// after rebuildSelfIntersecting. A warning names the solids.
 void imprintSelfContacts(CadModel::Impl& impl, PrepareReport& report);
+
+/// A fin a contact edge bounds, taken off its solid (imprintSelfContacts): above the line
+/// where two battery cradles touch stands a fin 0.3 mm tall and 0 to 18 µm thick, whose
+/// tetrahedra cannot have angles above 1–3°. The fin is the faces on one side of the edge
+/// (two of them closing a cusp there, at under 3°),
+/// flooded up to the holes of other faces they end on (its cross-section where it runs into
+/// a wall); without them, and without those holes, the solid stays closed and valid. Taken
+/// off when it holds at most 1e-3 of the solid's volume and is on average (2 V / A) at most
+/// 1e-3 of the model's diagonal thick. Every such fin is taken off (`volume` their sum,
+/// `thickness` the thickest).
+struct FinRemoval {
+  TopoDS_Shape solid;
+  double volume = 0;     ///< taken off
+  double thickness = 0;  ///< the fin's mean thickness, 2 V / A
+  Handle(BRepTools_History) history;
+};
+std::optional<FinRemoval> withoutCuspFins(const TopoDS_Shape& solid, const std::vector<TopoDS_Shape>& contactEdges,
+                                          double diag);
 
 /// The INTERNAL faces of each solid of a shape (faces inside its material: a crack, an
 /// interface; ModelSolid::embedded) and the faces of its sheet shells (SheetShell.h), solid
