@@ -276,27 +276,10 @@ void imprintSelfContacts(CadModel::Impl& impl, PrepareReport& report) {
       fixed += (fixed.empty() ? "" : ", ") + std::to_string(i) + " \"" + impl.solidName(solids(i), i) + "\"";
   }
   if (fixed.empty()) return;
-  BRep_Builder b;
-  TopoDS_Compound c;
-  b.MakeCompound(c);
-  for (int i = 1; i <= solids.Extent(); ++i) {
-    const std::optional<TopoDS_Shape>& r = replacement[static_cast<std::size_t>(i)];
-    if (!r) {
-      b.Add(c, solids(i));
-      continue;
-    }
-    b.Add(c, *r);
-    const TopoDS_Shape key = solids(i).Located(TopLoc_Location());
-    if (impl.nameIndex.IsBound(key)) impl.nameIndex.Bind(r->Located(TopLoc_Location()), impl.nameIndex.Find(key));
-  }
-  addLooseFaces(impl.shape, solids, c);
-  impl.shape = c;
-  for (int i = 1; i <= solids.Extent(); ++i)
-    if (replacement[static_cast<std::size_t>(i)])
-      carryFaceTags(impl, solids(i), [&h = history[static_cast<std::size_t>(i)]](const TopoDS_Shape& f) {
-        return historyImages(h, f);
-      });
-  dropStaleFaceTags(impl);
+  std::vector<std::vector<TopoDS_Shape>> pieces(replacement.size());
+  for (std::size_t i = 0; i < replacement.size(); ++i)
+    if (replacement[i]) pieces[i] = {*replacement[i]};
+  replaceSolids(impl, solids, pieces, history);
   report.warnings.push_back("solid(s) " + fixed +
                             " touch themselves along a line (two of their faces tangent there): the line is made an "
                             "edge of both faces, so that the mesh meets there");

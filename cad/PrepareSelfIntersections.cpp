@@ -277,31 +277,7 @@ void rebuildSelfIntersecting(CadModel::Impl& impl, PrepareReport& report) {
       fixed += (fixed.empty() ? "" : ", ") + std::to_string(i) + " \"" + impl.solidName(solids(i), i) + "\"";
   }
   if (fixed.empty()) return;
-  // the new shape: the solids in order, each rebuilt one replaced by its pieces, then the
-  // faces in no solid (as the fragmenting step assembles its result)
-  BRep_Builder b;
-  TopoDS_Compound c;
-  b.MakeCompound(c);
-  for (int i = 1; i <= solids.Extent(); ++i) {
-    const std::vector<TopoDS_Shape>& pieces = replacement[static_cast<std::size_t>(i)];
-    if (pieces.empty()) {
-      b.Add(c, solids(i));
-      continue;
-    }
-    const TopoDS_Shape key = solids(i).Located(TopLoc_Location());
-    for (const TopoDS_Shape& p : pieces) {
-      b.Add(c, p);
-      if (impl.nameIndex.IsBound(key)) impl.nameIndex.Bind(p.Located(TopLoc_Location()), impl.nameIndex.Find(key));
-    }
-  }
-  addLooseFaces(impl.shape, solids, c);
-  impl.shape = c;
-  for (int i = 1; i <= solids.Extent(); ++i)
-    if (!replacement[static_cast<std::size_t>(i)].empty())
-      carryFaceTags(impl, solids(i), [&h = history[static_cast<std::size_t>(i)]](const TopoDS_Shape& f) {
-        return historyImages(h, f);
-      });
-  dropStaleFaceTags(impl);
+  replaceSolids(impl, solids, replacement, history);
   report.warnings.push_back("solid(s) " + fixed +
                             " had faces crossing or touching one another: rebuilt from their faces, split where they meet");
 }

@@ -145,6 +145,14 @@ double shapeArea(const TopoDS_Shape& shape);
 /// what a step that rebuilds the solids into a new compound keeps besides them.
 void addLooseFaces(const TopoDS_Shape& shape, const TopTools_IndexedMapOfShape& solids, TopoDS_Compound& c);
 
+/// impl.shape rebuilt with solid i (1-based, of `solids`) replaced by the pieces
+/// replacement[i] when there are any: the solids in order, then the loose faces (as the
+/// fragmenting step assembles its result); the pieces take the solid's part name, and the
+/// STEP face tags pass on through history[i].
+void replaceSolids(CadModel::Impl& impl, const TopTools_IndexedMapOfShape& solids,
+                   const std::vector<std::vector<TopoDS_Shape>>& replacement,
+                   const std::vector<Handle(BRepTools_History)>& history);
+
 /// Number of edges (not degenerate) bounding exactly one face of the shape.
 int countFreeEdges(const TopoDS_Shape& shape);
 
