@@ -4,6 +4,7 @@
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepClass_FaceClassifier.hxx>
+#include <BRepTools.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
 #include <ElSLib.hxx>
@@ -86,10 +87,15 @@ std::optional<gp_Lin> contactLine(const BRepAdaptor_Surface& a, const BRepAdapto
 /// Where the point of the surface lies in its face.
 TopAbs_State stateIn(const TopoDS_Face& f, const BRepAdaptor_Surface& s, const gp_Pnt& p, double tol) {
   double u = 0, v = 0;
-  if (s.GetType() == GeomAbs_Cylinder)
-    ElSLib::Parameters(s.Cylinder(), p, u, v);
-  else
+  if (s.GetType() == GeomAbs_Cylinder) {
+    ElSLib::Parameters(s.Cylinder(), p, u, v);  // u in [0, 2π): moved into the face's period
+    double u0, u1, v0, v1;
+    BRepTools::UVBounds(f, u0, u1, v0, v1);
+    u += 2 * M_PI * std::floor((u0 - u) / (2 * M_PI) + 1);
+    if (u - 2 * M_PI >= u0) u -= 2 * M_PI;
+  } else {
     ElSLib::Parameters(s.Plane(), p, u, v);
+  }
   return BRepClass_FaceClassifier(f, gp_Pnt2d(u, v), tol).State();
 }
 bool onFace(const TopoDS_Face& f, const BRepAdaptor_Surface& s, const gp_Pnt& p, double tol) {
