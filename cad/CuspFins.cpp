@@ -1,12 +1,10 @@
 #include <BRepCheck_Analyzer.hxx>
 #include <BRepGProp_Face.hxx>
 #include <Geom2d_Curve.hxx>
-#include <BRepGProp.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_ReShape.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
-#include <GProp_GProps.hxx>
 #include <Standard_Failure.hxx>
 #include <TopExp.hxx>
 #include <TopExp_Explorer.hxx>
@@ -62,17 +60,13 @@ bool pinchedAtContact(const TopoDS_Wire& w, const TopTools_IndexedMapOfShape& co
 TopoDS_Wire outerWireOf(const TopoDS_Face& f) {
   TopoDS_Wire best;
   double largest = -1;
-  int wires = 0;
   for (TopoDS_Iterator w(f); w.More(); w.Next()) {
     if (w.Value().ShapeType() != TopAbs_WIRE) continue;
-    ++wires;
     TopoDS_Face alone = TopoDS::Face(f.EmptyCopied());
     BRep_Builder().Add(alone, w.Value());
-    GProp_GProps p;
-    BRepGProp::SurfaceProperties(alone, p);
-    if (std::abs(p.Mass()) > largest) largest = std::abs(p.Mass()), best = TopoDS::Wire(w.Value());
+    if (const double a = std::abs(shapeArea(alone)); a > largest) largest = a, best = TopoDS::Wire(w.Value());
   }
-  return wires == 1 ? best : (largest >= 0 ? best : BRepTools::OuterWire(f));
+  return best;
 }
 
 bool holds(const TopoDS_Shape& wire, const TopoDS_Shape& e) {
@@ -130,15 +124,6 @@ bool closeACusp(const TopoDS_Face& a, const TopoDS_Face& b, const TopoDS_Edge& e
   return na.Normalized().Dot(nb.Normalized()) < -std::cos(kFinCuspAngle);
 }
 
-double area(const TopTools_IndexedMapOfShape& faces) {
-  double a = 0;
-  for (int k = 1; k <= faces.Extent(); ++k) {
-    GProp_GProps p;
-    BRepGProp::SurfaceProperties(faces(k), p);
-    a += p.Mass();
-  }
-  return a;
-}
 
 }  // namespace
 
@@ -212,7 +197,9 @@ std::optional<FinRemoval> withoutOneFin(const TopoDS_Shape& solid, const std::ve
       if (!closed) continue;
       const double removed = volume - std::abs(solidVolume(out));
       if (!(removed > 0) || removed > kFinVolumeRel * volume) continue;
-      const double thickness = 2 * removed / area(lobe->faces);
+      double area = 0;
+      for (int k = 1; k <= lobe->faces.Extent(); ++k) area += shapeArea(lobe->faces(k));
+      const double thickness = 2 * removed / area;
       if (thickness > kFinThicknessRel * diag) continue;
       return FinRemoval{out, removed, thickness, reshape->History()};
     }

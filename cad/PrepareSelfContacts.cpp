@@ -171,14 +171,14 @@ std::vector<TopoDS_Edge> contactEdges(const TopoDS_Shape& solid, double diag) {
   std::vector<TopoDS_Face> faces;
   std::vector<BRepAdaptor_Surface> surfaces;
   std::vector<Bnd_Box> boxes;
-  for (TopExp_Explorer x(solid, TopAbs_FACE); x.More(); x.Next()) {
-    const TopoDS_Face f = TopoDS::Face(x.Current());
+  TopTools_IndexedMapOfShape all;  // each face once
+  TopExp::MapShapes(solid, TopAbs_FACE, all);
+  for (int k = 1; k <= all.Extent(); ++k) {
+    const TopoDS_Face f = TopoDS::Face(all(k));
     BRepAdaptor_Surface s(f, false);
     if (s.GetType() != GeomAbs_Cylinder && s.GetType() != GeomAbs_Plane) continue;
-    if (std::find_if(faces.begin(), faces.end(), [&](const TopoDS_Face& g) { return g.IsSame(f); }) != faces.end())
-      continue;
     faces.push_back(f);
-    surfaces.emplace_back(f, false);
+    surfaces.push_back(s);
     boxes.emplace_back();
     BRepBndLib::Add(f, boxes.back());
   }

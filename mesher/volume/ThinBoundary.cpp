@@ -17,30 +17,12 @@ namespace aniso {
 namespace {
 
 /// The CAD faces around the solid's boundary nodes (with the outward normal of each node's
-/// triangles on each) and the faces closing a cusp with each face (meeting it along an
-/// edge at an angle below kCuspAngle): what tells a cusp from a thin wall
+/// triangles on each), and whether two faces close a cusp (meet along an edge at an angle
+/// below kCuspAngle; asked per pair, remembered): what tells a cusp from a thin wall
 /// (findThinBoundary).
 class FaceNeighbourhood {
  public:
-  FaceNeighbourhood(const Model& model, const del3d::TetMesh& m, const SolidBoundary& b)
-      : adjacent_(model.faces.size()) {
-    for (const ModelEdge& e : model.edges) {
-      if (e.degenerate || e.pcurves.size() < 2) continue;
-      // the faces' normals at the edge's middle: opposed, the faces close a cusp there
-      const double tm = 0.5 * (e.t0 + e.t1);
-      std::vector<std::pair<int, Vec3>> normals;
-      for (const PCurve& pc : e.pcurves) {
-        if (pc.face < 0 || static_cast<std::size_t>(pc.face) >= adjacent_.size() || !pc.curve) continue;
-        const ModelFace& face = model.faces[static_cast<std::size_t>(pc.face)];
-        if (!face.surface) continue;
-        const Vec3 n = face.surface->normal(pc.curve->point(tm));
-        normals.push_back({pc.face, face.reversed ? Vec3(-n) : n});
-      }
-      for (const auto& [f, nf] : normals)
-        for (const auto& [g, ng] : normals)
-          if (f != g && nf.dot(ng) < -std::cos(kCuspAngle)) adjacent_[static_cast<std::size_t>(f)].push_back(g);
-    }
-    for (auto& a : adjacent_) std::sort(a.begin(), a.end()), a.erase(std::unique(a.begin(), a.end()), a.end());
+  FaceNeighbourhood(const Model& model, const del3d::TetMesh& m, const SolidBoundary& b) : model_(model) {
     for (std::size_t k = 0; k < b.embeddedFrom; ++k) {
       const auto& t = b.triangles[k];
       const Vec3 n = (m.point(t[1]) - m.point(t[0])).cross(m.point(t[2]) - m.point(t[0]));
@@ -57,20 +39,45 @@ class FaceNeighbourhood {
   }
   /// Does the face of node v that faces the triangle of face f with outward normal n (its
   /// normal there the most opposed to n) close a cusp with f?
-  bool oppositeFaceAdjacent(std::size_t v, int f, const Vec3& n) const {
+  bool oppositeFaceCloses(std::size_t v, int f, const Vec3& n) {
     const auto lo = std::lower_bound(nodeFaces_.begin(), nodeFaces_.end(), v,
                                      [](const auto& e, std::size_t key) { return e.first.first < key; });
     int opposite = -1;
     double best = 2;
     for (auto it = lo; it != nodeFaces_.end() && it->first.first == v; ++it)
       if (const double c = n.dot(it->second.normalized()); c < best) best = c, opposite = it->first.second;
-    return opposite >= 0 && opposite != f && f >= 0 && static_cast<std::size_t>(f) < adjacent_.size() &&
-           std::binary_search(adjacent_[f].begin(), adjacent_[f].end(), opposite);
+    if (opposite < 0 || opposite == f || f < 0) return false;
+    const auto [it, added] = cusp_.try_emplace({std::min(f, opposite), std::max(f, opposite)}, false);
+    if (added) it->second = closeACusp(f, opposite);
+    return it->second;
   }
 
  private:
-  std::vector<std::vector<int>> adjacent_;
+  /// Do faces f and g share an edge at whose middle their normals are opposed?
+  bool closeACusp(int f, int g) const {
+    if (static_cast<std::size_t>(f) >= model_.faces.size() || static_cast<std::size_t>(g) >= model_.faces.size())
+      return false;
+    for (const Loop& loop : model_.faces[static_cast<std::size_t>(f)].loops)
+      for (const EdgeUse& use : loop.uses) {
+        const ModelEdge& e = model_.edges[static_cast<std::size_t>(use.edge)];
+        if (e.degenerate || std::find(e.faces.begin(), e.faces.end(), g) == e.faces.end()) continue;
+        const double tm = 0.5 * (e.t0 + e.t1);
+        std::optional<Vec3> nf, ng;
+        for (const PCurve& pc : e.pcurves) {
+          if ((pc.face != f && pc.face != g) || !pc.curve) continue;
+          const ModelFace& face = model_.faces[static_cast<std::size_t>(pc.face)];
+          if (!face.surface) continue;
+          const Vec3 nn = face.surface->normal(pc.curve->point(tm));
+          (pc.face == f ? nf : ng) = face.reversed ? Vec3(-nn) : nn;
+        }
+        if (nf && ng && nf->dot(*ng) < -std::cos(kCuspAngle)) return true;
+      }
+    return false;
+  }
+
+  const Model& model_;
   std::vector<std::pair<std::pair<std::size_t, int>, Vec3>> nodeFaces_;  // ((node, face), normal), sorted
+  std::map<std::pair<int, int>, bool> cusp_;                           // (smaller face, larger) -> closes a cusp
 };
 
 }  // namespace
@@ -105,7 +112,7 @@ std::vector<ThinSpot> findThinBoundary(const SolidTetMesh& s, const SolidBoundar
     }
     if (!s.isFixed(x) || !(normal[x.index].norm() > 0)) continue;
     if (n.dot(normal[x.index].normalized()) > kOppositeNormalCos) continue;
-    if (near && near->oppositeFaceAdjacent(x.index, b.triangleFace[k], n)) continue;  // a cusp
+    if (near && near->oppositeFaceCloses(x.index, b.triangleFace[k], n)) continue;  // a cusp
     const Vec3 centroid = (p[0] + p[1] + p[2]) / 3;
     const double height = -n.dot(m.point(x) - centroid);
     const double size = ((p[1] - p[0]).norm() + (p[2] - p[1]).norm() + (p[0] - p[2]).norm()) / 3;

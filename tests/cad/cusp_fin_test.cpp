@@ -25,14 +25,14 @@ namespace aniso::cad::detail {
 namespace {
 
 /// A 4 × 4 × 1 plate between two 1 × 4 × 2 walls (x from −1 to 0 and from 4 to 5), and a
-/// fin along x from 0 to 4 whose edge (y = 2, z = 1) stands on the plate: 0.1 tall, `top`
-/// wide at its top, running into both walls. Fused: the fin's edge splits the plate's top
+/// fin along x from 0 to 4 whose edge (y = 2, z = 1) stands on the plate: `height` tall,
+/// `top` wide at its top, running into both walls. Fused: the fin's edge splits the plate's top
 /// face in two.
-TopoDS_Shape plateWithFin(double top) {
+TopoDS_Shape plateWithFin(double top, double height = 0.1) {
   BRepBuilderAPI_MakePolygon p;
   p.Add(gp_Pnt(0, 2, 1));
-  p.Add(gp_Pnt(0, 2 - top / 2, 1.1));
-  p.Add(gp_Pnt(0, 2 + top / 2, 1.1));
+  p.Add(gp_Pnt(0, 2 - top / 2, 1 + height));
+  p.Add(gp_Pnt(0, 2 + top / 2, 1 + height));
   p.Close();
   const TopoDS_Shape fin = BRepPrimAPI_MakePrism(BRepBuilderAPI_MakeFace(p.Wire(), true).Face(), gp_Vec(4, 0, 0)).Shape();
   TopTools_ListOfShape args, tools;
@@ -83,8 +83,8 @@ TEST(CuspFin, AThinFinOnACuspIsTakenOffAndTheSolidStaysClosed) {
 }
 
 TEST(CuspFin, AFinThatOpensOrIsThickStays) {
-  // sides 11° apart: a wedge, not a cusp
-  const TopoDS_Shape wedge = plateWithFin(0.02);
+  // sides 11° apart, and as thin as the cusp fin above (2V/A 0.0018): only the angle keeps it
+  const TopoDS_Shape wedge = plateWithFin(0.004, 0.02);
   ASSERT_FALSE(wedge.IsNull());
   EXPECT_FALSE(withoutCuspFins(wedge, fourFaceEdges(wedge), diagonalOf(wedge)).has_value());
   // a cusp, but the model so small that the fin is thick for it

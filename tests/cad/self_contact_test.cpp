@@ -20,10 +20,9 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Geometry>
-
 #include "cad/CadModel.h"
 #include "mesher/pipeline/Pipeline.h"
+#include "tests/cad/mesh_volume.h"
 
 namespace aniso::cad {
 namespace {
@@ -77,13 +76,7 @@ TEST(SelfContact, TheLineWhereTwoBoresTouchBecomesAnEdgeOfBoth) {
   // the cusps either side of the contact are no thin wall (ThinBoundary.h): without that
   // rule 186 of their triangles were reported thin
   EXPECT_EQ(m.proximity.thinTrianglesLeft, 0u);
-  double meshed = 0;
-  const VolumeMesh& v = m.volume.mesh;
-  for (const auto& t : v.tets) {
-    const Vec3 a = v.nodes()[t[0]], e1 = v.nodes()[t[1]] - a, e2 = v.nodes()[t[2]] - a, e3 = v.nodes()[t[3]] - a;
-    meshed += e1.dot(e2.cross(e3)) / 6;
-  }
-  EXPECT_NEAR(meshed, volume, 0.01 * volume);
+  EXPECT_NEAR(meshVolume(m.volume.mesh), volume, 0.01 * volume);
 }
 
 }  // namespace

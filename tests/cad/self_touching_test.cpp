@@ -23,10 +23,9 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Geometry>
-
 #include "cad/CadModel.h"
 #include "mesher/pipeline/Pipeline.h"
+#include "tests/cad/mesh_volume.h"
 
 namespace aniso::cad {
 namespace {
@@ -96,13 +95,7 @@ TEST(SelfTouchingSolid, TheEdgeItTouchesItselfAlongIsImprintedAndTheSolidMeshes)
   request.options.dim = 3;
   const MeshResult m = meshModel(model, request);
   ASSERT_TRUE(m.meshed());
-  double volume = 0;
-  const VolumeMesh& v = m.volume.mesh;
-  for (const auto& t : v.tets) {
-    const Vec3 a = v.nodes()[t[0]], e1 = v.nodes()[t[1]] - a, e2 = v.nodes()[t[2]] - a, e3 = v.nodes()[t[3]] - a;
-    volume += e1.dot(e2.cross(e3)) / 6;
-  }
-  EXPECT_NEAR(volume, 21, 1e-9);
+  EXPECT_NEAR(meshVolume(m.volume.mesh), 21, 1e-9);
 }
 
 }  // namespace
