@@ -110,6 +110,7 @@ CadModel CadModel::read(const std::string& path, const CancelToken* cancel) {
   }
   impl->cancel = nullptr;
   if (impl->shape.IsNull()) throw InputError(path + ": the file contains no shape");
+  detail::dropEmptySolids(*impl);
   for (const std::string& w : impl->readWarnings) logWarning(path + ": " + w);
   TopTools_IndexedMapOfShape faces, edges;
   TopExp::MapShapes(impl->shape, TopAbs_FACE, faces);

@@ -50,6 +50,12 @@ int stepFaceCount(XSControl_Reader& reader);
 /// its free edges and vertices. Returns the number rebuilt (0: shape unchanged).
 int rebuildLostSolids(TopoDS_Shape& shape, int lost);
 
+/// Takes the solids that hold no face out of impl.shape (BRepTools_ReShape), adds them to
+/// impl.solidsLost with a read warning naming them, and binds every other solid's name
+/// ("SOLID<id>" by its place as read, when the file names none) so that ids and names do not
+/// shift. Returns how many were taken out.
+int dropEmptySolids(CadModel::Impl& impl);
+
 /// Removes OCCT's default console printers once, so that library code prints nothing.
 void silenceOcctMessages();
 

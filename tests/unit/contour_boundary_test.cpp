@@ -223,32 +223,65 @@ TEST(ContourBoundary, PcurveParameterizedUnlikeItsEdgeIsProjected) {
   expectConsistent(m, b, r.mesh, 0.2);
 }
 
-TEST(ContourBoundary, NodeTouchingTwoLoopsHasOneParameterPoint) {
-  // A triangular hole touching the outer loop at the vertex (0.5, 0); the hole's pcurves
-  // end 1e-13 away from it (round-off of two different pcurves).
+namespace {
+
+/// The unit square with a triangular hole touching the outer loop at the vertex (0.5, 0)
+/// (`touch`, tolerance `vertexTol`); the hole's pcurves end at (0.5 + offset, 0).
+Model holeTouchingTheOuterLoop(double offset, double vertexTol, int& touch) {
   ModelBuilder bld;
   const int f = bld.face(xyPlane(), box(0, 0, 1, 1));
-  const int touch = bld.vertex({0.5, 0, 0});
+  touch = bld.vertex({0.5, 0, 0});
+  bld.m.vertices[touch].tolerance = vertexTol;
   polygonLoop(bld, f, {bld.vertex({0, 0, 0}), touch, bld.vertex({1, 0, 0}), bld.vertex({1, 1, 0}), bld.vertex({0, 1, 0})},
               true);
   const int a = bld.vertex({0.4, 0.3, 0}), c = bld.vertex({0.6, 0.3, 0});
-  const Vec2 off(0.5 + 1e-13, 0);
+  const Vec2 off(0.5 + offset, 0);
   const int e0 = bld.line(touch, a), e1 = bld.line(a, c), e2 = bld.line(c, touch);
   const int k0 = bld.pcurve(e0, f, std::make_shared<Line2d>(off, Vec2(0.4, 0.3)));
   const int k1 = bld.pcurve(e1, f, std::make_shared<Line2d>(Vec2(0.4, 0.3), Vec2(0.6, 0.3)));
   const int k2 = bld.pcurve(e2, f, std::make_shared<Line2d>(Vec2(0.6, 0.3), off));
   bld.loop(f, {{e0, false, k0}, {e1, false, k1}, {e2, false, k2}}, false);
-  const Model& m = bld.m;
-  const Boundaries r(m, 0.1);
-  const FaceBoundary b = faceBoundary(m, 0, r.edges, r.mesh);
-  ASSERT_EQ(b.loops.size(), 2u);
+  return bld.m;
+}
+
+/// The (u, v) of every copy of `node` in the face's loops.
+std::vector<Vec2> copiesOf(const FaceBoundary& b, int node) {
   std::vector<Vec2> at;
   for (const auto& loop : b.loops)
     for (const BoundaryNode& n : loop)
-      if (n.node == touch) at.push_back(n.uv);
+      if (n.node == node) at.push_back(n.uv);
+  return at;
+}
+
+}  // namespace
+
+TEST(ContourBoundary, NodeTouchingTwoLoopsHasOneParameterPoint) {
+  // The hole's pcurves end 1e-13 away from the vertex (round-off of two different pcurves).
+  int touch = -1;
+  const Model m = holeTouchingTheOuterLoop(1e-13, 0, touch);
+  const Boundaries r(m, 0.1);
+  const FaceBoundary b = faceBoundary(m, 0, r.edges, r.mesh);
+  ASSERT_EQ(b.loops.size(), 2u);
+  const std::vector<Vec2> at = copiesOf(b, touch);
   ASSERT_EQ(at.size(), 2u);
   EXPECT_EQ(at[0], at[1]);
   EXPECT_LT(signedArea(b.loops[1]), 0);
+}
+
+TEST(ContourBoundary, CopiesOfAVertexWithinItsToleranceHaveOneParameterPoint) {
+  // The hole's pcurves end 1e-7 from the vertex (an edge a fuse embedded in a face, whose
+  // pcurve ends within the vertex's tolerance but far beyond round-off: OCCT's sample
+  // bearing, balls imprinted on their rings): one (u, v) when the vertex's tolerance (1e-6)
+  // covers the offset, two when it does not (1e-8).
+  for (const double tol : {1e-6, 1e-8}) {
+    int touch = -1;
+    const Model m = holeTouchingTheOuterLoop(1e-7, tol, touch);
+    const Boundaries r(m, 0.1);
+    const std::vector<Vec2> at = copiesOf(faceBoundary(m, 0, r.edges, r.mesh), touch);
+    ASSERT_EQ(at.size(), 2u);
+    if (tol > 1e-7) EXPECT_EQ(at[0], at[1]);
+    else EXPECT_NEAR((at[0] - at[1]).norm(), 1e-7, 1e-12);
+  }
 }
 
 TEST(ContourBoundary, ShortEdgeDroppedUnderAVertexToleranceIsBridgedAsAPole) {

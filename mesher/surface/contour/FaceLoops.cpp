@@ -21,10 +21,13 @@
 // of the neighbouring boundary nodes, as on a degenerate edge. A junction whose ends only
 // are one point in 3D is closed at its midpoint up to kLoopGapEndsWithinTolerance of the
 // extent. Any other junction is an error. Copies of one node that differ by round-off only
-// (a hole touching the outer loop at a vertex) are given one (u, v).
+// (a hole touching the outer loop at a vertex), or, at a vertex, by less than its CAD
+// tolerance (edges a fuse embedded in the face, whose pcurves end up to that tolerance
+// apart), are given one (u, v).
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <sstream>
@@ -239,18 +242,27 @@ void alignToBox(std::vector<BoundaryNode>& loop, const Box2& ref, const Vec2& pe
 
 /// Gives every node the same (u, v) wherever it occurs within `tol` of an earlier copy
 /// (in loop order), so that one point is one point for the face mesher.
-void snapCopies(std::vector<std::vector<BoundaryNode>>& loops, double tol) {
+void snapCopies(std::vector<std::vector<BoundaryNode>>& loops, double tol, const std::function<double(int, const Vec2&)>& nodeTol) {
   std::vector<std::array<int, 3>> refs;  // (node, loop, index)
   for (std::size_t l = 0; l < loops.size(); ++l)
     for (std::size_t i = 0; i < loops[l].size(); ++i)
       refs.push_back({loops[l][i].node, static_cast<int>(l), static_cast<int>(i)});
   std::sort(refs.begin(), refs.end());
-  for (std::size_t a = 0; a < refs.size(); ++a)
+  for (std::size_t a = 0; a < refs.size(); ++a) {
+    const BoundaryNode& first = loops[refs[a][1]][refs[a][2]];
+    double within = -1;  // the node's own tolerance, asked only when it has copies
     for (std::size_t b = a + 1; b < refs.size() && refs[b][0] == refs[a][0]; ++b) {
-      const Vec2& first = loops[refs[a][1]][refs[a][2]].uv;
-      Vec2& other = loops[refs[b][1]][refs[b][2]].uv;
-      if ((other - first).norm() <= tol) other = first;
+      BoundaryNode& other = loops[refs[b][1]][refs[b][2]];
+      // consecutive copies are a short pole of the loop (a degenerate edge), as are those a
+      // bridge made (`at` set): only round-off is taken off them
+      const auto size = static_cast<int>(loops[refs[a][1]].size());
+      const int step = (refs[b][2] - refs[a][2] + size) % size;
+      const bool pole = !std::isnan(other.at.x()) || !std::isnan(first.at.x()) ||
+                        (refs[b][1] == refs[a][1] && (step == 1 || step == size - 1));
+      if (!pole && within < 0) within = std::max(tol, nodeTol(first.node, first.uv));
+      if ((other.uv - first.uv).norm() <= (pole ? tol : within)) other.uv = first.uv;
     }
+  }
 }
 
 double extentDiagonal(const ModelFace& f, const std::vector<std::vector<BoundaryNode>>& loops) {
@@ -299,7 +311,18 @@ FaceBoundary faceBoundary(const Model& model, int face, const std::vector<EdgeDi
 
   for (std::size_t l = 0; l < out.loops.size(); ++l)
     alignToBox(out.loops[l], l == 0 ? f.uvBounds : boxOf(out.loops[0]), periodic.period());
-  snapCopies(out.loops, kSnapRatio * extent);
+  // a vertex's copies whose (u, v) differ by less than its CAD tolerance are one point: the
+  // tolerance over the larger of |p_u|, |p_v| (the smaller (u, v) distance: a pole's copies,
+  // a period apart, never come that close)
+  const auto vertexUvTolerance = [&](int node, const Vec2& uv) {
+    const NodeOn& on = mesh.nodeOn[static_cast<std::size_t>(node)];
+    if (on.kind != NodeOn::Kind::Vertex) return 0.0;
+    const double tol3d = kMissFactor * std::max(model.vertices[static_cast<std::size_t>(on.entity)].tolerance, f.tolerance);
+    const SurfaceD1 d = f.surface->d1(uv);
+    const double scale = std::max(d.pu.norm(), d.pv.norm());
+    return scale > 0 && std::isfinite(scale) ? tol3d / scale : 0.0;
+  };
+  snapCopies(out.loops, kSnapRatio * extent, vertexUvTolerance);
   if (f.reversed)
     for (auto& loop : out.loops) std::reverse(loop.begin(), loop.end());
   return out;
