@@ -188,10 +188,12 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
   // a volume mesh: no thin face gets its own h_min (BoundaryUpdate.h)
   const bool volume = in.options.dim == 3 || (in.options.dim == 0 && !model.solids.empty());
   constexpr int kRounds = 3;
+  // then, while a face's boundary crosses itself in (u, v), rounds of the crossing rule only
+  constexpr int kCrossingRounds = 4;
   std::vector<EdgeDiscretization> edges;
   std::vector<FaceBoundary> boundaries(nf);
   const auto discretizeContours = [&] {
-    for (int round = 0;; ++round) {  // bounded: updates stop after kRounds
+    for (int round = 0;; ++round) {  // bounded: updates stop after kRounds + kCrossingRounds
       checkCancel(cancel, "contours");
       SurfaceMesh trial;
       edges = discretizeEdgesLeavingOut(model, cs, copt, trial, r.faces);
@@ -205,7 +207,7 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
         }
       }
       std::atomic<int> updates{0};
-      if (round < kRounds) {
+      if (round < kRounds + kCrossingRounds) {
         parallelFor(nf, in.options.threads, [&](int f) {
           if (!cs[f]) return;
           checkCancel(cancel, "boundary sizing");
@@ -214,11 +216,13 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
           bopt.cadTolerance = model.faces[f].tolerance;
           bopt.thinFaces = !volume;
           bopt.gapsAlongSegments = !volume;
+          bopt.crossingsOnly = round >= kRounds;
           const BoundaryUpdateStats u = updateFromBoundary(*spaces[f], boundaries[f], in.options.sizing, bopt);
           if (u.total() == 0) return;
           logDebug("face " + std::to_string(f + 1) + " boundary sizing: " + std::to_string(u.shortSegments) +
                    " short segments, " + std::to_string(u.gaps) + " gaps (" + std::to_string(u.unresolvedGaps) +
-                   " too narrow), h_min " + std::to_string(u.faceMinSize));
+                   " too narrow), " + std::to_string(u.crossings) + " crossing segments, h_min " +
+                   std::to_string(u.faceMinSize));
           spaces[f]->smoothGradation(in.options.sizing.gradation);
           updates += u.total();
         }, "boundary sizing");

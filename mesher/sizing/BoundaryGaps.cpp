@@ -6,6 +6,7 @@
 #include <Eigen/SVD>
 
 #include "mesher/core/Segment.h"
+#include "mesher/predicates/Predicates.h"
 
 namespace aniso {
 namespace {
@@ -157,6 +158,54 @@ double thinFaceWidth(const BoundarySegments& segs, const std::vector<BoundaryGap
     weighted -= len * (cap - std::min(g.width(), cap));
   }
   return total > 0 ? weighted / total : cap;
+}
+
+namespace {
+
+/// c lies strictly inside the segment ab, the three collinear (orientation 0).
+bool insideCollinear(const Vec2& a, const Vec2& b, const Vec2& c) {
+  const Vec2 d = b - a;
+  const double t = (c - a).dot(d);
+  return t > 0 && t < d.squaredNorm();
+}
+
+/// s and t cross, or an end of one touches the other's interior; a shared end is no contact.
+bool segmentsMeet(const BoundarySegment& s, const BoundarySegment& t) {
+  const bool sharedEnd = s.a == t.a || s.a == t.b || s.b == t.a || s.b == t.b;
+  using predicates::orient2d;
+  const double o1 = orient2d(s.a.data(), s.b.data(), t.a.data()), o2 = orient2d(s.a.data(), s.b.data(), t.b.data());
+  const double o3 = orient2d(t.a.data(), t.b.data(), s.a.data()), o4 = orient2d(t.a.data(), t.b.data(), s.b.data());
+  if (((o1 > 0 && o2 < 0) || (o1 < 0 && o2 > 0)) && ((o3 > 0 && o4 < 0) || (o3 < 0 && o4 > 0))) return true;
+  if (sharedEnd) return false;
+  return (o1 == 0 && insideCollinear(s.a, s.b, t.a)) || (o2 == 0 && insideCollinear(s.a, s.b, t.b)) ||
+         (o3 == 0 && insideCollinear(t.a, t.b, s.a)) || (o4 == 0 && insideCollinear(t.a, t.b, s.b));
+}
+
+}  // namespace
+
+std::vector<int> crossingSegments(const BoundarySegments& bs) {
+  const auto& segs = bs.segments;
+  const int n = static_cast<int>(segs.size());
+  std::vector<char> crossing(static_cast<std::size_t>(n), 0);
+  if (n < 3) return {};
+  const SegmentGrid grid(segs, bs.box);
+  std::vector<int> stamp(static_cast<std::size_t>(n), -1);
+  for (int s = 0; s < n; ++s) {
+    Box2 sb;
+    sb.add(segs[s].a);
+    sb.add(segs[s].b);
+    grid.forCells(sb, [&](int c) {
+      for (const int t : grid.cell(c)) {
+        if (t <= s || stamp[t] == s) continue;  // each pair once
+        stamp[t] = s;
+        if (segmentsMeet(segs[s], segs[t])) crossing[s] = crossing[t] = 1;
+      }
+    });
+  }
+  std::vector<int> out;
+  for (int s = 0; s < n; ++s)
+    if (crossing[s]) out.push_back(s);
+  return out;
 }
 
 }  // namespace aniso

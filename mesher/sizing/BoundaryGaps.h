@@ -58,4 +58,12 @@ std::vector<BoundaryGap> findBoundaryGaps(const ControlSpace2d& cs, const Bounda
 /// Returns cap when there are no segments.
 double thinFaceWidth(const BoundarySegments& segs, const std::vector<BoundaryGap>& gaps, double cap);
 
+/// The segments that cross another segment of the face's loops, or touch its interior with
+/// an end, other than at a shared end (exact orientation tests): a boundary whose polygons
+/// cross in (u, v) cannot be triangulated (two CAD edges a few micrometres apart, each
+/// discretized by its own chords: KiCad's KBPC bridge rectifier, a crescent face between two
+/// arcs 2-5 um apart, its chords 0.19 mm long deviating by more than the gap). Ascending,
+/// each once. Deterministic.
+std::vector<int> crossingSegments(const BoundarySegments& segs);
+
 }  // namespace aniso

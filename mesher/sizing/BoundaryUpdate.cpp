@@ -106,12 +106,12 @@ BoundaryUpdateStats updateFromBoundary(CSAdaptive2d& cs, const FaceBoundary& bou
   for (const BoundaryGap& g : gaps)
     if (g.metricWidth < lMin) gapLength += bs.segments[g.segment].length;
   const bool strip = gapLength > options.stripFraction * total;
-  if (!options.vicinity && !strip && !(stats.faceMinSize < options.hMin)) gaps.clear();
+  if ((!options.vicinity && !strip && !(stats.faceMinSize < options.hMin)) || options.crossingsOnly) gaps.clear();
   const double hMin = stats.faceMinSize;
   std::vector<Source> sources;
   for (const BoundarySegment& sg : bs.segments) {
     const Vec2 mid = 0.5 * (sg.a + sg.b);
-    if (!(sg.length > 0)) continue;
+    if (!(sg.length > 0) || options.crossingsOnly) continue;
     if ((cs.getMetric(mid).transformation() * (sg.b - sg.a)).norm() < lMin) {
       // The segment's ends and midpoint: control elements can be much smaller than a
       // segment in (u, v) (a strip thin in u but long in v), and a single point source would
@@ -122,6 +122,14 @@ BoundaryUpdateStats updateFromBoundary(CSAdaptive2d& cs, const FaceBoundary& bou
         ++stats.shortSegments;
       }
     }
+  }
+  for (const int c : crossingSegments(bs)) {
+    const BoundarySegment& sg = bs.segments[static_cast<std::size_t>(c)];
+    const Metric2d src = Metric2d::isotropic(std::max(0.5 * sg.length, hMin));
+    const Vec2 mid = 0.5 * (sg.a + sg.b);
+    if (!wouldChange(cs, mid, src, params.metricDifferenceEps)) continue;
+    for (const Vec2& p : {sg.a, mid, sg.b}) sources.push_back({p, src});
+    ++stats.crossings;
   }
   const double narrowest = hMin < options.hMin ? kThinFaceResolvedGap * hMin : options.resolvedGapRatio * hMin;
   for (const BoundaryGap& g : gaps) {

@@ -22,6 +22,12 @@
 //     forced by the CAD go U_Joint_2 52 → 26, Block 4 → 0, wing_fuselage 36 → 0,
 //     SampleCrankshaft 3 → 1, SlenderSurface 108 → 0, the others unchanged.
 //
+//   - crossing boundary (crossingSegments, BoundaryGaps.h): segments whose chords cross
+//     another side in (u, v) (two CAD edges closer than their chords' deviation) ask for
+//     half their length at their ends and midpoint (never below h_min), so that the next
+//     round's chords follow their curves closer; after the rounds a boundary still crossing
+//     fails the face as before. A face whose boundary does not cross gets no such source.
+//
 // The face's own h_min (faceMinSize): sizes never go below h_min, except on a thin face —
 // one whose boundary width (thinFaceWidth, BoundaryGaps.h, the mean over the boundary of
 // the gap widths capped at h_min) is below thinFaceWidth · h_min, like a strip narrower
@@ -53,8 +59,9 @@ struct BoundaryUpdateStats {
   int shortSegments = 0;   ///< sources from segments too short for the face's metric
   int gaps = 0;            ///< sources from boundary vicinity
   int unresolvedGaps = 0;  ///< gaps too narrow to resolve (no source)
+  int crossings = 0;       ///< segments crossing another one, given half their length
   double faceMinSize = 0;  ///< h_min_f used
-  int total() const { return shortSegments + gaps; }
+  int total() const { return shortSegments + gaps + crossings; }
 };
 
 struct BoundaryUpdateOptions {
@@ -69,6 +76,9 @@ struct BoundaryUpdateOptions {
   double thinFaceRatio = 0.1;     ///< lowest h_min_f, relative to h_min
   double cadTolerance = 0;        ///< the face's CAD tolerance (model units)
   double resolvedGapRatio = 2.0;  ///< narrower gaps (relative to h_min) get no source, thin faces aside
+  /// Only the crossing rule (the rounds after alg. 3.1's: a boundary the last round's
+  /// sources made cross, since the sides of a gap are refined unequally).
+  bool crossingsOnly = false;
 };
 
 /// h_min_f of the rules above for a face whose boundary width is `width`.
