@@ -181,6 +181,8 @@ bool proximityRounds(const VolumeStagesInput& in, VolumeMesherInput& vin, UserSi
              std::to_string(failedFaces(finer)) + " faces unmeshed, " + std::to_string(failedFaces(r.surface)) + " before");
       return false;
     }
+    // a face's source may be several boxes (clear of cusp edges), consecutive: one entry
+    faceSizes.erase(std::unique(faceSizes.begin(), faceSizes.end()), faceSizes.end());
     px.facesRefined += faceSizes.size();
     for (const auto& [f, h] : faceSizes) px.refined.push_back({f, h * roundFactor});
     if (!first) first = FirstSurface{std::move(r.surface), r.surfaceRepair};

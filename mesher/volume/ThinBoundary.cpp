@@ -16,6 +16,118 @@ namespace aniso {
 
 namespace {
 
+/// The outward normals of faces f and g at the middle of edge e, dotted (nullopt when one
+/// of them has no pcurve or surface there).
+std::optional<double> normalsAtEdgeMiddle(const Model& model, const ModelEdge& e, int f, int g) {
+  const double tm = 0.5 * (e.t0 + e.t1);
+  std::optional<Vec3> nf, ng;
+  for (const PCurve& pc : e.pcurves) {
+    if ((pc.face != f && pc.face != g) || !pc.curve) continue;
+    const ModelFace& face = model.faces[static_cast<std::size_t>(pc.face)];
+    if (!face.surface) continue;
+    const Vec3 nn = face.surface->normal(pc.curve->point(tm));
+    (pc.face == f ? nf : ng) = face.reversed ? Vec3(-nn) : nn;
+  }
+  if (!nf || !ng) return std::nullopt;
+  return nf->dot(*ng);
+}
+
+/// Does edge e close a cusp between faces f and g (their normals opposed within `angle`)?
+bool closesCusp(const Model& model, const ModelEdge& e, int f, int g, double angle = kCuspAngle) {
+  if (e.degenerate) return false;
+  const std::optional<double> d = normalsAtEdgeMiddle(model, e, f, g);
+  return d && *d < -std::cos(angle);
+}
+
+/// The point of face f a distance `step` (about) from the middle of edge e, straight into the
+/// face across the edge (its loops: the face on the left of each use in (u, v), on the right
+/// for a reversed face); nullopt when e is not in f's loops or has no pcurve there.
+std::optional<Vec3> intoFace(const Model& model, int edge, int f, double step) {
+  const ModelFace& face = model.faces[static_cast<std::size_t>(f)];
+  const ModelEdge& e = model.edges[static_cast<std::size_t>(edge)];
+  if (!face.surface) return std::nullopt;
+  for (const Loop& loop : face.loops)
+    for (const EdgeUse& use : loop.uses) {
+      if (use.edge != edge || use.pcurve < 0 || static_cast<std::size_t>(use.pcurve) >= e.pcurves.size()) continue;
+      const PCurve& pc = e.pcurves[static_cast<std::size_t>(use.pcurve)];
+      if (!pc.curve) continue;
+      const Curve2dD2 c = pc.curve->d2(0.5 * (e.t0 + e.t1));
+      const Vec2 along = use.reversed ? Vec2(-c.d1) : Vec2(c.d1);
+      Vec2 in(-along.y(), along.x());  // left of the use
+      if (face.reversed) in = -in;
+      const SurfaceD1 d = face.surface->d1(c.p);
+      const double speed = (d.pu * in.x() + d.pv * in.y()).norm();
+      if (!(speed > 0) || loop.slit) continue;
+      return face.surface->point(c.p + in * (step / speed));
+    }
+  return std::nullopt;
+}
+
+/// Do faces f and g, tangent along edge e with opposed normals, hold material between them
+/// (a wedge of zero angle: the wall pinched between two battery cradles) rather than a void
+/// (a rod lying on a plate)? Then g lies on the inner side of f next to the edge.
+bool materialBetween(const Model& model, int edge, int f, int g) {
+  // the faces must part by this fraction of the step (a cusp between a cylinder of radius r
+  // and a plane opens by step / 2r: battery cradles, 0.005–0.01)
+  constexpr double kOpening = 1e-3;
+  const ModelEdge& e = model.edges[static_cast<std::size_t>(edge)];
+  const double step = 1e-3 * model.diagonal();
+  const std::optional<Vec3> pf = intoFace(model, edge, f, step), pg = intoFace(model, edge, g, step);
+  if (!pf || !pg || !e.curve) return false;
+  const ModelFace& ff = model.faces[static_cast<std::size_t>(f)];
+  for (const PCurve& pc : e.pcurves)
+    if (pc.face == f && pc.curve) {
+      const Vec3 n = ff.surface->normal(pc.curve->point(0.5 * (e.t0 + e.t1)));
+      // below: g inside f, by a second-order opening (coincident faces of two parts open by none)
+      return (ff.reversed ? Vec3(-n) : n).dot(*pg - *pf) < -kOpening * step;
+    }
+  return false;
+}
+
+/// Samples along an edge for its box.
+constexpr int kEdgeBoxSamples = 16;
+
+/// The boxes of the model's tangent cusp edges (two faces tangent along them, closing a cusp
+/// of zero angle, kTangentCuspAngle, with material between them).
+std::vector<Box3> cuspEdgeBoxes(const Model& model) {
+  std::vector<Box3> out;
+  for (std::size_t k = 0; k < model.edges.size(); ++k) {
+    const ModelEdge& e = model.edges[k];
+    if (!e.curve) continue;
+    bool cusp = false;  // any two of its faces (an imprinted contact line has four)
+    for (std::size_t i = 0; i < e.faces.size() && !cusp; ++i)
+      for (std::size_t j = i + 1; j < e.faces.size() && !cusp; ++j)
+        cusp = closesCusp(model, e, e.faces[i], e.faces[j], kTangentCuspAngle) &&
+               materialBetween(model, static_cast<int>(k), e.faces[i], e.faces[j]);
+    if (!cusp) continue;
+    Box3 b;
+    for (int k = 0; k <= kEdgeBoxSamples; ++k) b.add(e.curve->point(e.t0 + (e.t1 - e.t0) * k / kEdgeBoxSamples));
+    out.push_back(b);
+  }
+  return out;
+}
+
+/// Box a without box c: up to six slabs of a outside c (a itself when they do not overlap).
+std::vector<Box3> boxMinus(Box3 a, const Box3& c) {
+  if ((a.hi.array() <= c.lo.array()).any() || (a.lo.array() >= c.hi.array()).any()) return {a};
+  std::vector<Box3> out;
+  for (int k = 0; k < 3; ++k) {
+    if (a.lo[k] < c.lo[k]) {
+      Box3 slab = a;
+      slab.hi[k] = c.lo[k];
+      out.push_back(slab);
+      a.lo[k] = c.lo[k];
+    }
+    if (a.hi[k] > c.hi[k]) {
+      Box3 slab = a;
+      slab.lo[k] = c.hi[k];
+      out.push_back(slab);
+      a.hi[k] = c.hi[k];
+    }
+  }
+  return out;  // what is left of a lies in c
+}
+
 /// The CAD faces around the solid's boundary nodes (with the outward normal of each node's
 /// triangles on each), and whether two faces close a cusp (meet along an edge at an angle
 /// below kCuspAngle; asked per pair, remembered): what tells a cusp from a thin wall
@@ -60,17 +172,7 @@ class FaceNeighbourhood {
     for (const Loop& loop : model_.faces[static_cast<std::size_t>(f)].loops)
       for (const EdgeUse& use : loop.uses) {
         const ModelEdge& e = model_.edges[static_cast<std::size_t>(use.edge)];
-        if (e.degenerate || std::find(e.faces.begin(), e.faces.end(), g) == e.faces.end()) continue;
-        const double tm = 0.5 * (e.t0 + e.t1);
-        std::optional<Vec3> nf, ng;
-        for (const PCurve& pc : e.pcurves) {
-          if ((pc.face != f && pc.face != g) || !pc.curve) continue;
-          const ModelFace& face = model_.faces[static_cast<std::size_t>(pc.face)];
-          if (!face.surface) continue;
-          const Vec3 nn = face.surface->normal(pc.curve->point(tm));
-          (pc.face == f ? nf : ng) = face.reversed ? Vec3(-nn) : nn;
-        }
-        if (nf && ng && nf->dot(*ng) < -std::cos(kCuspAngle)) return true;
+        if (std::find(e.faces.begin(), e.faces.end(), g) != e.faces.end() && closesCusp(model_, e, f, g)) return true;
       }
     return false;
   }
@@ -146,6 +248,8 @@ std::vector<SizingSource> thinSources(const std::vector<ThinSpot>& spots, double
     for (const auto& [face, a] : byFace)
       for (const int s : a.solids)
         if (!solidFaces.count(s)) solidFaces[s] = model->solidBoundaryFaces(s);
+  // the sources stay clear of cusp edges (ThinBoundary.h)
+  const std::vector<Box3> cusps = model ? cuspEdgeBoxes(*model) : std::vector<Box3>();
   std::vector<SizingSource> out;
   for (auto& [face, a] : byFace) {
     // the face's thickness: a low quantile of its spots', not the smallest
@@ -163,8 +267,22 @@ std::vector<SizingSource> thinSources(const std::vector<ThinSpot>& spots, double
         src.faces.erase(std::unique(src.faces.begin(), src.faces.end()), src.faces.end());
       }
     }
-    out.push_back(src);
-    if (faces) faces->push_back({face, *q});
+    std::vector<Box3> pieces = {Box3{src.a, src.b}};
+    for (const Box3& c : cusps) {
+      Box3 clear = c;
+      clear.lo -= Vec3::Constant(kCuspClearance * *q);
+      clear.hi += Vec3::Constant(kCuspClearance * *q);
+      std::vector<Box3> next;
+      for (const Box3& p : pieces)
+        for (const Box3& r : boxMinus(p, clear)) next.push_back(r);
+      pieces.swap(next);
+    }
+    for (const Box3& p : pieces) {
+      src.a = p.lo;
+      src.b = p.hi;
+      out.push_back(src);
+      if (faces) faces->push_back({face, *q});
+    }
   }
   return out;
 }

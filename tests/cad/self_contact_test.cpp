@@ -22,6 +22,7 @@
 
 #include "cad/CadModel.h"
 #include "mesher/pipeline/Pipeline.h"
+#include "mesher/volume/ThinBoundary.h"
 #include "tests/cad/mesh_volume.h"
 
 namespace aniso::cad {
@@ -77,6 +78,35 @@ TEST(SelfContact, TheLineWhereTwoBoresTouchBecomesAnEdgeOfBoth) {
   // rule 186 of their triangles were reported thin
   EXPECT_EQ(m.proximity.thinTrianglesLeft, 0u);
   EXPECT_NEAR(meshVolume(m.volume.mesh), volume, 0.01 * volume);
+}
+
+// A thin-wall source (ThinBoundary.h) whose box would cover the contact line leaves it out,
+// with kCuspClearance times its size around it: finer triangles at a cusp make its tets
+// flatter (the battery holders at the defaults, 1.09-1.58 deg with the line inside a box).
+TEST(SelfContact, ThinSourcesStayClearOfTheContactLine) {
+  const std::string path = blockWithTangentBores();
+  CadModel cad = CadModel::read(path);
+  cad.prepare({});
+  std::filesystem::remove(path);
+  const Model model = cad.topology();
+  const double thickness = 0.05;
+  std::vector<ThinSpot> spots;
+  for (const Vec3& c : {Vec3(0, 0, 0), Vec3(6, 10, 8), Vec3(3, 1, 1)}) spots.push_back({0, c, 1.0, thickness, 0});
+  std::vector<std::pair<int, double>> faces;
+  const std::vector<SizingSource> sources = thinSources(spots, 1e-3, &faces, &model);
+  ASSERT_GT(sources.size(), 1u);  // the face's box, less the line's
+  ASSERT_EQ(faces.size(), sources.size());
+  const auto covered = [&](const Vec3& x) {
+    return std::any_of(sources.begin(), sources.end(), [&](const SizingSource& s) { return s.contains(x); });
+  };
+  const double clear = kCuspClearance * thickness;
+  for (const double x : {0.0, 3.0, 6.0}) {
+    EXPECT_FALSE(covered(Vec3(x, 5, 4))) << x;  // on the line
+    EXPECT_FALSE(covered(Vec3(x, 5 + 0.9 * clear, 4 - 0.9 * clear))) << x;
+  }
+  EXPECT_TRUE(covered(Vec3(3, 1, 1)));
+  EXPECT_TRUE(covered(Vec3(3, 5 + 1.1 * clear, 4)));
+  EXPECT_TRUE(covered(Vec3(3, 5, 4 + 1.1 * clear)));
 }
 
 }  // namespace
