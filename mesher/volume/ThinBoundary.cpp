@@ -48,7 +48,7 @@ std::optional<Vec3> intoFace(const Model& model, int edge, int f, double step) {
   if (!face.surface) return std::nullopt;
   for (const Loop& loop : face.loops)
     for (const EdgeUse& use : loop.uses) {
-      if (use.edge != edge || use.pcurve < 0 || static_cast<std::size_t>(use.pcurve) >= e.pcurves.size()) continue;
+      if (loop.slit || use.edge != edge || use.pcurve < 0 || static_cast<std::size_t>(use.pcurve) >= e.pcurves.size()) continue;
       const PCurve& pc = e.pcurves[static_cast<std::size_t>(use.pcurve)];
       if (!pc.curve) continue;
       const Curve2dD2 c = pc.curve->d2(0.5 * (e.t0 + e.t1));
@@ -57,7 +57,7 @@ std::optional<Vec3> intoFace(const Model& model, int edge, int f, double step) {
       if (face.reversed) in = -in;
       const SurfaceD1 d = face.surface->d1(c.p);
       const double speed = (d.pu * in.x() + d.pv * in.y()).norm();
-      if (!(speed > 0) || loop.slit) continue;
+      if (!(speed > 0)) continue;
       return face.surface->point(c.p + in * (step / speed));
     }
   return std::nullopt;
@@ -67,8 +67,8 @@ std::optional<Vec3> intoFace(const Model& model, int edge, int f, double step) {
 /// (a wedge of zero angle: the wall pinched between two battery cradles) rather than a void
 /// (a rod lying on a plate)? Then g lies on the inner side of f next to the edge.
 bool materialBetween(const Model& model, int edge, int f, int g) {
-  // the faces must part by this fraction of the step (a cusp between a cylinder of radius r
-  // and a plane opens by step / 2r: battery cradles, 0.005–0.01)
+  // the faces must part by this fraction of the step (a cylinder of radius r tangent to a
+  // plane parts from it by step² / 2r, step / 2r of the step: battery cradles, 0.005–0.01)
   constexpr double kOpening = 1e-3;
   const ModelEdge& e = model.edges[static_cast<std::size_t>(edge)];
   const double step = 1e-3 * model.diagonal();
@@ -101,7 +101,7 @@ std::vector<Box3> cuspEdgeBoxes(const Model& model) {
                materialBetween(model, static_cast<int>(k), e.faces[i], e.faces[j]);
     if (!cusp) continue;
     Box3 b;
-    for (int k = 0; k <= kEdgeBoxSamples; ++k) b.add(e.curve->point(e.t0 + (e.t1 - e.t0) * k / kEdgeBoxSamples));
+    for (int i = 0; i <= kEdgeBoxSamples; ++i) b.add(e.curve->point(e.t0 + (e.t1 - e.t0) * i / kEdgeBoxSamples));
     out.push_back(b);
   }
   return out;
