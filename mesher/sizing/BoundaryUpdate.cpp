@@ -98,7 +98,9 @@ BoundaryUpdateStats updateFromBoundary(CSAdaptive2d& cs, const FaceBoundary& bou
   const double lMin = 1.0 / params.adaptLengthMax;  // 1 / l_Mmax
   const BoundarySegments bs = boundarySegments(cs, boundary);
   if (bs.segments.empty()) return stats;
-  std::vector<BoundaryGap> gaps = findBoundaryGaps(cs, bs, lMin, options.hMin);
+  // the crossing rounds of a volume mesh need no gaps (no thin face: h_min_f is h_min)
+  std::vector<BoundaryGap> gaps;
+  if (!options.crossingsOnly || options.thinFaces) gaps = findBoundaryGaps(cs, bs, lMin, options.hMin);
   stats.faceMinSize = faceMinSize(thinFaceWidth(bs, gaps, options.hMin), options);
   // A strip: most of its boundary faces another side across a gap.
   double gapLength = 0, total = 0;

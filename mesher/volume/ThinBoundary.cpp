@@ -16,18 +16,23 @@ namespace aniso {
 
 namespace {
 
+/// The outward normal of face f at the middle of edge e (nullopt when e has no pcurve on f
+/// or f no surface).
+std::optional<Vec3> outwardNormalAtMiddle(const Model& model, const ModelEdge& e, int f) {
+  const ModelFace& face = model.faces[static_cast<std::size_t>(f)];
+  if (!face.surface) return std::nullopt;
+  for (const PCurve& pc : e.pcurves)
+    if (pc.face == f && pc.curve) {
+      const Vec3 n = face.surface->normal(pc.curve->point(0.5 * (e.t0 + e.t1)));
+      return face.reversed ? Vec3(-n) : n;
+    }
+  return std::nullopt;
+}
+
 /// The outward normals of faces f and g at the middle of edge e, dotted (nullopt when one
 /// of them has no pcurve or surface there).
 std::optional<double> normalsAtEdgeMiddle(const Model& model, const ModelEdge& e, int f, int g) {
-  const double tm = 0.5 * (e.t0 + e.t1);
-  std::optional<Vec3> nf, ng;
-  for (const PCurve& pc : e.pcurves) {
-    if ((pc.face != f && pc.face != g) || !pc.curve) continue;
-    const ModelFace& face = model.faces[static_cast<std::size_t>(pc.face)];
-    if (!face.surface) continue;
-    const Vec3 nn = face.surface->normal(pc.curve->point(tm));
-    (pc.face == f ? nf : ng) = face.reversed ? Vec3(-nn) : nn;
-  }
+  const std::optional<Vec3> nf = outwardNormalAtMiddle(model, e, f), ng = outwardNormalAtMiddle(model, e, g);
   if (!nf || !ng) return std::nullopt;
   return nf->dot(*ng);
 }
@@ -70,18 +75,11 @@ bool materialBetween(const Model& model, int edge, int f, int g) {
   // the faces must part by this fraction of the step (a cylinder of radius r tangent to a
   // plane parts from it by step² / 2r, step / 2r of the step: battery cradles, 0.005–0.01)
   constexpr double kOpening = 1e-3;
-  const ModelEdge& e = model.edges[static_cast<std::size_t>(edge)];
   const double step = 1e-3 * model.diagonal();
   const std::optional<Vec3> pf = intoFace(model, edge, f, step), pg = intoFace(model, edge, g, step);
-  if (!pf || !pg || !e.curve) return false;
-  const ModelFace& ff = model.faces[static_cast<std::size_t>(f)];
-  for (const PCurve& pc : e.pcurves)
-    if (pc.face == f && pc.curve) {
-      const Vec3 n = ff.surface->normal(pc.curve->point(0.5 * (e.t0 + e.t1)));
-      // below: g inside f, by a second-order opening (coincident faces of two parts open by none)
-      return (ff.reversed ? Vec3(-n) : n).dot(*pg - *pf) < -kOpening * step;
-    }
-  return false;
+  const std::optional<Vec3> n = outwardNormalAtMiddle(model, model.edges[static_cast<std::size_t>(edge)], f);
+  // below: g inside f, by a second-order opening (coincident faces of two parts open by none)
+  return pf && pg && n && n->dot(*pg - *pf) < -kOpening * step;
 }
 
 /// Samples along an edge for its box.

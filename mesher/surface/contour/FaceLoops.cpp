@@ -240,9 +240,12 @@ void alignToBox(std::vector<BoundaryNode>& loop, const Box2& ref, const Vec2& pe
   for (BoundaryNode& n : loop) n.uv += shift;
 }
 
-/// Gives every node the same (u, v) wherever it occurs within `tol` of an earlier copy
-/// (in loop order), so that one point is one point for the face mesher.
-void snapCopies(std::vector<std::vector<BoundaryNode>>& loops, double tol, const std::function<double(int, const Vec2&)>& nodeTol) {
+/// Gives every node the same (u, v) wherever it occurs within max(`tol`, nodeTol(node, uv))
+/// of its first copy (nodeTol: a vertex's CAD tolerance in (u, v)), so that one point is one
+/// point for the face mesher; copies next to each other in a loop, or made by a bridge, are
+/// a pole and move only within `tol`.
+void snapCopies(std::vector<std::vector<BoundaryNode>>& loops, double tol,
+                const std::function<double(int, const Vec2&)>& nodeTol) {
   std::vector<std::array<int, 3>> refs;  // (node, loop, index)
   for (std::size_t l = 0; l < loops.size(); ++l)
     for (std::size_t i = 0; i < loops[l].size(); ++i)
