@@ -61,7 +61,8 @@ class Recovery {
     collectMissing();
     s.missingEdges = static_cast<long long>(missingEdges_.size());
     s.missingFaces = static_cast<long long>(missingFaces_.size());
-    if (selfCrossings(r)) return r;
+    r.selfCrossing = selfCrossings(r);
+    if (r.selfCrossing && !opt_.pastSelfCrossings) return r;
     for (int phase = 0; phase < RecoveryStats::kPhases; ++phase) {
       if (phase == 1 && !opt_.interiorPoints) break;
       const std::size_t e0 = missingEdges_.size(), f0 = missingFaces_.size();

@@ -10,7 +10,8 @@
 // of an assembly and must stay as it is). Present boundary faces are marked constrained
 // as soon as they are present, and present boundary edges are never flipped away.
 // A solid whose missing edges cross present boundary entities (its boundary mesh
-// intersects itself, BoundaryCrossing.h) is not recovered at all: it is returned at once.
+// intersects itself, BoundaryCrossing.h) is not recovered at all: it is returned at once
+// (unless pastSelfCrossings: the last resort recovers what it can around the crossings).
 // Pipe reduction is not tried again on an entity whose pipe (the entities crossing it) is
 // the same as when it last failed: flips alone gave up on that configuration.
 // Entities left missing are returned, naming the CAD face (1-based) they lie on.
@@ -33,6 +34,9 @@ struct RecoveryOptions {
   /// present within a round or two; those that do not only make the next rounds longer).
   int maxStalledRounds = 2;
   bool interiorPoints = true;    ///< phase 2 (interior Steiner points)
+  /// When the boundary mesh intersects itself: recover the other entities all the same
+  /// (the crossing ones stay missing; VolumeMesher's last resort, CarveAroundHoles.h).
+  bool pastSelfCrossings = false;
   /// Checked every round (Cancel.h); null: never stops.
   const CancelToken* cancel = nullptr;
 };
@@ -59,6 +63,7 @@ struct RecoveryResult {
   /// (BoundaryCrossing.h): the missing edges that cross a present boundary entity, each
   /// followed by the entity it crosses, found before any recovery is tried.
   std::vector<RecoveryFailure> left;
+  bool selfCrossing = false;  ///< the boundary mesh intersects itself (left starts with the crossings)
 };
 
 /// Recovers the boundary in `bt.tets` (kernel from triangulateBoundary). On return every

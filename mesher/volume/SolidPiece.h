@@ -17,6 +17,8 @@ struct SolidPiece {
   std::vector<Vec3> inner;
   std::vector<std::vector<int>> missing;  ///< surface nodes of the boundary edges/triangles not recovered
   std::vector<ThinSpot> thin;
+  /// Hull faces that are no boundary triangle, numbered as `tets` (VolumeMesh::patchFaces).
+  std::vector<std::array<int, 3>> patches;
   /// Meshed to the end (refined, improved, measured): not stopped at a thin boundary
   /// (VolumeMesherInput::stopWhenThin) nor by a failure.
   bool complete = false;

@@ -63,6 +63,11 @@ std::vector<std::string> validateSolidTetMesh(const SolidTetMesh& s,
     if (!hull.count(key)) ++notHull;
     if (!constrained.count(key)) ++notConstrained;
   }
+  for (const auto& key : s.patchFaces) {  // hull faces closing the holes (CarveAroundHoles.h)
+    ++expected[key];
+    if (!hull.count(key)) ++notHull;
+    if (!constrained.count(key)) ++notConstrained;
+  }
   for (const auto& tri : embeddedTriangles) {  // constrained in both of its tets
     Key key;
     if (!keyOf(tri, key)) {

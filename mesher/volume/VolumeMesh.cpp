@@ -41,6 +41,11 @@ std::vector<std::string> VolumeMesh::validate() const {
     std::sort(k.begin(), k.end());
     boundary.insert(k);
   }
+  for (const auto& tri : patchFaces) {
+    Key k = tri;
+    std::sort(k.begin(), k.end());
+    boundary.insert(k);
+  }
   long long overUsed = 0, openFaces = 0;
   for (const auto& [k, uses] : faceUses) {
     if (uses > 2) ++overUsed;

@@ -11,6 +11,11 @@
 //
 // Tetrahedra are positively oriented: (p1 − p0) · ((p2 − p0) × (p3 − p0)) > 0, the order
 // Gmsh's type 4 and Abaqus' C3D4 expect.
+//
+// The exception: a solid whose boundary recovery left triangles out, meshed around those
+// holes as a last resort (CarveAroundHoles.h, the solid's outcome degraded): its missing
+// triangles are faces of no tetrahedron, and `patchFaces` lists the tetrahedron faces
+// that close the holes instead.
 #include <array>
 #include <string>
 #include <vector>
@@ -28,12 +33,15 @@ struct VolumeMesh {
   /// Writers permute to their format's order (Gmsh type 11 and Abaqus C3D10 differ).
   std::vector<std::array<int, 6>> tetMid;
   static constexpr int kTetEdges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+  /// Faces of one tetrahedron that are no boundary triangle: the patches closing the holes
+  /// of solids meshed around unrecovered triangles (see above). Empty but for those.
+  std::vector<std::array<int, 3>> patchFaces;
 
   const std::vector<Vec3>& nodes() const { return surface.nodes; }
 
   /// Structural checks, one message per problem: indices in range, positive volumes, no
   /// repeated tetrahedron, every tetrahedron face shared by at most two tetrahedra, every
-  /// tetrahedron face used once being a boundary triangle. Empty when valid.
+  /// tetrahedron face used once being a boundary triangle or a patch face. Empty when valid.
   std::vector<std::string> validate() const;
 };
 

@@ -12,6 +12,7 @@
 #include <mutex>
 #include <optional>
 #include <thread>
+#include <tuple>
 
 #include <Eigen/Geometry>
 
@@ -20,6 +21,7 @@
 #include "mesher/core/ParallelFor.h"
 #include "mesher/volume/BoundaryMesh.h"
 #include "mesher/volume/BoundaryTriangulation.h"
+#include "mesher/volume/CarveAroundHoles.h"
 #include "mesher/volume/CarveSolid.h"
 #include "mesher/volume/CrackSplit.h"
 #include "mesher/volume/SolidMeshCache.h"
@@ -71,7 +73,9 @@ void reportLeft(SolidPiece& p, int solid, const SurfaceMesh& surface, const std:
              " (e.g. " + e.second + ")");
 }
 
-void extract(const SolidTetMesh& s, SolidPiece& p) {
+/// The solid's tets into p; for a solid meshed around holes, with the boundary triangles
+/// kept on its hull (`keptTriangles`), its patch faces too.
+void extract(const SolidTetMesh& s, SolidPiece& p, const std::vector<std::array<int, 3>>* keptTriangles) {
   const del3d::TetMesh& m = s.mesh;
   std::vector<int> freeIndex(m.numVertices(), 0);
   p.tets.reserve(m.numTets());  // sized once: no doubling at the peak memory of the run
@@ -92,6 +96,28 @@ void extract(const SolidTetMesh& s, SolidPiece& p) {
       q[i] = -freeIndex[v.index];
     }
     p.tets.push_back(q);
+  }
+  if (!s.patchFaces.empty()) {  // a solid meshed around holes: its hull faces that are no boundary triangle
+    std::set<std::array<int, 3>> boundary;
+    for (const auto& tri : *keptTriangles) {
+      std::array<int, 3> k = tri;
+      std::sort(k.begin(), k.end());
+      boundary.insert(k);
+    }
+    for (std::uint32_t k = 0; k < m.tetSlots(); ++k) {
+      const del3d::TetId t(k);
+      if (!m.isAlive(t)) continue;
+      for (int i = 0; i < 4; ++i) {
+        if (m.neighbour(t, i).valid()) continue;
+        std::array<int, 3> f, key;
+        for (int j = 0; j < 3; ++j) {
+          const std::uint32_t v = m.vertex(t, del3d::kFaceVertex[i][j]).index;
+          f[j] = key[j] = s.node[v] >= 0 ? s.node[v] : -freeIndex[v];
+        }
+        std::sort(key.begin(), key.end());
+        if (!boundary.count(key)) p.patches.push_back(f);
+      }
+    }
   }
   double vol = 0;
   for (std::uint32_t k = 0; k < m.tetSlots(); ++k) {
@@ -134,19 +160,23 @@ bool findThin(SolidPiece& p, const BoundaryTriangulation& bt, const Model& model
   return !p.thin.empty();
 }
 
-/// A solid stopped after carving, its phase 4 still to run (finishSolid).
+/// A solid stopped after carving, its phase 4 still to run (finishSolid); or stopped after
+/// a recovery that left entities out (rescueSolid).
 struct SolidWork {
   BoundaryMesh b;
   BoundaryTriangulation bt;
+  bool selfCrossing = false;  ///< recovery stopped at once: the boundary mesh intersects itself
 };
 
 void finishSolid(const VolumeMesherInput& in, const std::vector<std::vector<int>>& faceTriangles, int solid,
                  SolidPiece& p, const BoundaryMesh& b, BoundaryTriangulation& bt);
 
 /// Phases 1–3 and the thin test of one solid, then (keep null) phase 4. With `keep`, a solid
-/// recovered, carved and not thin stops there and its work moves into *keep.
+/// recovered, carved and not thin stops there and its work moves into *keep. With
+/// `unrecovered` (and not stopWhenThin), a solid whose recovery left entities out keeps its
+/// work there (for rescueSolid, once splitting has stopped).
 SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<int>>& faceTriangles, int solid,
-                     std::unique_ptr<SolidWork>* keep) {
+                     std::unique_ptr<SolidWork>* keep, std::unique_ptr<SolidWork>* unrecovered) {
   SolidPiece p;
   const CancelToken* cancel = in.options.cancel.get();
   checkCancel(cancel, "volume boundary");
@@ -191,6 +221,8 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
     }
     reportLeft(p, solid, *in.surface, rr.left);
     for (const RecoveryFailure& f : rr.left) p.missing.push_back(f.nodes);
+    if (unrecovered && !in.stopWhenThin)
+      *unrecovered = std::make_unique<SolidWork>(SolidWork{std::move(b), std::move(bt), rr.selfCrossing});
     return p;
   }
   p.outcome.times.emplace_back("volume recovery", since(t0));
@@ -266,8 +298,103 @@ void finishSolid(const VolumeMesherInput& in, const std::vector<std::vector<int>
     accumulateTetQuality(bt.tets, cs.get(), p.outcome.quality, cs.get(), metrics ? &*metrics : nullptr);
     p.outcome.times.emplace_back("volume quality", since(t0));
   }
-  extract(bt.tets, p);
+  extract(bt.tets, p, &b.triangles);
   p.complete = true;
+}
+
+/// A solid's piece and unrecovered work as a split round left them.
+struct SavedPiece {
+  SolidPiece piece;
+  std::unique_ptr<SolidWork> work;
+};
+
+/// The split round with the fewest boundary entities missing over all solids: its surface,
+/// the pieces of the solids meshed again since, and the result's split counters then.
+struct BestRound {
+  std::size_t missing = 0;
+  SurfaceMesh surface;
+  std::map<int, SavedPiece> saved;
+  std::tuple<int, int, int, int, int> counters;
+};
+
+/// The last resort for a solid whose recovery left entities out once splitting stopped
+/// (CarveAroundHoles.h): carved around the holes and finished, its outcome degraded and
+/// naming the faces; when the carving is refused (problems, or a volume off by more than
+/// kHoleVolumeTolerance) p stays failed, with a note why.
+void rescueSolid(const VolumeMesherInput& in, const std::vector<std::vector<int>>& faceTriangles, int solid,
+                 SolidPiece& p, SolidWork& work) {
+  auto t0 = Clock::now();
+  BoundaryTriangulation& bt = work.bt;
+  if (work.selfCrossing) {  // nothing was recovered: all but the crossing entities now
+    RecoveryOptions ro = in.recovery;
+    ro.cancel = in.options.cancel.get();
+    ro.pastSelfCrossings = true;
+    const RecoveryResult rr = recoverBoundary(bt, ro);
+    p.outcome.recovery = rr.stats;
+    p.outcome.times.emplace_back("volume recovery", since(t0));
+    t0 = Clock::now();
+  }
+  const HoleCarving hc = carveAroundHoles(bt.tets, bt.boundary, bt.box);
+  const double off = std::abs(hc.keptVolume - hc.enclosedVolume);
+  const double allowed = kHoleVolumeTolerance * std::abs(hc.enclosedVolume);
+  auto note = [&](const std::string& why) {
+    p.outcome.problems.push_back({solidRef(solid), Severity::Note, "holes-refused",
+                                  "not meshed around the boundary left out of recovery: " + why, "volume"});
+  };
+  logDebug(solidName(solid) + ": carving around holes: " + std::to_string(hc.notFound) +
+           " boundary triangles not recovered, " + std::to_string(hc.missing.size() - hc.notFound) +
+           " lost between the fronts, " + std::to_string(hc.patchFaces) + " patch faces; volume " +
+           std::to_string(hc.keptVolume) + " for " + std::to_string(hc.enclosedVolume));
+  if (!hc.problems.empty()) return note(hc.problems.front());
+  if (!(off <= allowed))
+    return note("the tetrahedra would enclose " + std::to_string(hc.keptVolume) + " for a boundary enclosing " +
+                std::to_string(hc.enclosedVolume));
+  SolidPiece q;
+  q.outcome.recovery = p.outcome.recovery;
+  q.outcome.times = p.outcome.times;
+  q.outcome.times.emplace_back("volume carving", since(t0));
+  // the triangles kept on the hull, for the validators (the patch faces are in bt.tets)
+  BoundaryMesh kept = work.b;
+  std::vector<std::uint8_t> gone(kept.triangles.size(), 0);
+  for (const std::size_t t : hc.missing) gone[t] = 1;
+  std::map<int, std::pair<int, double>> byFace;  // face -> (triangles, area)
+  std::size_t w = 0;
+  for (std::size_t t = 0; t < kept.triangles.size(); ++t) {
+    if (gone[t]) {
+      const auto& tri = kept.triangles[t];
+      const Vec3& a = in.surface->nodes[tri[0]];
+      auto& e = byFace[kept.triangleFace[t]];
+      ++e.first;
+      e.second += 0.5 * (in.surface->nodes[tri[1]] - a).cross(in.surface->nodes[tri[2]] - a).norm();
+      continue;
+    }
+    kept.triangles[w] = kept.triangles[t];
+    kept.triangleFace[w++] = kept.triangleFace[t];
+  }
+  kept.triangles.resize(w);
+  kept.triangleFace.resize(w);
+  if (!validated(q, in, bt.tets, kept, "carving around holes")) {
+    p.outcome.problems.insert(p.outcome.problems.end(), q.outcome.problems.begin(), q.outcome.problems.end());
+    return;
+  }
+  for (const auto& [face, e] : byFace) {
+    char area[32];
+    std::snprintf(area, sizeof area, "%.3g", e.second);
+    q.outcome.problems.push_back(
+        {EntityRef::face(face), Severity::Degraded, "recovery-holes",
+         std::to_string(e.first) + " boundary triangle" + (e.first > 1 ? "s" : "") + " (area " + area +
+             ") not faces of the tetrahedra of " + solidName(solid) +
+             ": recovery failed there; the volume mesh closes the gap with faces of its own",
+         "volume"});
+  }
+  q.outcome.counters.emplace_back("hole_triangles", static_cast<double>(hc.missing.size()));
+  q.outcome.counters.emplace_back("hole_patch_faces", static_cast<double>(hc.patchFaces));
+  finishSolid(in, faceTriangles, solid, q, kept, bt);
+  if (!q.complete) {
+    p.outcome.problems.insert(p.outcome.problems.end(), q.outcome.problems.begin(), q.outcome.problems.end());
+    return;
+  }
+  p = std::move(q);
 }
 
 /// Per model face: does one of its triangles have one of the edges?
@@ -403,6 +530,9 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
   std::vector<char> reused(static_cast<std::size_t>(ns), 0);  // taken from in.cache
   // With stopWhenThin, phase 4 waits until every solid's thin test is known (solidsNearThin).
   std::vector<std::unique_ptr<SolidWork>> work(static_cast<std::size_t>(ns));
+  // Solids whose recovery left entities out, for rescueSolid once splitting stops.
+  std::vector<std::unique_ptr<SolidWork>> unrecovered(static_cast<std::size_t>(ns));
+  bool splitStopped = false;  // the split rounds ended with the surface of the last meshing
   std::vector<int> todo(static_cast<std::size_t>(ns));
   for (int s = 0; s < ns; ++s) todo[s] = s;
   // A crack triangle with every node on the crack's front could not open: split first.
@@ -413,15 +543,20 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
     repairAfterSplit(model, in.options, surface, splitNodesFrom, r);
   }
   SplitRounds rounds(in.maxSplitRounds, in.maxStalledSplitRounds);
+  std::optional<BestRound> best;  // for the last resort (not with stopWhenThin)
   for (int round = 0;; ++round) {  // bounded by maxSplitRounds
     checkCancel(in.options.cancel.get(), "volume meshing");
     const std::vector<std::vector<int>> faceTriangles = trianglesByFace(surface, nf);
+    if (best)  // the best round's pieces of the solids meshed again, once each
+      for (const int s : todo)
+        if (!best->saved.count(s)) best->saved.emplace(s, SavedPiece{std::move(pieces[s]), std::move(unrecovered[s])});
     parallelFor(
         static_cast<int>(todo.size()), in.options.threads,
         [&](int i) {
           const int s = todo[i];
           reused[s] = 0;
           work[s].reset();
+          unrecovered[s].reset();
           if (in.cache)
             if (std::optional<SolidPiece> hit = in.cache->find(s, solidBoundaryKey(model, surface, faceTriangles, s))) {
               pieces[s] = std::move(*hit);
@@ -429,7 +564,7 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
               return;
             }
           pieces[s] = meshSolid(withThreadsPerSolid(in, todo.size()), faceTriangles, s,
-                                in.stopWhenThin ? &work[s] : nullptr);
+                                in.stopWhenThin ? &work[s] : nullptr, &unrecovered[s]);
         },
         "volume");
     for (const int s : todo)
@@ -445,7 +580,26 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
       }
     // Every round meshes the solids again: stop when splitting diverges or stalls, so a
     // hopeless case does not run on (SplitRounds.h).
-    if (rounds.stop(round, requests.size())) break;
+    std::size_t missing = 0;
+    for (const SolidPiece& p : pieces) missing += p.missing.size();
+    if (!in.stopWhenThin && missing > 0 && (!best || missing < best->missing))
+      best = BestRound{missing, surface, {}, {r.splitRounds, r.boundarySplits, r.foldsRepaired, r.surfaceNodesMerged,
+                                              r.surfaceCapsFlipped}};
+    if (rounds.stop(round, requests.size())) {
+      splitStopped = true;
+      if (best && best->missing < missing) {  // splitting ended worse than it was: back to the best round
+        surface = std::move(best->surface);
+        for (auto& [s, saved] : best->saved) {
+          pieces[s] = std::move(saved.piece);
+          unrecovered[s] = std::move(saved.work);
+        }
+        std::tie(r.splitRounds, r.boundarySplits, r.foldsRepaired, r.surfaceNodesMerged, r.surfaceCapsFlipped) =
+            best->counters;
+        logDebug("volume: splitting ended with " + std::to_string(missing) + " entities missing; back to the round with " +
+                 std::to_string(best->missing));
+      }
+      break;
+    }
     std::vector<std::uint8_t> touched = facesUsingEdges(surface, requests, nf);
     const SplitStats split = splitSurfaceEdges(model, surface, requests);
     for (const int f : repairAfterSplit(model, in.options, surface, splitNodesFrom, r)) touched[f] = 1;
@@ -458,6 +612,27 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
   }
 
   const std::vector<std::vector<int>> faceTriangles = trianglesByFace(surface, nf);  // the final surface's
+  if (splitStopped) {  // the last resort for the solids recovery left entities out of
+    std::vector<int> rescue;
+    for (int s = 0; s < ns; ++s)
+      if (unrecovered[s] && pieces[s].outcome.status == SolidOutcome::Status::Failed) rescue.push_back(s);
+    std::vector<std::size_t> timesBefore(static_cast<std::size_t>(ns), 0);  // phases already summed
+    for (const int s : rescue) timesBefore[s] = pieces[s].outcome.times.size();
+    parallelFor(
+        static_cast<int>(rescue.size()), in.options.threads,
+        [&](int i) {
+          const int s = rescue[i];
+          rescueSolid(withThreadsPerSolid(in, rescue.size()), faceTriangles, s, pieces[s], *unrecovered[s]);
+          unrecovered[s].reset();
+        },
+        "volume");
+    for (const int s : rescue)
+      if (pieces[s].complete) {
+        addTimes(pieces[s].outcome.times, timesBefore[s], timeSum, timeOrder);
+        ++r.solidsWithHoles;
+      }
+  }
+  unrecovered.clear();
   if (in.stopWhenThin) {  // phase 4 of the solids stopped after carving, unless near a thin one
     const std::vector<char> near = solidsNearThin(model, surface, faceTriangles, pieces);
     std::vector<int> finish;
@@ -508,6 +683,11 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
       for (int i = 0; i < 4; ++i) t[i] = q[i] >= 0 ? q[i] : base - q[i] - 1;
       r.mesh.tets.push_back(t);
       r.mesh.tetSolid.push_back(s);
+    }
+    for (const auto& q : p.patches) {
+      std::array<int, 3> f;
+      for (int i = 0; i < 3; ++i) f[i] = q[i] >= 0 ? q[i] : base - q[i] - 1;
+      r.mesh.patchFaces.push_back(f);
     }
     r.thin.insert(r.thin.end(), p.thin.begin(), p.thin.end());
     r.recovery.merge(p.outcome.recovery);

@@ -135,6 +135,9 @@ struct VolumeMeshResult {
   /// With stopWhenThin: solids recovered and carved, not thin, but stopped there because
   /// they touch a thin solid (no tetrahedra in the result, status Ok).
   int solidsDeferred = 0;
+  /// Solids whose recovery left boundary entities out even after the split rounds, meshed
+  /// around the holes (CarveAroundHoles.h) with a "recovery-holes" problem: degraded.
+  int solidsWithHoles = 0;
   /// Every solid meshed, or left out only because the surface left out one of its faces.
   bool ok() const;
 };

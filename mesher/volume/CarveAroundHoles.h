@@ -1,0 +1,53 @@
+#pragma once
+// Carving when boundary recovery left some boundary triangles out (the last resort of
+// VolumeMesher, after the split rounds stopped): the solid is kept with a mesh whose hull
+// differs from its boundary triangles in a few places ("holes"), rather than left without
+// tetrahedra.
+//
+// carveSolid (CarveSolid.h) classifies whole components between constrained faces; a
+// missing triangle joins the inside and the outside into one component. Here each tet is
+// classified instead: the tets on a present boundary triangle take its side (exact
+// orient3d), the tets on the hull or the enclosing box are outside, and the others take
+// the side of the nearest classified tet (breadth-first across unconstrained faces, all
+// sources at once, in tet slot order: deterministic). Around a hole the two fronts meet
+// about where the missing triangles lie.
+//
+// After removing the outside tets:
+//  - a present triangle that no longer separates inside from outside is counted missing
+//    too and its constrained bit cleared;
+//  - the hull faces that are no boundary triangle ("patch faces", closing each hole) get
+//    the constrained bit, and their vertices are pinned (SolidTetMesh::pinned), so the
+//    later phases treat them as boundary: never moved, flipped or removed.
+// The caller compares `keptVolume` with `enclosedVolume` before accepting the result.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "mesher/delaunay3d/EnclosingBox.h"
+#include "mesher/volume/BoundaryTriangulation.h"
+#include "mesher/volume/SolidTetMesh.h"
+
+namespace aniso {
+
+/// A carving around holes is accepted when the tets kept enclose the volume of the solid's
+/// boundary triangles within this share of it (the patches stand where a few triangles
+/// are missing: far less; more means the fronts met in the wrong place).
+inline constexpr double kHoleVolumeTolerance = 5e-3;
+
+struct HoleCarving {
+  std::vector<std::size_t> missing;  ///< boundary triangles (SolidBoundary index) not on the hull
+  std::size_t notFound = 0;          ///< of them, those recovery left out (the others: lost by the fronts)
+  std::size_t patchFaces = 0;        ///< hull faces that are no boundary triangle
+  double missingArea = 0;            ///< of the missing triangles
+  double patchArea = 0;              ///< of the patch faces
+  double enclosedVolume = 0;         ///< by the solid's boundary triangles (all of them)
+  double keptVolume = 0;             ///< of the tets kept
+  std::vector<std::string> problems; ///< empty on success; on problems nothing is removed
+};
+
+/// Classifies and removes the tets outside the solid as above. Embedded triangles must all
+/// be present (a problem otherwise).
+HoleCarving carveAroundHoles(SolidTetMesh& s, const SolidBoundary& boundary, const del3d::EnclosingBox& box);
+
+}  // namespace aniso
