@@ -166,6 +166,11 @@ std::vector<Problem> gradeVolumeMesh(const Model& model, const VolumeMeshResult&
                             o.quality.refereeMinDihedral, kSliverBarDeg, static_cast<double>(o.quality.belowDihedral)) +
                          whereSliver(model, volume.mesh, flattest[s]),
                      "quality"});
+    if (o.quality.inverted > 0)  // positive in exact arithmetic, not in the double sum a reader computes
+      out.push_back({solidRef(model, s), Severity::Degraded, "flat-tetrahedra",
+                     format("%.0f tetrahedra have a volume that is zero or negative when computed in floating point",
+                            static_cast<double>(o.quality.inverted)),
+                     "quality"});
     const double cad = model.solids[s].cadVolume;
     if (cad > 0 && std::abs(o.volume - cad) > kVolumeMismatchRel * cad) {
       mismatched[s] = 1;

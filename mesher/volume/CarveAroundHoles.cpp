@@ -1,12 +1,14 @@
 #include "mesher/volume/CarveAroundHoles.h"
 
 #include <algorithm>
+#include <set>
 
 #include <Eigen/Geometry>
 
 #include "mesher/delaunay3d/RemoveTets.h"
 #include "mesher/predicates/Predicates.h"
 #include "mesher/volume/MeshQueries.h"
+#include "mesher/volume/TetQuality.h"
 
 namespace aniso {
 
@@ -101,6 +103,31 @@ HoleCarving carveAroundHoles(SolidTetMesh& s, const SolidBoundary& boundary, con
       queue.push_back(n);
     }
   }
+  // Inside tets joined by their faces: a group on no present boundary triangle floats in
+  // a hole (the fronts' leftovers, often flat): outside.
+  {
+    std::vector<std::uint8_t> anchored(nt, 0);
+    std::vector<TetId> group;
+    for (std::size_t t = 0; t < boundary.embeddedFrom && t < boundary.triangles.size(); ++t) {
+      const volume::FaceHandle& h = where[t];
+      if (!h.valid()) continue;
+      for (const TetId x : {h.tet, m.neighbour(h.tet, h.face)})
+        if (x.valid() && side[x.index] == kInside && !anchored[x.index]) {
+          anchored[x.index] = 1;
+          group.push_back(x);
+        }
+    }
+    for (std::size_t q = 0; q < group.size(); ++q)
+      for (int i = 0; i < 4; ++i) {
+        const TetId n = m.neighbour(group[q], i);
+        if (n.valid() && side[n.index] == kInside && !anchored[n.index]) {
+          anchored[n.index] = 1;
+          group.push_back(n);
+        }
+      }
+    for (std::uint32_t k = 0; k < nt; ++k)
+      if (side[k] == kInside && !anchored[k]) side[k] = kOutside;
+  }
   // A present triangle must now separate an inside tet (on its inner side) from an
   // outside one; otherwise it is missing too.
   std::vector<std::uint8_t> lost(boundary.triangles.size(), 0);
@@ -169,6 +196,91 @@ HoleCarving carveAroundHoles(SolidTetMesh& s, const SolidBoundary& boundary, con
         (m.point(m.vertex(t, 1)) - a).dot((m.point(m.vertex(t, 2)) - a).cross(m.point(m.vertex(t, 3)) - a)) / 6.0;
   }
   return out;
+}
+
+std::size_t peelPatchSlivers(SolidTetMesh& s, double angle, double maxVolume) {
+  TetMesh& m = s.mesh;
+  using Key = std::array<std::uint32_t, 3>;
+  auto keyOf = [&m](TetId t, int i) {
+    Key k;
+    for (int j = 0; j < 3; ++j) k[j] = m.vertex(t, del3d::kFaceVertex[i][j]).index;
+    std::sort(k.begin(), k.end());
+    return k;
+  };
+  std::set<Key> patch(s.patchFaces.begin(), s.patchFaces.end());
+  std::size_t removed = 0;
+  double volume = 0;
+  // bounded: every pass removes tets or stops; a tet is removed once
+  for (std::size_t pass = 0; pass < m.tetSlots(); ++pass) {
+    std::vector<TetId> peel;
+    for (std::uint32_t k = 0; k < m.tetSlots(); ++k) {
+      const TetId t(k);
+      if (!m.isAlive(t)) continue;
+      bool onPatch = false;
+      for (int i = 0; i < 4 && !onPatch; ++i) onPatch = !m.neighbour(t, i).valid() && patch.count(keyOf(t, i));
+      if (!onPatch) continue;
+      const Vec3 a = m.point(m.vertex(t, 0)), b = m.point(m.vertex(t, 1)), c = m.point(m.vertex(t, 2)),
+                 d = m.point(m.vertex(t, 3));
+      if (tetMinDihedral(a, b, c, d) >= angle) continue;  // (NaN for coincident vertices: peeled)
+      const double v = (b - a).dot((c - a).cross(d - a)) / 6.0;
+      if (volume + v > maxVolume) continue;
+      volume += v;
+      peel.push_back(t);
+    }
+    if (peel.empty()) break;
+    // the faces the peeled tets leave: patch faces now (or gone, between two peeled tets)
+    std::vector<std::pair<TetId, int>> exposed;
+    for (const TetId t : peel) {
+      for (int i = 0; i < 4; ++i) {
+        const TetId n = m.neighbour(t, i);
+        if (!n.valid()) {
+          patch.erase(keyOf(t, i));  // a boundary triangle's key is in no patch: nothing
+          continue;
+        }
+        for (int j = 0; j < 4; ++j)
+          if (m.neighbour(n, j) == t) exposed.emplace_back(n, j);
+      }
+    }
+    del3d::removeTets(m, peel);
+    removed += peel.size();
+    for (const auto& [n, j] : exposed) {
+      if (!m.isAlive(n) || m.neighbour(n, j).valid()) continue;
+      if (!m.isConstrained(n, j)) m.setConstrained(n, j, true);
+      const Key k = keyOf(n, j);
+      patch.insert(k);
+      if (s.pinned.size() < m.numVertices()) s.pinned.resize(m.numVertices(), 0);
+      for (const std::uint32_t v : k) s.pinned[v] = 1;
+    }
+  }
+  // tets that peeling cut off from every boundary triangle float in a hole: removed
+  std::vector<std::uint8_t> anchored(m.tetSlots(), 0);
+  std::vector<TetId> group;
+  for (std::uint32_t k = 0; k < m.tetSlots(); ++k) {
+    const TetId t(k);
+    if (!m.isAlive(t)) continue;
+    for (int i = 0; i < 4 && !anchored[k]; ++i)
+      if (!m.neighbour(t, i).valid() && !patch.count(keyOf(t, i))) {
+        anchored[k] = 1;
+        group.push_back(t);
+      }
+  }
+  for (std::size_t q = 0; q < group.size(); ++q)
+    for (int i = 0; i < 4; ++i)
+      if (const TetId n = m.neighbour(group[q], i); n.valid() && !anchored[n.index]) {
+        anchored[n.index] = 1;
+        group.push_back(n);
+      }
+  std::vector<TetId> floating;
+  for (std::uint32_t k = 0; k < m.tetSlots(); ++k)
+    if (m.isAlive(TetId(k)) && !anchored[k]) floating.push_back(TetId(k));
+  if (!floating.empty()) {
+    for (const TetId t : floating)
+      for (int i = 0; i < 4; ++i) patch.erase(keyOf(t, i));
+    del3d::removeTets(m, floating);
+    removed += floating.size();
+  }
+  s.patchFaces.assign(patch.begin(), patch.end());
+  return removed;
 }
 
 }  // namespace aniso

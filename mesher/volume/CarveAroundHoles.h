@@ -50,4 +50,17 @@ struct HoleCarving {
 /// be present (a problem otherwise).
 HoleCarving carveAroundHoles(SolidTetMesh& s, const SolidBoundary& boundary, const del3d::EnclosingBox& box);
 
+/// Tets flatter than this (smallest dihedral angle, degrees) on a patch face are peeled
+/// off once the solid is improved: a patch face is made of whatever nodes the holes
+/// had, often nearly collinear, and no vertex of it may move.
+inline constexpr double kPatchSliverAngle = 3.0;
+
+/// Removes the tets on a patch face whose smallest dihedral angle is below `angle`, again
+/// and again as peeling exposes new patch faces (constrained, their vertices pinned, in
+/// s.patchFaces), while the volume removed stays within `maxVolume`. A tet with a face on
+/// a boundary triangle too is removed all the same (a flat tet along the surface): that
+/// triangle joins the holes (the caller finds which: hull faces no longer). Returns the
+/// number of tets removed.
+std::size_t peelPatchSlivers(SolidTetMesh& s, double angle, double maxVolume);
+
 }  // namespace aniso

@@ -73,6 +73,24 @@ void reportLeft(SolidPiece& p, int solid, const SurfaceMesh& surface, const std:
              " (e.g. " + e.second + ")");
 }
 
+/// The hull faces of s whose three vertices are surface nodes, as sorted node triples.
+std::set<std::array<int, 3>> hullNodeTriples(const SolidTetMesh& s) {
+  const del3d::TetMesh& m = s.mesh;
+  std::set<std::array<int, 3>> out;
+  for (std::uint32_t k = 0; k < m.tetSlots(); ++k) {
+    const del3d::TetId t(k);
+    if (!m.isAlive(t)) continue;
+    for (int i = 0; i < 4; ++i) {
+      if (m.neighbour(t, i).valid()) continue;
+      std::array<int, 3> key;
+      for (int j = 0; j < 3; ++j) key[j] = s.node[m.vertex(t, del3d::kFaceVertex[i][j]).index];
+      std::sort(key.begin(), key.end());
+      if (key[0] >= 0) out.insert(key);
+    }
+  }
+  return out;
+}
+
 /// The solid's tets into p; for a solid meshed around holes, with the boundary triangles
 /// kept on its hull (`keptTriangles`), its patch faces too.
 void extract(const SolidTetMesh& s, SolidPiece& p, const std::vector<std::array<int, 3>>* keptTriangles) {
@@ -169,7 +187,7 @@ struct SolidWork {
 };
 
 void finishSolid(const VolumeMesherInput& in, const std::vector<std::vector<int>>& faceTriangles, int solid,
-                 SolidPiece& p, const BoundaryMesh& b, BoundaryTriangulation& bt);
+                 SolidPiece& p, const BoundaryMesh& b, BoundaryTriangulation& bt, double peelVolume = 0);
 
 /// Phases 1–3 and the thin test of one solid, then (keep null) phase 4. With `keep`, a solid
 /// recovered, carved and not thin stops there and its work moves into *keep. With
@@ -241,9 +259,11 @@ SolidPiece meshSolid(const VolumeMesherInput& in, const std::vector<std::vector<
 }
 
 /// Phase 4 of a recovered and carved solid: control space, refinement, improvement,
-/// quality; then its tetrahedra into p (complete unless a validator fails).
+/// quality; then its tetrahedra into p (complete unless a validator fails). A solid meshed
+/// around holes has its slivers on the patches peeled off after the improvement, up to
+/// `peelVolume` of volume (peelPatchSlivers).
 void finishSolid(const VolumeMesherInput& in, const std::vector<std::vector<int>>& faceTriangles, int solid,
-                 SolidPiece& p, const BoundaryMesh& b, BoundaryTriangulation& bt) {
+                 SolidPiece& p, const BoundaryMesh& b, BoundaryTriangulation& bt, double peelVolume) {
   const CancelToken* cancel = in.options.cancel.get();
   auto t0 = Clock::now();
   std::shared_ptr<VolumeMetricSpace> cs;
@@ -293,12 +313,35 @@ void finishSolid(const VolumeMesherInput& in, const std::vector<std::vector<int>
     p.outcome.counters.emplace_back("sliver_steiner_points", static_cast<double>(is.sliverSteinerPoints));
     if (!validated(p, in, bt.tets, b, "improvement")) return;
   }
+  BoundaryMesh peeled;  // b less the boundary triangles peeling took off the hull
+  const BoundaryMesh* onHull = &b;
+  if (!bt.tets.patchFaces.empty() && peelVolume > 0) {
+    const std::size_t n = peelPatchSlivers(bt.tets, kPatchSliverAngle, peelVolume);
+    p.outcome.counters.emplace_back("hole_slivers_peeled", static_cast<double>(n));
+    if (n > 0) {
+      peeled = b;
+      peeled.triangles.clear();
+      peeled.triangleFace.clear();
+      const std::set<std::array<int, 3>> hull = hullNodeTriples(bt.tets);
+      for (std::size_t t = 0; t < b.triangles.size(); ++t) {
+        std::array<int, 3> key = b.triangles[t];
+        std::sort(key.begin(), key.end());
+        if (!hull.count(key)) continue;
+        peeled.triangles.push_back(b.triangles[t]);
+        peeled.triangleFace.push_back(b.triangleFace[t]);
+      }
+      p.outcome.counters.emplace_back("hole_triangles_peeled",
+                                      static_cast<double>(b.triangles.size() - peeled.triangles.size()));
+      onHull = &peeled;
+    }
+    if (!validated(p, in, bt.tets, *onHull, "peeling")) return;
+  }
   if (in.quality) {
     t0 = Clock::now();
     accumulateTetQuality(bt.tets, cs.get(), p.outcome.quality, cs.get(), metrics ? &*metrics : nullptr);
     p.outcome.times.emplace_back("volume quality", since(t0));
   }
-  extract(bt.tets, p, &b.triangles);
+  extract(bt.tets, p, &onHull->triangles);
   p.complete = true;
 }
 
@@ -389,7 +432,7 @@ void rescueSolid(const VolumeMesherInput& in, const std::vector<std::vector<int>
   }
   q.outcome.counters.emplace_back("hole_triangles", static_cast<double>(hc.missing.size()));
   q.outcome.counters.emplace_back("hole_patch_faces", static_cast<double>(hc.patchFaces));
-  finishSolid(in, faceTriangles, solid, q, kept, bt);
+  finishSolid(in, faceTriangles, solid, q, kept, bt, allowed - off);
   if (!q.complete) {
     p.outcome.problems.insert(p.outcome.problems.end(), q.outcome.problems.begin(), q.outcome.problems.end());
     return;
