@@ -221,8 +221,8 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
           if (u.total() == 0) return;
           logDebug("face " + std::to_string(f + 1) + " boundary sizing: " + std::to_string(u.shortSegments) +
                    " short segments, " + std::to_string(u.gaps) + " gaps (" + std::to_string(u.unresolvedGaps) +
-                   " too narrow), " + std::to_string(u.crossings) + " crossing segments, h_min " +
-                   std::to_string(u.faceMinSize));
+                   " too narrow), " + std::to_string(u.crossings) + " crossing segments, " +
+                   std::to_string(u.stepEnds) + " step ends, h_min " + std::to_string(u.faceMinSize));
           spaces[f]->smoothGradation(in.options.sizing.gradation);
           updates += u.total();
         }, "boundary sizing");

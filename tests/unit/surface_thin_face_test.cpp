@@ -190,3 +190,44 @@ TEST(SurfaceThinFace, TinyEdgeNextToLongOnesGradesAway) {
 }
 
 }  // namespace aniso::test
+
+namespace aniso::test {
+
+TEST(SurfaceThinFace, StepFaceEndsGetNoSourceInAVolumeMesh) {
+  // A strip 0.004 wide, h_min 0.01, in a volume mesh: a step of the CAD. Its ends (segments
+  // 0.004 long) ask for nothing; the same short segment on a wide face (a cut corner) does.
+  SizingParameters params;
+  params.anisotropy = 1;
+  const auto fresh = [&params] {
+    auto c = std::make_unique<CSQuadtree2d>(box(-0.1, -0.1, 10.1, 10.1), params);
+    c->setContinuousSource(CSAnalytic2d(box(-0.1, -0.1, 10.1, 10.1), [](const Vec2&) { return Metric2d::isotropic(1); }));
+    return c;
+  };
+  BoundaryUpdateOptions o;
+  o.hMin = 0.01;
+  o.thinFaces = false;
+  auto cs = fresh();
+  const BoundaryUpdateStats s = updateFromBoundary(*cs, strip(10, 0.004, 10), params, o);
+  EXPECT_EQ(s.stepEnds, 2);
+  EXPECT_EQ(s.shortSegments, 0);
+  EXPECT_GT(cs->getMetric(Vec2(0, 0.002)).sizing.angleLengths().h2, 0.5);
+  // for a surface mesh the strip is a thin face: its ends keep their sources
+  o.thinFaces = true;
+  EXPECT_EQ(updateFromBoundary(*fresh(), strip(10, 0.004, 10), params, o).stepEnds, 0);
+  // a wide face with a short segment (a corner cut 0.004 long): its source stays
+  o.thinFaces = false;
+  FaceBoundary cut;
+  cut.face = 0;
+  cut.loops.emplace_back();
+  const double c = 0.004 / std::sqrt(2.0);
+  int id = 0;
+  for (const Vec2& p : {Vec2(0, 0), Vec2(5, 0), Vec2(10 - c, 0), Vec2(10, c), Vec2(10, 5), Vec2(5, 5), Vec2(0, 5)})
+    cut.loops[0].push_back({p, id++});
+  auto cs2 = fresh();
+  const BoundaryUpdateStats w = updateFromBoundary(*cs2, cut, params, o);
+  EXPECT_EQ(w.stepEnds, 0);
+  EXPECT_GE(w.shortSegments, 1);
+  EXPECT_LT(cs2->getMetric(Vec2(10 - c / 2, c / 2)).sizing.angleLengths().h2, 0.1);
+}
+
+}  // namespace aniso::test
