@@ -101,8 +101,7 @@ BoundaryUpdateStats updateFromBoundary(CSAdaptive2d& cs, const FaceBoundary& bou
   // the crossing rounds of a volume mesh need no gaps (no thin face: h_min_f is h_min)
   std::vector<BoundaryGap> gaps;
   if (!options.crossingsOnly || options.thinFaces) gaps = findBoundaryGaps(cs, bs, lMin, options.hMin);
-  const double width = thinFaceWidth(bs, gaps, options.hMin);
-  stats.faceMinSize = faceMinSize(width, options);
+  stats.faceMinSize = faceMinSize(thinFaceWidth(bs, gaps, options.hMin), options);
 
   // A strip: most of its boundary faces another side across a gap.
   double gapLength = 0, total = 0;
@@ -110,15 +109,19 @@ BoundaryUpdateStats updateFromBoundary(CSAdaptive2d& cs, const FaceBoundary& bou
   for (const BoundaryGap& g : gaps)
     if (g.metricWidth < lMin) gapLength += bs.segments[g.segment].length;
   const bool strip = gapLength > options.stripFraction * total;
-  // a volume mesh's strip narrower than h_min: a step or sliver face of the CAD (see the header)
-  const bool step = !options.thinFaces && strip && width < options.hMin;
+  // a volume mesh's strip too narrow to resolve: a step or sliver face of the CAD (see the header)
+  const double unresolved = options.resolvedGapRatio * options.hMin;
+  const bool step = !options.thinFaces && strip && thinFaceWidth(bs, gaps, unresolved) < unresolved;
   if ((!options.vicinity && !strip && !(stats.faceMinSize < options.hMin)) || options.crossingsOnly) gaps.clear();
   const double hMin = stats.faceMinSize;
   std::vector<Source> sources;
   for (const BoundarySegment& sg : bs.segments) {
     const Vec2 mid = 0.5 * (sg.a + sg.b);
     if (!(sg.length > 0) || options.crossingsOnly) continue;
-    if (step && sg.length < options.resolvedGapRatio * options.hMin) { ++stats.stepEnds; continue; }  // its end: no source
+    if (step && sg.length < unresolved) {  // its end: no source
+      ++stats.stepEnds;
+      continue;
+    }
     if ((cs.getMetric(mid).transformation() * (sg.b - sg.a)).norm() < lMin) {
       // The segment's ends and midpoint: control elements can be much smaller than a
       // segment in (u, v) (a strip thin in u but long in v), and a single point source would

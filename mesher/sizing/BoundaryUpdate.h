@@ -49,11 +49,12 @@
 // U_Joint_2's fillet tips 584 → 858 forced needles, mean ratio 0.931 → 0.914). Left
 // coarse, the tip keeps few. Short-segment sources are bounded below by h_min_f too (a CAD
 // edge shorter than h_min_f does not drive the neighbourhood to round-off); in a volume
-// mesh, a strip narrower than h_min (a step or sliver face of the CAD like the rim above)
-// gets none for its segments shorter than resolvedGapRatio · h_min, its ends: on KiCad's
-// pin sockets (1 um steps around 28 pin holes) those sources graded h_min into the faces
-// around, the steps were meshed in needles 13 um long and the tets there flat (mean ratio
-// 0.793). Left coarse, the surface repair merges the step away. Short segments of other
+// mesh, a strip narrower than resolvedGapRatio · h_min (its gaps get no source; a step or
+// sliver face of the CAD like the rim above) gets none for its segments shorter than that,
+// its ends: on KiCad's pin sockets (1 um steps around the pin holes) those sources graded
+// h_min into the faces around, the steps were meshed in needles 13 um long and the tets
+// there flat (mean ratio 0.793). Left coarse, the surface repair merges the step away (a
+// step along a film's rim is not: KiCad's Everlight ITR8307, 1 um pads, 0.753 -> 0.705). Short segments of other
 // faces keep their sources: wing_fuselage's skins, narrower than h_min only towards their
 // sharp trailing edge, came out with 0.9 deg slivers without them.
 #include "mesher/control/CSAdaptive2d.h"

@@ -628,25 +628,33 @@ VolumeMeshResult meshVolumes(const VolumeMesherInput& input) {
     if (!in.stopWhenThin && missing > 0 && (!best || missing < best->missing))
       best = BestRound{missing, surface, {}, {r.splitRounds, r.boundarySplits, r.foldsRepaired, r.surfaceNodesMerged,
                                               r.surfaceCapsFlipped}};
+    // back to the best round: its surface, the pieces meshed on it
+    const auto backToBest = [&] {
+      surface = std::move(best->surface);
+      for (auto& [s, saved] : best->saved) {
+        pieces[s] = std::move(saved.piece);
+        unrecovered[s] = std::move(saved.work);
+      }
+      std::tie(r.splitRounds, r.boundarySplits, r.foldsRepaired, r.surfaceNodesMerged, r.surfaceCapsFlipped) =
+          best->counters;
+      logDebug("volume: splitting ended with " + std::to_string(missing) + " entities missing; back to the round with " +
+               std::to_string(best->missing));
+    };
     if (rounds.stop(round, requests.size())) {
       splitStopped = true;
-      if (best && best->missing < missing) {  // splitting ended worse than it was: back to the best round
-        surface = std::move(best->surface);
-        for (auto& [s, saved] : best->saved) {
-          pieces[s] = std::move(saved.piece);
-          unrecovered[s] = std::move(saved.work);
-        }
-        std::tie(r.splitRounds, r.boundarySplits, r.foldsRepaired, r.surfaceNodesMerged, r.surfaceCapsFlipped) =
-            best->counters;
-        logDebug("volume: splitting ended with " + std::to_string(missing) + " entities missing; back to the round with " +
-                 std::to_string(best->missing));
-      }
+      if (best && best->missing < missing) backToBest();  // splitting ended worse than it was
       break;
     }
     std::vector<std::uint8_t> touched = facesUsingEdges(surface, requests, nf);
     const SplitStats split = splitSurfaceEdges(model, surface, requests);
     for (const int f : repairAfterSplit(model, in.options, surface, splitNodesFrom, r)) touched[f] = 1;
-    if (split.edgesSplit == 0) break;
+    if (split.edgesSplit == 0) {  // nothing to split: the repair may have changed the surface since
+      if (best) {
+        splitStopped = true;
+        backToBest();
+      }
+      break;
+    }
     ++r.splitRounds;
     r.boundarySplits += split.edgesSplit;
     todo = solidsUsingFaces(model, touched);

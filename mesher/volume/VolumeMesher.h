@@ -24,7 +24,11 @@
 // solid sharing the face sees them) and the solids using the changed faces are meshed
 // again, for at most maxSplitRounds rounds, with the repair stage after each round; the
 // given surface is not changed, the result's surface is it with the splits (and their
-// repairs) applied.
+// repairs) applied. Without stopWhenThin, when the rounds stop with entities still
+// missing, the surface and the pieces go back to the round that had the fewest, and each
+// solid still missing some is meshed around its holes (CarveAroundHoles.h: the last
+// resort, accepted within kHoleVolumeTolerance of its volume; the solid degraded, problem
+// "recovery-holes", VolumeMesh::patchFaces).
 // After carving, the boundary triangles whose tet reaches across a thin part are found
 // (ThinBoundary.h, alg. 3.3's proximity check) and returned; with stopWhenThin such a solid
 // stops there (the caller meshes the surface finer and calls again) — also when the
@@ -33,8 +37,9 @@
 // Faces inside a solid (ModelSolid::embedded) are constraints of its tetrahedra like its
 // boundary (recovered, kept by refinement and improvement, crossed by carving); at the end
 // the two-sided ones (MeshOptions::internalFaces) are split apart (CrackSplit.h).
-// A solid that still cannot be meshed (broken boundary mesh, unrecoverable boundary) gets
-// no tetrahedra and its problems are reported by CAD id; the others are meshed. Throws only
+// A solid that still cannot be meshed (broken boundary mesh, holes the last resort
+// refuses) gets no tetrahedra and its problems are reported by CAD id; the others are
+// meshed. Throws only
 // for errors that stop everything (bad input).
 #include <array>
 #include <string>
