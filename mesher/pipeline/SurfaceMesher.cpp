@@ -21,6 +21,7 @@
 #include "mesher/surface/ContourDiscretization.h"
 #include "mesher/surface/contour/CoincidentFaces.h"
 #include "mesher/surface/improve/FaceQuality.h"
+#include "mesher/model/EdgeNormals.h"
 
 namespace aniso {
 namespace {
@@ -192,6 +193,10 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
   constexpr int kCrossingRounds = 4;
   std::vector<EdgeDiscretization> edges;
   std::vector<FaceBoundary> boundaries(nf);
+  // a volume mesh's film rims (BoundaryUpdate.h: never steps)
+  std::vector<char> filmRim(static_cast<std::size_t>(nf), 0);
+  if (volume)
+    for (int f = 0; f < nf; ++f) filmRim[f] = isFilmRim(model, f) ? 1 : 0;
   const auto discretizeContours = [&] {
     for (int round = 0;; ++round) {  // bounded: updates stop after kRounds + kCrossingRounds
       checkCancel(cancel, "contours");
@@ -217,6 +222,7 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
           bopt.thinFaces = !volume;
           bopt.gapsAlongSegments = !volume;
           bopt.crossingsOnly = round >= kRounds;
+          bopt.filmRim = filmRim[f] != 0;
           const BoundaryUpdateStats u = updateFromBoundary(*spaces[f], boundaries[f], in.options.sizing, bopt);
           if (u.total() == 0) return;
           logDebug("face " + std::to_string(f + 1) + " boundary sizing: " + std::to_string(u.shortSegments) +

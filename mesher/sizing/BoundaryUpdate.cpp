@@ -111,7 +111,8 @@ BoundaryUpdateStats updateFromBoundary(CSAdaptive2d& cs, const FaceBoundary& bou
   const bool strip = gapLength > options.stripFraction * total;
   // a volume mesh's strip too narrow to resolve: a step or sliver face of the CAD (see the header)
   const double unresolved = options.resolvedGapRatio * options.hMin;
-  const bool step = !options.thinFaces && strip && thinFaceWidth(bs, gaps, unresolved) < unresolved;
+  const bool step =
+      !options.thinFaces && !options.filmRim && strip && thinFaceWidth(bs, gaps, unresolved) < unresolved;
   if ((!options.vicinity && !strip && !(stats.faceMinSize < options.hMin)) || options.crossingsOnly) gaps.clear();
   const double hMin = stats.faceMinSize;
   std::vector<Source> sources;

@@ -53,8 +53,10 @@
 // sliver face of the CAD like the rim above) gets none for its segments shorter than that,
 // its ends: on KiCad's pin sockets (1 um steps around the pin holes) those sources graded
 // h_min into the faces around, the steps were meshed in needles 13 um long and the tets
-// there flat (mean ratio 0.793). Left coarse, the surface repair merges the step away (a
-// step along a film's rim is not: KiCad's Everlight ITR8307, 1 um pads, 0.753 -> 0.705). Short segments of other
+// there flat (mean ratio 0.793). Left coarse, the surface repair merges the step away. A
+// strip between two faces facing opposite ways is the rim of a film, not a step: nothing
+// merges it, and its ends keep their sources (without: KiCad's Everlight ITR8307, 1 um
+// pads, mean ratio 0.753 -> 0.705). Short segments of other
 // faces keep their sources: wing_fuselage's skins, narrower than h_min only towards their
 // sharp trailing edge, came out with 0.9 deg slivers without them.
 #include "mesher/control/CSAdaptive2d.h"
@@ -78,6 +80,8 @@ struct BoundaryUpdateOptions {
   bool vicinity = false;    ///< the vicinity rule on every face (thin faces and strips always get it)
   double stripFraction = 0.6;  ///< a face with more of its boundary length across a gap is a strip
   bool thinFaces = true;          ///< thin faces get their own h_min (false: volume meshes, above)
+  /// The face is the rim of a film (EdgeNormals.h, isFilmRim): never a step (above).
+  bool filmRim = false;
   /// Gap sources all along a segment much longer than the gap (BoundaryUpdate.cpp,
   /// kGapSourceSpacing; false: volume meshes).
   bool gapsAlongSegments = true;

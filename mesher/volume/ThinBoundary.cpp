@@ -11,28 +11,16 @@
 
 #include "mesher/volume/BoundaryMesh.h"
 #include "mesher/volume/MeshQueries.h"
+#include "mesher/model/EdgeNormals.h"
 
 namespace aniso {
 
 namespace {
 
-/// The outward normal of face f at the middle of edge e (nullopt when e has no pcurve on f
-/// or f no surface).
-std::optional<Vec3> outwardNormalAtMiddle(const Model& model, const ModelEdge& e, int f) {
-  const ModelFace& face = model.faces[static_cast<std::size_t>(f)];
-  if (!face.surface) return std::nullopt;
-  for (const PCurve& pc : e.pcurves)
-    if (pc.face == f && pc.curve) {
-      const Vec3 n = face.surface->normal(pc.curve->point(0.5 * (e.t0 + e.t1)));
-      return face.reversed ? Vec3(-n) : n;
-    }
-  return std::nullopt;
-}
-
 /// The outward normals of faces f and g at the middle of edge e, dotted (nullopt when one
 /// of them has no pcurve or surface there).
 std::optional<double> normalsAtEdgeMiddle(const Model& model, const ModelEdge& e, int f, int g) {
-  const std::optional<Vec3> nf = outwardNormalAtMiddle(model, e, f), ng = outwardNormalAtMiddle(model, e, g);
+  const std::optional<Vec3> nf = faceNormalAtEdgeMiddle(model, e, f), ng = faceNormalAtEdgeMiddle(model, e, g);
   if (!nf || !ng) return std::nullopt;
   return nf->dot(*ng);
 }
@@ -77,7 +65,7 @@ bool materialBetween(const Model& model, int edge, int f, int g) {
   constexpr double kOpening = 1e-3;
   const double step = 1e-3 * model.diagonal();
   const std::optional<Vec3> pf = intoFace(model, edge, f, step), pg = intoFace(model, edge, g, step);
-  const std::optional<Vec3> n = outwardNormalAtMiddle(model, model.edges[static_cast<std::size_t>(edge)], f);
+  const std::optional<Vec3> n = faceNormalAtEdgeMiddle(model, model.edges[static_cast<std::size_t>(edge)], f);
   // below: g inside f, by a second-order opening (coincident faces of two parts open by none)
   return pf && pg && n && n->dot(*pg - *pf) < -kOpening * step;
 }
