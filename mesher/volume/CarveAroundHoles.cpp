@@ -8,6 +8,7 @@
 #include "mesher/delaunay3d/RemoveTets.h"
 #include "mesher/predicates/Predicates.h"
 #include "mesher/volume/MeshQueries.h"
+#include "mesher/volume/RayParity.h"
 #include "mesher/volume/TetQuality.h"
 
 namespace aniso {
@@ -87,7 +88,26 @@ HoleCarving carveAroundHoles(SolidTetMesh& s, const SolidBoundary& boundary, con
         side[k] = kOutside;
     }
   }
-  // The fronts: breadth-first from every source at once, across faces that are no present
+  // The others by the parity of a ray against the whole boundary (closed, the missing
+  // triangles too); where every ray is degenerate, by the fronts below.
+  {
+    std::vector<Vec3> points(m.numVertices());
+    for (std::uint32_t v = 0; v < m.numVertices(); ++v) points[v] = m.point(VertexId(v));
+    std::vector<std::array<int, 3>> surface;
+    for (std::size_t t = 0; t < boundary.embeddedFrom && t < boundary.triangles.size(); ++t) {
+      const auto& tri = boundary.triangles[t];
+      surface.push_back({static_cast<int>(tri[0].index), static_cast<int>(tri[1].index), static_cast<int>(tri[2].index)});
+    }
+    const RayParity parity(points, std::move(surface));
+    for (std::uint32_t k = 0; k < nt; ++k) {
+      const TetId t(k);
+      if (!m.isAlive(t) || side[k] != kUnknown) continue;
+      const Vec3 c = 0.25 * (m.point(m.vertex(t, 0)) + m.point(m.vertex(t, 1)) + m.point(m.vertex(t, 2)) +
+                             m.point(m.vertex(t, 3)));
+      if (const std::optional<bool> in = parity.inside(c)) side[k] = *in ? kInside : kOutside;
+    }
+  }
+  // The fronts: breadth-first from every tet classified, across faces that are no present
   // boundary triangle (and across embedded ones: the solid on both sides).
   std::vector<TetId> queue;
   for (std::uint32_t k = 0; k < nt; ++k)
@@ -221,7 +241,9 @@ std::size_t peelPatchSlivers(SolidTetMesh& s, double angle, double maxVolume) {
       if (!onPatch) continue;
       const Vec3 a = m.point(m.vertex(t, 0)), b = m.point(m.vertex(t, 1)), c = m.point(m.vertex(t, 2)),
                  d = m.point(m.vertex(t, 3));
-      if (tetMinDihedral(a, b, c, d) >= angle) continue;  // (NaN for coincident vertices: peeled)
+      // flat by its angles, or by its volume (nearly coincident vertices give angles of
+      // no meaning, and a volume a reader's sum may find negative)
+      if (tetMinDihedral(a, b, c, d) >= angle && tetMeanRatio(a, b, c, d) >= kPatchFlatRatio) continue;
       const double v = (b - a).dot((c - a).cross(d - a)) / 6.0;
       if (volume + v > maxVolume) continue;
       volume += v;

@@ -7,10 +7,11 @@
 // carveSolid (CarveSolid.h) classifies whole components between constrained faces; a
 // missing triangle joins the inside and the outside into one component. Here each tet is
 // classified instead: the tets on a present boundary triangle take its side (exact
-// orient3d), the tets on the hull or the enclosing box are outside, and the others take
-// the side of the nearest classified tet (breadth-first across unconstrained faces, all
-// sources at once, in tet slot order: deterministic). Around a hole the two fronts meet
-// about where the missing triangles lie.
+// orient3d), the tets on the hull or the enclosing box are outside, the others take the
+// side of their centroid against the whole boundary, missing triangles included (the
+// parity of a ray, RayParity.h), and the few whose every ray is degenerate the side of the
+// nearest classified tet (breadth-first across unconstrained faces, in tet slot order).
+// Deterministic. Groups of inside tets on no present boundary triangle are outside.
 //
 // After removing the outside tets:
 //  - a present triangle that no longer separates inside from outside is counted missing
@@ -54,8 +55,12 @@ HoleCarving carveAroundHoles(SolidTetMesh& s, const SolidBoundary& boundary, con
 /// off once the solid is improved: a patch face is made of whatever nodes the holes
 /// had, often nearly collinear, and no vertex of it may move.
 inline constexpr double kPatchSliverAngle = 3.0;
+/// ... and those whose mean ratio is below this (angles of no meaning: vertices a few
+/// units in the last place apart, which recovery's Steiner points can be).
+inline constexpr double kPatchFlatRatio = 0.01;
 
-/// Removes the tets on a patch face whose smallest dihedral angle is below `angle`, again
+/// Removes the tets on a patch face whose smallest dihedral angle is below `angle` (or mean
+/// ratio below kPatchFlatRatio), again
 /// and again as peeling exposes new patch faces (constrained, their vertices pinned, in
 /// s.patchFaces), while the volume removed stays within `maxVolume`. A tet with a face on
 /// a boundary triangle too is removed all the same (a flat tet along the surface): that
