@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include <Eigen/Geometry>
@@ -14,6 +15,7 @@
 #include "mesher/volume/BoundaryTriangulation.h"
 #include "mesher/volume/CarveAroundHoles.h"
 #include "mesher/volume/MeshQueries.h"
+#include "mesher/volume/RayParity.h"
 #include "mesher/volume/VolumeMesher.h"
 #include "volume_test_models.h"
 
@@ -148,4 +150,26 @@ TEST(VolumeMesher, UnrecoveredSolidIsMeshedAroundItsHoles) {
   EXPECT_NEAR(r.solids[0].volume, m.volume, kHoleVolumeTolerance * m.volume);
   EXPECT_FALSE(r.mesh.patchFaces.empty());
   EXPECT_EQ(joined(r.mesh.validate()), "");  // the patch faces close the holes
+}
+
+TEST(RayParity, InsideOutsideAndOnTheSurfaceOfACube) {
+  std::vector<Vec3> p;
+  for (int k = 0; k < 8; ++k) p.emplace_back(k & 1, (k >> 1) & 1, (k >> 2) & 1);
+  // the 12 triangles of the unit cube (any orientation: parity does not need it)
+  const std::vector<std::array<int, 3>> t = {{0, 1, 3}, {0, 3, 2}, {4, 5, 7}, {4, 7, 6}, {0, 1, 5}, {0, 5, 4},
+                                             {2, 3, 7}, {2, 7, 6}, {0, 2, 6}, {0, 6, 4}, {1, 3, 7}, {1, 7, 5}};
+  const RayParity parity(p, t);
+  EXPECT_EQ(parity.inside(Vec3(0.3, 0.4, 0.5)), std::optional<bool>(true));
+  EXPECT_EQ(parity.inside(Vec3(0.999, 0.001, 0.5)), std::optional<bool>(true));
+  EXPECT_EQ(parity.inside(Vec3(1.2, 0.5, 0.5)), std::optional<bool>(false));  // beside it, in no box
+  EXPECT_EQ(parity.inside(Vec3(5, 5, 5)), std::optional<bool>(false));        // beyond its box
+  EXPECT_EQ(parity.inside(Vec3(0.5, 0.5, 1.0)), std::nullopt);                // on its top: every ray degenerate
+  // a cube with a cubic void: inside the void is outside
+  std::vector<Vec3> q = p;
+  for (int k = 0; k < 8; ++k) q.emplace_back(0.25 + 0.5 * (k & 1), 0.25 + 0.5 * ((k >> 1) & 1), 0.25 + 0.5 * ((k >> 2) & 1));
+  std::vector<std::array<int, 3>> u = t;
+  for (const auto& tri : t) u.push_back({tri[0] + 8, tri[1] + 8, tri[2] + 8});
+  const RayParity hollow(q, u);
+  EXPECT_EQ(hollow.inside(Vec3(0.5, 0.52, 0.48)), std::optional<bool>(false));
+  EXPECT_EQ(hollow.inside(Vec3(0.1, 0.5, 0.5)), std::optional<bool>(true));
 }
