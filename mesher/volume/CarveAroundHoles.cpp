@@ -66,8 +66,8 @@ HoleCarving carveAroundHoles(SolidTetMesh& s, const SolidBoundary& boundary, con
         if (m.neighbour(n, j) == h.tet) faceTriangle[4 * std::size_t{n.index} + j] = static_cast<int>(t);
   }
   out.notFound = out.missing.size();
-  // Sources: the sides of the present boundary triangles (a tet with votes both ways is
-  // left to the fronts), then the hull and the box: outside.
+  // First the sides of the present boundary triangles (a tet with votes both ways is left
+  // to the rays), then the hull and the box: outside.
   std::vector<std::int8_t> side(nt, kUnknown);
   std::vector<std::uint8_t> votes(nt, 0);  // bit 0: inside, bit 1: outside
   for (std::uint32_t k = 0; k < nt; ++k) {
