@@ -199,4 +199,19 @@ std::vector<Problem> gradeVolumeMesh(const Model& model, const VolumeMeshResult&
   return out;
 }
 
+std::vector<Problem> gradeSurfaceMesh(const SurfaceMesh& mesh, bool isotropic) {
+  if (!isotropic || mesh.triangles.empty() || !mesh.quads.empty()) return {};
+  double sum = 0;
+  for (const auto& t : mesh.triangles) {
+    const Vec3 &a = mesh.nodes[static_cast<std::size_t>(t[0])], &b = mesh.nodes[static_cast<std::size_t>(t[1])],
+               &c = mesh.nodes[static_cast<std::size_t>(t[2])];
+    const double l2 = (b - a).squaredNorm() + (c - b).squaredNorm() + (a - c).squaredNorm();
+    sum += l2 > 0 ? 2 * std::sqrt(3.0) * (b - a).cross(c - a).norm() / l2 : 0.0;
+  }
+  const double mean = sum / static_cast<double>(mesh.triangles.size());
+  if (mean >= kTriangleMeanRatioBar) return {};
+  return {{EntityRef::model(), Severity::Degraded, "low-quality",
+           format("the triangles' mean ratio averages %.3f (bar: %.2f)", mean, kTriangleMeanRatioBar), "quality"}};
+}
+
 }  // namespace aniso

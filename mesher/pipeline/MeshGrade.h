@@ -5,7 +5,8 @@
 // reject:
 //   "slivers"         a tetrahedron with a dihedral angle below kSliverBarDeg (the detail
 //                     says where the flattest is and the CAD faces its nodes lie on);
-//   "low-quality"     the mean ratio averaged over all tetrahedra below kMeanRatioBar
+//   "low-quality"     the mean ratio averaged over all tetrahedra below kMeanRatioBar (of a
+//                     surface mesh's triangles below kTriangleMeanRatioBar, gradeSurfaceMesh)
 //                     (isotropic meshes only: an anisotropic mesh is stretched on purpose);
 //   "volume-mismatch" the solid's mesh, its boundary bent onto the CAD (CurvedVolume.h),
 //                     differs from the CAD kernel's volume (ModelSolid::cadVolume) by more
@@ -34,5 +35,13 @@ std::vector<Problem> gradeSurfaceGeometry(const Model& model, const SurfaceGeome
 
 /// The problems of volume.mesh (the solids meshed, their quality in volume.solids).
 std::vector<Problem> gradeVolumeMesh(const Model& model, const VolumeMeshResult& volume, bool isotropic);
+
+/// Smallest mean ratio average (4√3 area / Σ edge², the referee's) of a usable isotropic
+/// triangle mesh.
+inline constexpr double kTriangleMeanRatioBar = 0.90;
+
+/// A surface mesh's own quality (a --dim 2 result of triangles only, isotropic): "low-quality"
+/// when its triangles' mean ratio averages below kTriangleMeanRatioBar. Empty otherwise.
+std::vector<Problem> gradeSurfaceMesh(const SurfaceMesh& mesh, bool isotropic);
 
 }  // namespace aniso

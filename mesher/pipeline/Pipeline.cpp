@@ -87,6 +87,8 @@ MeshResult meshModel(const Model& model, const MeshRequest& request) {
       return r;
     }
     append(r.problems, gradeVolumeMesh(model, r.volume, request.options.sizing.anisotropy <= 1));
+  } else {
+    append(r.problems, gradeSurfaceMesh(r.surface.mesh, request.options.sizing.anisotropy <= 1 && !request.analytic));
   }
   // stage 4: order 2
   if (request.options.order == 2) {
