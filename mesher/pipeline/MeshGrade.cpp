@@ -9,6 +9,7 @@
 #include "mesher/highorder/CurvedVolume.h"
 #include "mesher/pipeline/RunProblems.h"
 #include "mesher/volume/TetQuality.h"
+#include "mesher/metric/MeanRatio.h"
 
 namespace aniso {
 namespace {
@@ -202,12 +203,9 @@ std::vector<Problem> gradeVolumeMesh(const Model& model, const VolumeMeshResult&
 std::vector<Problem> gradeSurfaceMesh(const SurfaceMesh& mesh, bool isotropic) {
   if (!isotropic || mesh.triangles.empty() || !mesh.quads.empty()) return {};
   double sum = 0;
-  for (const auto& t : mesh.triangles) {
-    const Vec3 &a = mesh.nodes[static_cast<std::size_t>(t[0])], &b = mesh.nodes[static_cast<std::size_t>(t[1])],
-               &c = mesh.nodes[static_cast<std::size_t>(t[2])];
-    const double l2 = (b - a).squaredNorm() + (c - b).squaredNorm() + (a - c).squaredNorm();
-    sum += l2 > 0 ? 2 * std::sqrt(3.0) * (b - a).cross(c - a).norm() / l2 : 0.0;
-  }
+  for (const auto& t : mesh.triangles)
+    sum += meanRatio(mesh.nodes[static_cast<std::size_t>(t[0])], mesh.nodes[static_cast<std::size_t>(t[1])],
+                     mesh.nodes[static_cast<std::size_t>(t[2])]);
   const double mean = sum / static_cast<double>(mesh.triangles.size());
   if (mean >= kTriangleMeanRatioBar) return {};
   return {{EntityRef::model(), Severity::Degraded, "low-quality",

@@ -35,6 +35,26 @@ double enclosedVolume(const TetMesh& m, const SolidBoundary& boundary) {
   return v / 6.0;
 }
 
+/// The tets reachable from `seeds` across faces between two tets that `keep` accepts
+/// (the seeds are accepted), marked per tet slot.
+template <class Keep>
+std::vector<std::uint8_t> reachable(const TetMesh& m, const std::vector<TetId>& seeds, Keep keep) {
+  std::vector<std::uint8_t> reached(m.tetSlots(), 0);
+  std::vector<TetId> queue;
+  for (const TetId t : seeds)
+    if (!reached[t.index]) {
+      reached[t.index] = 1;
+      queue.push_back(t);
+    }
+  for (std::size_t q = 0; q < queue.size(); ++q)
+    for (int i = 0; i < 4; ++i)
+      if (const TetId n = m.neighbour(queue[q], i); n.valid() && !reached[n.index] && keep(n)) {
+        reached[n.index] = 1;
+        queue.push_back(n);
+      }
+  return reached;
+}
+
 }  // namespace
 
 HoleCarving carveAroundHoles(SolidTetMesh& s, const SolidBoundary& boundary, const del3d::EnclosingBox& box) {
@@ -126,25 +146,13 @@ HoleCarving carveAroundHoles(SolidTetMesh& s, const SolidBoundary& boundary, con
   // Inside tets joined by their faces: a group on no present boundary triangle floats in
   // a hole (the fronts' leftovers, often flat): outside.
   {
-    std::vector<std::uint8_t> anchored(nt, 0);
-    std::vector<TetId> group;
-    for (std::size_t t = 0; t < boundary.embeddedFrom && t < boundary.triangles.size(); ++t) {
-      const volume::FaceHandle& h = where[t];
-      if (!h.valid()) continue;
-      for (const TetId x : {h.tet, m.neighbour(h.tet, h.face)})
-        if (x.valid() && side[x.index] == kInside && !anchored[x.index]) {
-          anchored[x.index] = 1;
-          group.push_back(x);
-        }
-    }
-    for (std::size_t q = 0; q < group.size(); ++q)
-      for (int i = 0; i < 4; ++i) {
-        const TetId n = m.neighbour(group[q], i);
-        if (n.valid() && side[n.index] == kInside && !anchored[n.index]) {
-          anchored[n.index] = 1;
-          group.push_back(n);
-        }
-      }
+    const auto inside = [&side](TetId t) { return side[t.index] == kInside; };
+    std::vector<TetId> seeds;
+    for (std::size_t t = 0; t < boundary.embeddedFrom && t < boundary.triangles.size(); ++t)
+      if (const volume::FaceHandle& h = where[t]; h.valid())
+        for (const TetId x : {h.tet, m.neighbour(h.tet, h.face)})
+          if (x.valid() && inside(x)) seeds.push_back(x);
+    const std::vector<std::uint8_t> anchored = reachable(m, seeds, inside);
     for (std::uint32_t k = 0; k < nt; ++k)
       if (side[k] == kInside && !anchored[k]) side[k] = kOutside;
   }
@@ -275,23 +283,15 @@ std::size_t peelPatchSlivers(SolidTetMesh& s, double angle, double maxVolume) {
     }
   }
   // tets that peeling cut off from every boundary triangle float in a hole: removed
-  std::vector<std::uint8_t> anchored(m.tetSlots(), 0);
-  std::vector<TetId> group;
+  std::vector<TetId> seeds;  // the tets on a boundary triangle: a hull face no patch
   for (std::uint32_t k = 0; k < m.tetSlots(); ++k) {
     const TetId t(k);
     if (!m.isAlive(t)) continue;
-    for (int i = 0; i < 4 && !anchored[k]; ++i)
-      if (!m.neighbour(t, i).valid() && !patch.count(keyOf(t, i))) {
-        anchored[k] = 1;
-        group.push_back(t);
-      }
+    bool onBoundary = false;
+    for (int i = 0; i < 4 && !onBoundary; ++i) onBoundary = !m.neighbour(t, i).valid() && !patch.count(keyOf(t, i));
+    if (onBoundary) seeds.push_back(t);
   }
-  for (std::size_t q = 0; q < group.size(); ++q)
-    for (int i = 0; i < 4; ++i)
-      if (const TetId n = m.neighbour(group[q], i); n.valid() && !anchored[n.index]) {
-        anchored[n.index] = 1;
-        group.push_back(n);
-      }
+  const std::vector<std::uint8_t> anchored = reachable(m, seeds, [](TetId) { return true; });
   std::vector<TetId> floating;
   for (std::uint32_t k = 0; k < m.tetSlots(); ++k)
     if (m.isAlive(TetId(k)) && !anchored[k]) floating.push_back(TetId(k));

@@ -20,14 +20,9 @@
 #include "volume_test_models.h"
 
 using namespace aniso;
+using voltest::joined;
 
 namespace {
-
-std::string joined(const std::vector<std::string>& v) {
-  std::string s;
-  for (const std::string& x : v) s += x + "\n";
-  return s;
-}
 
 /// A recovered cube whose boundary triangle `*removed` was then flipped away (T23 through
 /// it, its constrained bit cleared first): recovery "failed" on exactly that triangle.

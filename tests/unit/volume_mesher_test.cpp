@@ -13,14 +13,9 @@
 #include "volume_test_models.h"
 
 using namespace aniso;
+using voltest::joined;
 
 namespace {
-
-std::string joined(const std::vector<std::string>& v) {
-  std::string s;
-  for (const std::string& x : v) s += x + "\n";
-  return s;
-}
 
 std::string problems(const VolumeMeshResult& r) {
   std::string s;

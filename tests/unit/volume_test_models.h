@@ -5,6 +5,7 @@
 // outside the material.
 #include <array>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -13,6 +14,13 @@
 #include "mesher/surface/SurfaceMesh.h"
 
 namespace aniso::voltest {
+
+/// Messages one per line (validators' output in an assertion: "" when valid).
+inline std::string joined(const std::vector<std::string>& v) {
+  std::string s;
+  for (const std::string& x : v) s += x + "\n";
+  return s;
+}
 
 struct SolidModel {
   Model model;
