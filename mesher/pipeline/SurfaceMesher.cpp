@@ -194,9 +194,7 @@ SurfaceMeshResult meshSurfaces(const SurfaceMesherInput& in) {
   std::vector<EdgeDiscretization> edges;
   std::vector<FaceBoundary> boundaries(nf);
   // a volume mesh's film rims (BoundaryUpdate.h: never steps)
-  std::vector<char> filmRim(static_cast<std::size_t>(nf), 0);
-  if (volume)
-    for (int f = 0; f < nf; ++f) filmRim[f] = isFilmRim(model, f) ? 1 : 0;
+  const std::vector<std::uint8_t> filmRim = volume ? filmRims(model) : std::vector<std::uint8_t>(static_cast<std::size_t>(nf), 0);
   const auto discretizeContours = [&] {
     for (int round = 0;; ++round) {  // bounded: updates stop after kRounds + kCrossingRounds
       checkCancel(cancel, "contours");

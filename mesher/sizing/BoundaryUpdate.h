@@ -80,7 +80,7 @@ struct BoundaryUpdateOptions {
   bool vicinity = false;    ///< the vicinity rule on every face (thin faces and strips always get it)
   double stripFraction = 0.6;  ///< a face with more of its boundary length across a gap is a strip
   bool thinFaces = true;          ///< thin faces get their own h_min (false: volume meshes, above)
-  /// The face is the rim of a film (EdgeNormals.h, isFilmRim): never a step (above).
+  /// The face is the rim of a film (EdgeNormals.h, filmRims): never a step (above).
   bool filmRim = false;
   /// Gap sources all along a segment much longer than the gap (BoundaryUpdate.cpp,
   /// kGapSourceSpacing; false: volume meshes).

@@ -11,6 +11,7 @@
 #include <Eigen/Geometry>
 
 #include "mesher/core/Error.h"
+#include "mesher/model/EdgeNormals.h"
 #include "mesher/surface/MidEdgeGeometry.h"
 #include "mesher/volume/FoldRegion.h"
 
@@ -67,9 +68,10 @@ class SliverPass {
   // and the triangles across its edges, all unchanged elsewhere since they were last
   // refused — so the result is the full pass's. Its adjacency holds the triangles it can
   // reach from those (the stars of their nodes).
-  SliverPass(SurfaceMesh& m, double tolerance, const MidEdgeGeometry* geo, SurfaceSliverStats& stats,
-             const std::vector<std::uint8_t>* previous, int keepFrom)
-      : m_(m), tol_(tolerance), geo_(geo), stats_(stats), keepFrom_(keepFrom), dirty_(m.nodes.size(), 0) {
+  SliverPass(SurfaceMesh& m, double tolerance, const MidEdgeGeometry* geo, const std::vector<std::uint8_t>& filmRim,
+             SurfaceSliverStats& stats, const std::vector<std::uint8_t>* previous, int keepFrom)
+      : m_(m), tol_(tolerance), geo_(geo), filmRim_(filmRim), stats_(stats), keepFrom_(keepFrom),
+        dirty_(m.nodes.size(), 0) {
     const int nt = static_cast<int>(m.triangles.size());
     std::vector<int> known;  // the triangles in the adjacency, ascending
     if (!previous) {
@@ -127,7 +129,9 @@ class SliverPass {
       if (removed_[t]) continue;
       for (int k = 0; k < 3 && !removed_[t]; ++k) {
         const int a = m_.triangles[t][k], c = m_.triangles[t][(k + 1) % 3];
-        if ((m_.nodes[a] - m_.nodes[c]).norm() <= localTolerance(edgeSize(a, c)) && merge(a, c)) changed = true;
+        const double length = (m_.nodes[a] - m_.nodes[c]).norm();
+        if ((length <= tol_ || (length <= localTolerance(edgeSize(a, c)) && !acrossFilmRim(a, c))) && merge(a, c))
+          changed = true;
       }
       if (removed_[t]) continue;
       const int k = capVertex(m_.triangles[t]);
@@ -197,6 +201,17 @@ class SliverPass {
 
   bool clean(const Tri& t) const { return !dirty_[t[0]] && !dirty_[t[1]] && !dirty_[t[2]]; }
 
+  bool onFilmRim(int t) const {
+    const int f = m_.triangleFace[static_cast<std::size_t>(t)];
+    return f >= 0 && static_cast<std::size_t>(f) < filmRim_.size() && filmRim_[static_cast<std::size_t>(f)];
+  }
+
+  /// Every triangle on (a, b) lies on a film's rim (header: the edge spans the film).
+  bool acrossFilmRim(int a, int b) const {
+    const TriRange u = uses(a, b);
+    return !u.empty() && std::all_of(u.begin(), u.end(), [&](int t) { return onFilmRim(t); });
+  }
+
   void touch(int t) {
     for (const int v : m_.triangles[t]) dirty_[v] = 1;
     stats_.facesChanged.push_back(m_.triangleFace[t]);
@@ -210,6 +225,7 @@ class SliverPass {
   SurfaceMesh& m_;
   double tol_;
   const MidEdgeGeometry* geo_;
+  const std::vector<std::uint8_t>& filmRim_;  ///< per model face: a film's rim (EdgeNormals.h)
   SurfaceSliverStats& stats_;
   int keepFrom_;  ///< nodes from this index on are never removed by a merge
   bool kept(int v) const { return keepFrom_ >= 0 && v >= keepFrom_; }
@@ -293,7 +309,9 @@ bool SliverPass::flip(int t, int k) {
   // nearer the CAD surface than the old one
   const Vec3 nu = normal(U);
   if (!(nu.norm() > 0)) return false;
-  if (std::abs(nu.dot(m_.nodes[c] - m_.nodes[a])) > localTolerance((m_.nodes[a] - m_.nodes[b]).norm()) * nu.norm()) {
+  const bool offRim = onFilmRim(t) && m_.triangleFace[t] != m_.triangleFace[u];  // a rim's node onto the film's side
+  const double planeTolerance = offRim ? tol_ : localTolerance((m_.nodes[a] - m_.nodes[b]).norm());
+  if (std::abs(nu.dot(m_.nodes[c] - m_.nodes[a])) > planeTolerance * nu.norm()) {
     const int f = m_.triangleFace[u];
     if (!geo_ || m_.triangleFace[t] != f || !(deviation(c, d, f) < deviation(a, b, f))) return false;
   }
@@ -367,9 +385,10 @@ SurfaceSliverStats mendSurfaceSlivers(SurfaceMesh& mesh, double tolerance, const
       geo.reset();  // nodes on entities the model lacks (hand-made meshes): no CAD test
     }
   }
+  const std::vector<std::uint8_t> filmRim = geo ? filmRims(*model) : std::vector<std::uint8_t>{};
   std::vector<std::uint8_t> changed;
   for (int pass = 0; pass < kMaxSliverPasses; ++pass) {
-    SliverPass p(mesh, tolerance, geo ? &*geo : nullptr, stats, pass == 0 ? nullptr : &changed, keepFrom);
+    SliverPass p(mesh, tolerance, geo ? &*geo : nullptr, filmRim, stats, pass == 0 ? nullptr : &changed, keepFrom);
     if (!p.run()) break;
     changed = p.changedNodes();
   }

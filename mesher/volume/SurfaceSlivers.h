@@ -27,7 +27,11 @@
 //    angle above its length over the local size). Legal when every edge at c is used by
 //    exactly two triangles (no assembly interface or open rim there), the link condition
 //    holds (a and c share exactly the two opposite nodes of (a, c)), and every moved
-//    triangle keeps a non-zero area and the side its normal points to.
+//    triangle keeps a non-zero area and the side its normal points to. The local part does
+//    not apply across a film's rim (an edge whose triangles all lie on faces
+//    mesher/model/EdgeNormals.h's filmRims names): the rim is as narrow as the film is
+//    thick everywhere, so merging it would slope the film's top down to its bottom around
+//    its edge, losing volume and flattening the tets there, not removing a sliver.
 //  2 cap flip: a triangle (a, b, c) with an angle above kCapAngleDeg at c, whose edge
 //    (a, b) is used by exactly one other triangle (a, b, d), is replaced with (a, b, d) by
 //    (a, c, d) and (c, b, d), both on d's face — the edge flip of the quad; across a CAD
@@ -37,7 +41,8 @@
 //    CAD surface than (a, b) (their midpoints against MidEdgeGeometry's mid nodes: a cap
 //    spanning a pole chord across the face — wing_fuselage's nose, a face triangle lying in
 //    the symmetry plane on the other face's triangles — is flipped onto the surface),
-//    the edge (c, d) is not in the mesh, both new triangles turn the normal of (a, b, d)
+//    the edge (c, d) is not in the mesh (a cap on a film's rim flipped onto another face:
+//    within the geometric tolerance only), both new triangles turn the normal of (a, b, d)
 //    by less than kCapFlipTurnDeg, and neither meets its outer neighbour much sharper
 //    than (a, b, d) did (a fold; a cap neighbour's normal does not count).
 // The removed area is that of caps and of triangles on sub-tolerance edges: the closed,
