@@ -127,6 +127,7 @@ VolumeImproveStats improveVolume(SolidTetMesh& s, const ControlSpace3d& cs, cons
     st.sliverInsertions = ss.insertions;
     st.sliverEdgeRemovals = ss.edgeRemovals;
     st.sliverSteinerPoints = ss.steinerPoints;
+    st.sliverReconnections = ss.reconnections;
     st.sliverMetricRounds = ss.metricRounds;
   } else {
     st.sliversBefore = st.sliversAfter = improve3d::countSlivers(s, vm, o.sliverAngleDeg, o.euclideanSliverAngleDeg);

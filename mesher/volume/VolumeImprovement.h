@@ -102,7 +102,7 @@ struct VolumeImproveStats {
   std::size_t sliversBefore = 0;  ///< tets below sliverAngleDeg before sliver removal
   std::size_t sliversAfter = 0;
   std::size_t sliverFlips = 0, sliverMoves = 0, sliverInsertions = 0, sliverEdgeRemovals = 0,
-              sliverSteinerPoints = 0;
+              sliverSteinerPoints = 0, sliverReconnections = 0;
   int sliverMetricRounds = 0;  ///< sliver rounds run in the metric (none in a film)
   double smoothingSeconds = 0, flipSeconds = 0, removalSeconds = 0, sliverSeconds = 0;  ///< wall time of the steps
 };

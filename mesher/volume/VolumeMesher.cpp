@@ -311,6 +311,7 @@ void finishSolid(const VolumeMesherInput& in, const std::vector<std::vector<int>
     p.outcome.counters.emplace_back("slivers_after", static_cast<double>(is.sliversAfter));
     p.outcome.counters.emplace_back("sliver_edge_removals", static_cast<double>(is.sliverEdgeRemovals));
     p.outcome.counters.emplace_back("sliver_steiner_points", static_cast<double>(is.sliverSteinerPoints));
+    p.outcome.counters.emplace_back("sliver_reconnections", static_cast<double>(is.sliverReconnections));
     if (!validated(p, in, bt.tets, b, "improvement")) return;
   }
   BoundaryMesh peeled;  // b less the boundary triangles peeling took off the hull

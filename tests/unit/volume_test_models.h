@@ -5,6 +5,7 @@
 // outside the material.
 #include <array>
 #include <cmath>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -148,6 +149,53 @@ inline SolidModel schoenhardtPrism(double h = 1.0, double twist = 0.5) {
     v += m.surface.nodes[t[0]].dot(m.surface.nodes[t[1]].cross(m.surface.nodes[t[2]])) / 6.0;
   m.volume = v;
   return m;
+}
+
+/// A film over the unit square, `thickness` thick, whose top and bottom are the same
+/// triangulation (an n x n grid, interior nodes jittered by up to `jitter` cells, each cell
+/// split by its shorter diagonal): each top node above a bottom one, shifted sideways by up
+/// to `offset` cells (a CAD's top and bottom faces meshed alike). Sides: one strip of
+/// triangles per boundary segment.
+inline SolidModel columnFilm(int n, double thickness, double jitter, double offset) {
+  SolidBuilder b;
+  const int shell = b.addShell();
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0 / n, 1.0 / n);
+  std::vector<std::vector<Vec3>> p(n + 1, std::vector<Vec3>(n + 1));
+  std::vector<std::vector<int>> bot(n + 1, std::vector<int>(n + 1)), top = bot;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) {
+      const bool inner = i > 0 && i < n && j > 0 && j < n;
+      p[i][j] = Vec3(double(i) / n + (inner ? jitter * u(rng) : 0), double(j) / n + (inner ? jitter * u(rng) : 0), 0);
+      bot[i][j] = b.addNode(p[i][j]);
+      const Vec3 shift = inner ? Vec3(offset * u(rng), offset * u(rng), 0) : Vec3(0, 0, 0);
+      top[i][j] = b.addNode(p[i][j] + shift + Vec3(0, 0, thickness));
+    }
+  const int fb = b.addFace(shell), ft = b.addFace(shell), fs = b.addFace(shell);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const bool main = (p[i][j] - p[i + 1][j + 1]).norm() < (p[i + 1][j] - p[i][j + 1]).norm();
+      const std::array<std::array<int, 2>, 6> c =
+          main ? std::array<std::array<int, 2>, 6>{{{i, j}, {i + 1, j}, {i + 1, j + 1}, {i, j}, {i + 1, j + 1}, {i, j + 1}}}
+               : std::array<std::array<int, 2>, 6>{{{i, j}, {i + 1, j}, {i, j + 1}, {i + 1, j}, {i + 1, j + 1}, {i, j + 1}}};
+      for (int k = 0; k < 6; k += 3) {
+        b.addTriangle(ft, top[c[k][0]][c[k][1]], top[c[k + 1][0]][c[k + 1][1]], top[c[k + 2][0]][c[k + 2][1]]);
+        b.addTriangle(fb, bot[c[k][0]][c[k][1]], bot[c[k + 2][0]][c[k + 2][1]], bot[c[k + 1][0]][c[k + 1][1]]);
+      }
+    }
+  std::vector<std::array<int, 2>> ring;  // the boundary, counter-clockwise
+  for (int i = 0; i < n; ++i) ring.push_back({i, 0});
+  for (int j = 0; j < n; ++j) ring.push_back({n, j});
+  for (int i = n; i > 0; --i) ring.push_back({i, n});
+  for (int j = n; j > 0; --j) ring.push_back({0, j});
+  for (std::size_t k = 0; k < ring.size(); ++k) {
+    const auto [i0, j0] = ring[k];
+    const auto [i1, j1] = ring[(k + 1) % ring.size()];
+    b.addTriangle(fs, bot[i0][j0], bot[i1][j1], top[i1][j1]);
+    b.addTriangle(fs, bot[i0][j0], top[i1][j1], top[i0][j0]);
+  }
+  b.model().solids.push_back({"FILM", shell, {}});
+  return b.done(thickness);
 }
 
 }  // namespace aniso::voltest

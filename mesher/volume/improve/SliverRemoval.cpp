@@ -9,10 +9,12 @@
 #include "mesher/core/Log.h"
 #include "mesher/delaunay3d/Inserter.h"
 #include "mesher/delaunay3d/Locate.h"
+#include "mesher/volume/improve/PolyhedronReconnection.h"
 #include "mesher/volume/improve/QualityEdgeRemoval.h"
 #include "mesher/volume/improve/QualityFlips.h"
 #include "mesher/volume/improve/SliverSteinerPoint.h"
 #include "mesher/volume/improve/TetStar.h"
+#include "mesher/volume/TetQuality.h"
 #include "mesher/volume/improve/VertexMover.h"
 #include "mesher/volume/refine/TetMetricGeometry.h"
 
@@ -47,6 +49,8 @@ class SliverRemover {
   bool attack(TetId t);
   bool flipAway(TetId t);
   bool removeEdges(TetId t);
+  bool reconnect(TetId t);
+  void flipCreatedSlivers();
   void candidates(TetId t, std::vector<Vec3>& out) const;
   bool insertAt(TetId t, const Vec3& c);
   bool insertPoint(TetId t);
@@ -75,6 +79,14 @@ bool SliverRemover::flipAway(TetId t) {
   return true;
 }
 
+// Flips of the slivers among created_ (and of those the flips create, up to 64).
+void SliverRemover::flipCreatedSlivers() {
+  const std::size_t before = flips_.counts().total();
+  for (std::size_t k = 0; k < created_.size() && k < 64; ++k)
+    if (isSliver(created_[k])) flips_.visit(created_[k], created_);
+  stats.flips += flips_.counts().total() - before;
+}
+
 // Removal of one of t's edges whose ring is too large for T32/T44, then flips of the created
 // slivers.
 bool SliverRemover::removeEdges(TetId t) {
@@ -83,13 +95,24 @@ bool SliverRemover::removeEdges(TetId t) {
   for (const auto& e : kEdge) {
     if (!removeEdgeByQuality(s_, vm_, t, e[0], e[1], created_)) continue;
     ++stats.edgeRemovals;
-    const std::size_t before = flips_.counts().total();
-    for (std::size_t k = 0; k < created_.size() && k < 64; ++k)
-      if (isSliver(created_[k])) flips_.visit(created_[k], created_);
-    stats.flips += flips_.counts().total() - before;
+    flipCreatedSlivers();
     return true;
   }
   return false;
+}
+
+// The sliver and the tets around it tetrahedralized again (PolyhedronReconnection.h), then
+// flips of the created slivers.
+bool SliverRemover::reconnect(TetId t) {
+  const std::uint32_t* tv = s_.mesh.tetVertices(t);
+  if (!(tetMinDihedral(s_.mesh.point(VertexId(tv[0])), s_.mesh.point(VertexId(tv[1])), s_.mesh.point(VertexId(tv[2])),
+                       s_.mesh.point(VertexId(tv[3]))) < kReconnectionAngleDeg))
+    return false;
+  created_.clear();
+  if (!reconnectPolyhedron(s_, vm_, t, created_)) return false;
+  ++stats.reconnections;
+  flipCreatedSlivers();
+  return true;
 }
 
 // The candidate points of step 3: the metric circumcentre, then for each boundary face of
@@ -195,7 +218,8 @@ bool SliverRemover::attack(TetId t) {
     if (mover_.relocate(VertexId(v), true)) ++stats.moves;
     if (!isSliver(t)) return true;
   }
-  return insertion_ && (insertPoint(t) || steinerPoint(t));
+  if (!s_.mesh.isAlive(t)) return true;
+  return reconnect(t) || (insertion_ && (insertPoint(t) || steinerPoint(t)));
 }
 
 std::vector<TetId> SliverRemover::round(const std::vector<TetId>& slivers) {

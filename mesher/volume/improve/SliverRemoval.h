@@ -12,6 +12,10 @@
 //   1b removal of one of its edges with a ring of up to volume::kMaxRemovalRing tets
 //     (QualityEdgeRemoval.h: the best fan of the ring polygon), then flips as in 1;
 //   2 relocation of its free vertices (VertexMover::relocate);
+//   2b a sliver with a Euclidean dihedral angle below kReconnectionAngleDeg: it and the
+//     tets around it tetrahedralized again with the same vertices and boundary
+//     (PolyhedronReconnection.h: a search, too dear for every tet of a film below the
+//     target), then flips as in 1;
 //   3 (optional) a point at its metric circumcentre or, failing that, at the apex of the
 //     regular tet (in its metric) on one of its boundary faces — a sliver lying on a
 //     curved boundary (two boundary faces, four surface nodes) has its circumcentre far
@@ -45,6 +49,8 @@ namespace aniso::improve3d {
 /// Metric distance below which a sliver's circumcentre is too close to an existing vertex
 /// (times min(1, the sliver's mean metric edge length)).
 inline constexpr double kSliverInsertDistance = 0.25;
+/// Step 2b only for slivers flatter than this (degrees, Euclidean): the referee's bar.
+inline constexpr double kReconnectionAngleDeg = 2.0;
 /// Above this share of slivers among a solid's tets, the solid is a film: no points are
 /// inserted (steps 3, 4) and no rounds run in the metric (header).
 inline constexpr double kFilmSliverShare = 0.3;
@@ -52,12 +58,12 @@ inline constexpr double kFilmSliverShare = 0.3;
 struct SliverStats {
   std::size_t before = 0, after = 0;
   std::size_t flips = 0, moves = 0, insertions = 0;
-  std::size_t edgeRemovals = 0, steinerPoints = 0;
+  std::size_t edgeRemovals = 0, steinerPoints = 0, reconnections = 0;
   int metricRounds = 0;  ///< rounds run in the metric (none in a film)
   /// Adds o's operation counts (not before / after).
   void merge(const SliverStats& o) {
     flips += o.flips, moves += o.moves, insertions += o.insertions;
-    edgeRemovals += o.edgeRemovals, steinerPoints += o.steinerPoints;
+    edgeRemovals += o.edgeRemovals, steinerPoints += o.steinerPoints, reconnections += o.reconnections;
   }
 };
 
