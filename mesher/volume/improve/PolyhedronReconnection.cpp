@@ -33,8 +33,10 @@ bool orientTowards(const del3d::TetMesh& mesh, Face& f, VertexId inner) {
 
 class Search {
  public:
-  Search(const del3d::TetMesh& mesh, const VertexMetrics& vm, std::vector<VertexId> vertices, double worstOld)
-      : mesh_(mesh), vm_(vm), vertices_(std::move(vertices)), best_(worstOld) {}
+  /// `steps`: the candidate tets tried so far, shared by the polyhedra of one call.
+  Search(const del3d::TetMesh& mesh, const VertexMetrics& vm, std::vector<VertexId> vertices, double worstOld, int& steps)
+      : mesh_(mesh), vm_(vm), vertices_(std::move(vertices)), best_(worstOld), steps_(steps),
+        stepLimit_(std::min(steps + kMaxReconnectionSteps, kMaxReconnectionTotalSteps)) {}
 
   void run(std::map<Key, Face> front) {
     front_ = std::move(front);
@@ -55,7 +57,7 @@ class Search {
     std::vector<std::pair<double, VertexId>> candidates;
     for (const VertexId p : vertices_) {
       if (p == f[0] || p == f[1] || p == f[2]) continue;
-      if (++steps_ > kMaxReconnectionSteps) return;
+      if (++steps_ > stepLimit_) return;
       if (!(del3d::orientation(mesh_, {f[0], f[1], f[2], p}) > 0)) continue;
       const double q = vm_.score(Quad{f[0], f[1], f[2], p});
       if (std::min(q, worst) > best_) candidates.push_back({q, p});
@@ -121,7 +123,8 @@ class Search {
   std::vector<Quad> bestTets_, tets_;
   std::map<Key, Face> front_;
   std::set<Key> closed_;
-  int steps_ = 0;
+  int& steps_;
+  int stepLimit_;
 };
 
 }  // namespace
@@ -157,7 +160,8 @@ struct Polyhedron {
 };
 
 /// The best tetrahedralization of p better than its worst tet (empty: none).
-std::vector<Quad> bestTetrahedralization(const del3d::TetMesh& mesh, const VertexMetrics& vm, const Polyhedron& p) {
+std::vector<Quad> bestTetrahedralization(const del3d::TetMesh& mesh, const VertexMetrics& vm, const Polyhedron& p,
+                                         int& steps) {
   // the boundary of the union, each face oriented towards its tet; a constrained face
   // inside it stays (no reconnection)
   std::map<Key, std::pair<Face, int>> faces;
@@ -177,7 +181,7 @@ std::vector<Quad> bestTetrahedralization(const del3d::TetMesh& mesh, const Verte
   for (const TetId u : p.tets) worstOld = std::min(worstOld, vm.score(u));
   std::vector<VertexId> vertices = p.vertices;
   std::sort(vertices.begin(), vertices.end(), [](VertexId a, VertexId b) { return a.index < b.index; });
-  Search search(mesh, vm, vertices, worstOld);
+  Search search(mesh, vm, vertices, worstOld, steps);
   search.run(front);
   return search.found() ? search.tets() : std::vector<Quad>{};
 }
@@ -220,8 +224,9 @@ bool reconnectPolyhedron(SolidTetMesh& s, const VertexMetrics& vm, TetId t, std:
         }
     from = to;
   }
-  for (std::size_t k = 0; k < tries.size(); ++k) {
-    const std::vector<Quad> tets = bestTetrahedralization(mesh, vm, tries[k]);
+  int steps = 0;
+  for (std::size_t k = 0; k < tries.size() && steps < kMaxReconnectionTotalSteps; ++k) {
+    const std::vector<Quad> tets = bestTetrahedralization(mesh, vm, tries[k], steps);
     if (tets.empty()) continue;
     std::vector<TetId> ids(tets.size());
     del3d::replaceTets(s.mesh, tries[k].tets, tets, ids);

@@ -23,7 +23,8 @@
 // above the best found; its faces close open faces or open new ones. A front that
 // empties is a tetrahedralization of P: its tets are positively oriented and its boundary
 // is P's, so they cover P once. It must use every vertex of P (none disappears). At most
-// kMaxReconnectionSteps candidate tets are tried. Check, then change (del3d::replaceTets):
+// kMaxReconnectionSteps candidate tets are tried per polyhedron, kMaxReconnectionTotalSteps
+// in one call. Check, then change (del3d::replaceTets):
 // the hull and the constrained faces are unchanged (validateSolidTetMesh holds);
 // deterministic (fixed orders).
 #include <cstddef>
@@ -38,8 +39,10 @@ namespace aniso::improve3d {
 inline constexpr std::size_t kMaxReconnectionTets = 12;
 /// At most this many vertices in the polyhedron.
 inline constexpr std::size_t kMaxReconnectionVertices = 10;
-/// Bound of the search: candidate tets tried.
+/// Bounds of the search: candidate tets tried for one polyhedron, and over all the
+/// polyhedra of one call (about 25 ms).
 inline constexpr int kMaxReconnectionSteps = 5000;
+inline constexpr int kMaxReconnectionTotalSteps = 100000;
 /// When the polyhedron has no better tetrahedralization, it grown by the tet across one of
 /// its faces (then closed as above), then by one more, is tried: at most this many growths
 /// in a row and this many polyhedra in all.
