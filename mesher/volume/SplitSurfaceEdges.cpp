@@ -1,7 +1,10 @@
 #include "mesher/volume/SplitSurfaceEdges.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
+#include <cstring>
+#include <unordered_set>
 #include <vector>
 
 #include "mesher/core/Error.h"
@@ -14,6 +17,24 @@ std::uint64_t edgeKey(int a, int b) {
   if (a > b) std::swap(a, b);
   return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
 }
+
+/// A point's coordinates, bit for bit (two nodes at one point are one vertex to the
+/// Delaunay kernel: a solid with them cannot be meshed).
+struct PointKey {
+  std::array<std::uint64_t, 3> bits;
+  explicit PointKey(const Vec3& p) {
+    for (int k = 0; k < 3; ++k) {
+      const double x = p[k] == 0 ? 0.0 : p[k];  // -0 and +0 alike
+      std::memcpy(&bits[static_cast<std::size_t>(k)], &x, sizeof x);
+    }
+  }
+  bool operator==(const PointKey& o) const { return bits == o.bits; }
+};
+struct PointKeyHash {
+  std::size_t operator()(const PointKey& k) const {
+    return std::hash<std::uint64_t>()(k.bits[0] ^ (k.bits[1] * 0x9E3779B97F4A7C15ull) ^ (k.bits[2] * 0xC2B2AE3D27D4EB4Full));
+  }
+};
 
 }  // namespace
 
@@ -65,8 +86,13 @@ SplitStats splitSurfaceEdges(const Model& model, SurfaceMesh& mesh, std::span<co
       const int a = static_cast<int>(wanted[w] >> 32), b = static_cast<int>(wanted[w] & 0xFFFFFFFFu);
       placed[w] = geometry.place(a, b, mesh.triangleFace[firstTri[w]]);
     }
+    // a middle placed on a node already there (two edges of a fold over one point of
+    // the CAD) is not added: the edge stays whole
+    std::unordered_set<PointKey, PointKeyHash> taken;
+    taken.reserve(mesh.nodes.size() + wanted.size());
+    for (const Vec3& p : mesh.nodes) taken.insert(PointKey(p));
     for (std::size_t w = 0; w < wanted.size(); ++w) {
-      if (firstTri[w] < 0) continue;
+      if (firstTri[w] < 0 || !taken.insert(PointKey(placed[w].p)).second) continue;
       midOf[w] = mesh.addNode(placed[w].p, placed[w].on);
       ++stats.edgesSplit;
     }

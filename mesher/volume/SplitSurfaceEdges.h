@@ -12,7 +12,9 @@
 // recovers any boundary.
 //
 // Edges are node pairs of the surface mesh (either order, duplicates allowed); pairs that
-// are not an edge of a triangle are ignored. Edges of quads are not split (a quad-dominant
+// are not an edge of a triangle are ignored, and so is an edge whose middle would land on a
+// node already there (bit for bit: two edges of a fold over one point of the CAD; the
+// Delaunay kernel cannot hold two nodes at one point). Edges of quads are not split (a quad-dominant
 // mesh is a surface mesh only). The mesh must be linear (no mid nodes yet).
 #include <array>
 #include <span>

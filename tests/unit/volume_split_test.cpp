@@ -99,3 +99,28 @@ TEST(SplitSurfaceEdges, LongestEdgeOfATriangle) {
   EXPECT_EQ(e[0], 1);
   EXPECT_EQ(e[1], 2);
 }
+
+TEST(SplitSurfaceEdges, LeavesAnEdgeWholeWhoseMiddleIsANodeAlready) {
+  // two edges of a fold over one point of the CAD place their middles on one point: the
+  // Delaunay kernel cannot hold two nodes there (the solid failed with "surface node ...
+  // coincides with node ..."); the second stays whole
+  const Model model = unitSquare();
+  const SurfaceMesh original = meshModel(model, 0.25);
+  std::array<int, 2> inner{-1, -1};
+  for (const auto& t : original.triangles)
+    if (original.nodeOn[t[0]].kind == NodeOn::Kind::Face && original.nodeOn[t[1]].kind == NodeOn::Kind::Face) {
+      inner = {t[0], t[1]};
+      break;
+    }
+  ASSERT_GE(inner[0], 0);
+  const std::array<int, 2> request[] = {inner};
+  SurfaceMesh probe = original;  // where the middle goes
+  ASSERT_EQ(splitSurfaceEdges(model, probe, request).edgesSplit, 1);
+  SurfaceMesh mesh = original;
+  mesh.addNode(probe.nodes.back(), probe.nodeOn.back());  // a node there already
+  const std::size_t nodes = mesh.nodes.size();
+  const SplitStats st = splitSurfaceEdges(model, mesh, request);
+  EXPECT_EQ(st.edgesSplit, 0);
+  EXPECT_EQ(mesh.nodes.size(), nodes);
+  EXPECT_EQ(mesh.triangles, original.triangles);
+}

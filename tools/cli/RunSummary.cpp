@@ -149,7 +149,12 @@ void addSizingWarnings(const io::Report& r, std::vector<std::string>& out) {
         if (listed < kSummaryMaxFaces) faces += (listed++ ? ", " : "") + std::to_string(e.value("face", 0));
       }
     if (total > listed) faces += format(" and %.0f more", static_cast<double>(total - listed));
-    out.push_back(format("thin walls: the surface was meshed again %.0f time(s), finer where a part is thinner "
+    if (total == 0)  // only the sources of solids the volume mesher failed on
+      out.push_back(format("the surface was meshed again %.0f time(s), finer on the solids the volume mesher could "
+                           "not mesh at first",
+                           number(px, "rounds")));
+    else
+      out.push_back(format("thin walls: the surface was meshed again %.0f time(s), finer where a part is thinner "
                          "than its elements (element size down to %g on face(s) ",
                          number(px, "rounds"), smallest) +
                   faces + "); the element count grew accordingly");
