@@ -215,7 +215,9 @@ bool reconnectPolyhedron(SolidTetMesh& s, const VertexMetrics& vm, TetId t, std:
       for (std::size_t c = 0; c < tries[k].tets.size(); ++c)
         for (int i = 0; i < 4; ++i) {
           const TetId u = tries[k].tets[c], n = mesh.neighbour(u, i);
-          if (!n.valid() || mesh.isConstrained(u, i) || tries[k].has(n) || tries.size() >= kMaxReconnectionTries) continue;
+          if (!n.valid() || mesh.isConstrained(u, i) || tries[k].has(n) || tries.size() >= kMaxReconnectionTries ||
+              tries[k].tets.size() >= kMaxReconnectionTets)
+            continue;
           Polyhedron p = tries[k];
           p.add(mesh, n);
           if (p.vertices.size() > kMaxReconnectionVertices) continue;
