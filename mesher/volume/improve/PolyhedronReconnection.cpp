@@ -127,11 +127,7 @@ class Search {
   int stepLimit_;
 };
 
-}  // namespace
-
-namespace {
-
-/// The polyhedron: its tets and vertices (sorted by index).
+/// The polyhedron: its tets and their vertices.
 struct Polyhedron {
   std::vector<TetId> tets;
   std::vector<VertexId> vertices;
