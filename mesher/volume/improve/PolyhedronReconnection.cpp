@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "mesher/delaunay3d/LocalRetriangulation.h"
+#include "mesher/volume/TetQuality.h"
 
 namespace aniso::improve3d {
 namespace {
@@ -23,6 +24,11 @@ Key keyOf(const Face& f) {
   return k;
 }
 
+/// The smallest dihedral angle of the tet (degrees, Euclidean: the referee's).
+double minDihedral(const del3d::TetMesh& mesh, const Quad& q) {
+  return tetMinDihedral(mesh.point(q[0]), mesh.point(q[1]), mesh.point(q[2]), mesh.point(q[3]));
+}
+
 /// The face oriented so that `inner` lies on its positive side (exact orient3d; 0: none).
 bool orientTowards(const del3d::TetMesh& mesh, Face& f, VertexId inner) {
   const double o = del3d::orientation(mesh, {f[0], f[1], f[2], inner});
@@ -34,8 +40,8 @@ bool orientTowards(const del3d::TetMesh& mesh, Face& f, VertexId inner) {
 class Search {
  public:
   /// `steps`: the candidate tets tried so far, shared by the polyhedra of one call.
-  Search(const del3d::TetMesh& mesh, const VertexMetrics& vm, std::vector<VertexId> vertices, double worstOld, int& steps)
-      : mesh_(mesh), vm_(vm), vertices_(std::move(vertices)), best_(worstOld), steps_(steps),
+  Search(const del3d::TetMesh& mesh, std::vector<VertexId> vertices, double worstOld, int& steps)
+      : mesh_(mesh), vertices_(std::move(vertices)), best_(worstOld), steps_(steps),
         stepLimit_(std::min(steps + kMaxReconnectionSteps, kMaxReconnectionTotalSteps)) {}
 
   void run(std::map<Key, Face> front) {
@@ -59,7 +65,7 @@ class Search {
       if (p == f[0] || p == f[1] || p == f[2]) continue;
       if (++steps_ > stepLimit_) return;
       if (!(del3d::orientation(mesh_, {f[0], f[1], f[2], p}) > 0)) continue;
-      const double q = vm_.score(Quad{f[0], f[1], f[2], p});
+      const double q = minDihedral(mesh_, Quad{f[0], f[1], f[2], p});
       if (std::min(q, worst) > best_) candidates.push_back({q, p});
     }
     std::stable_sort(candidates.begin(), candidates.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
@@ -117,7 +123,6 @@ class Search {
   }
 
   const del3d::TetMesh& mesh_;
-  const VertexMetrics& vm_;
   std::vector<VertexId> vertices_;
   double best_;
   std::vector<Quad> bestTets_, tets_;
@@ -156,8 +161,7 @@ struct Polyhedron {
 };
 
 /// The best tetrahedralization of p better than its worst tet (empty: none).
-std::vector<Quad> bestTetrahedralization(const del3d::TetMesh& mesh, const VertexMetrics& vm, const Polyhedron& p,
-                                         int& steps) {
+std::vector<Quad> bestTetrahedralization(const del3d::TetMesh& mesh, const Polyhedron& p, int& steps) {
   // the boundary of the union, each face oriented towards its tet; a constrained face
   // inside it stays (no reconnection)
   std::map<Key, std::pair<Face, int>> faces;
@@ -174,17 +178,17 @@ std::vector<Quad> bestTetrahedralization(const del3d::TetMesh& mesh, const Verte
   for (const auto& [k, e] : faces)
     if (e.second == 1) front.emplace(k, e.first);
   double worstOld = 1e300;
-  for (const TetId u : p.tets) worstOld = std::min(worstOld, vm.score(u));
+  for (const TetId u : p.tets) worstOld = std::min(worstOld, minDihedral(mesh, {mesh.vertex(u, 0), mesh.vertex(u, 1), mesh.vertex(u, 2), mesh.vertex(u, 3)}));
   std::vector<VertexId> vertices = p.vertices;
   std::sort(vertices.begin(), vertices.end(), [](VertexId a, VertexId b) { return a.index < b.index; });
-  Search search(mesh, vm, vertices, worstOld, steps);
+  Search search(mesh, vertices, worstOld, steps);
   search.run(front);
   return search.found() ? search.tets() : std::vector<Quad>{};
 }
 
 }  // namespace
 
-bool reconnectPolyhedron(SolidTetMesh& s, const VertexMetrics& vm, TetId t, std::vector<TetId>& created) {
+bool reconnectPolyhedron(SolidTetMesh& s, TetId t, std::vector<TetId>& created) {
   const del3d::TetMesh& mesh = s.mesh;
   if (!mesh.isAlive(t)) return false;
   Polyhedron base;
@@ -224,7 +228,7 @@ bool reconnectPolyhedron(SolidTetMesh& s, const VertexMetrics& vm, TetId t, std:
   }
   int steps = 0;
   for (std::size_t k = 0; k < tries.size() && steps < kMaxReconnectionTotalSteps; ++k) {
-    const std::vector<Quad> tets = bestTetrahedralization(mesh, vm, tries[k], steps);
+    const std::vector<Quad> tets = bestTetrahedralization(mesh, tries[k], steps);
     if (tets.empty()) continue;
     std::vector<TetId> ids(tets.size());
     del3d::replaceTets(s.mesh, tries[k].tets, tets, ids);

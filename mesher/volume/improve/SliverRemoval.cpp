@@ -101,16 +101,28 @@ bool SliverRemover::removeEdges(TetId t) {
   return false;
 }
 
-// The sliver and the tets around it tetrahedralized again (PolyhedronReconnection.h), then
-// flips of the created slivers.
+// The sliver and the tets around it tetrahedralized again (PolyhedronReconnection.h); while
+// the new tets hold one still below kReconnectionAngleDeg, it in turn (at most
+// kReconnectionChain times: the best tiling of a polyhedron may keep a flat tet that a
+// neighbouring one removes); then flips of the created slivers.
 bool SliverRemover::reconnect(TetId t) {
-  const std::uint32_t* tv = s_.mesh.tetVertices(t);
-  if (!(tetMinDihedral(s_.mesh.point(VertexId(tv[0])), s_.mesh.point(VertexId(tv[1])), s_.mesh.point(VertexId(tv[2])),
-                       s_.mesh.point(VertexId(tv[3]))) < kReconnectionAngleDeg))
-    return false;
+  const auto flatness = [&](TetId u) {
+    const std::uint32_t* v = s_.mesh.tetVertices(u);
+    return tetMinDihedral(s_.mesh.point(VertexId(v[0])), s_.mesh.point(VertexId(v[1])), s_.mesh.point(VertexId(v[2])),
+                          s_.mesh.point(VertexId(v[3])));
+  };
+  if (!(flatness(t) < kReconnectionAngleDeg)) return false;
   created_.clear();
-  if (!reconnectPolyhedron(s_, vm_, t, created_)) return false;
+  if (!reconnectPolyhedron(s_, t, created_)) return false;
   ++stats.reconnections;
+  for (int k = 1; k < kReconnectionChain; ++k) {
+    TetId flattest;
+    double angle = kReconnectionAngleDeg;
+    for (const TetId u : created_)
+      if (s_.mesh.isAlive(u) && flatness(u) < angle) angle = flatness(u), flattest = u;
+    if (!flattest.valid() || !reconnectPolyhedron(s_, flattest, created_)) break;
+    ++stats.reconnections;
+  }
   flipCreatedSlivers();
   return true;
 }
@@ -219,7 +231,8 @@ bool SliverRemover::attack(TetId t) {
     if (!isSliver(t)) return true;
   }
   if (!s_.mesh.isAlive(t)) return true;
-  return reconnect(t) || (insertion_ && (insertPoint(t) || steinerPoint(t)));
+  if (insertion_ && (insertPoint(t) || steinerPoint(t))) return true;
+  return reconnect(t);
 }
 
 std::vector<TetId> SliverRemover::round(const std::vector<TetId>& slivers) {
