@@ -54,6 +54,11 @@ check bad-dim 2 dim mesh "$good" -o "$t/out.msh" --dim 4
 check bad-order 2 order mesh "$good" -o "$t/out.msh" --order 3
 check bad-threads 2 threads mesh "$good" -o "$t/out.msh" --threads -2
 check bad-format 2 format mesh "$good" -o "$t/out.unknownformat"
+# a word outside an option's list is named with the words allowed, not CLI11's table
+check bad-overlaps 2 "'foo' is not one of: merge, keep, error" mesh "$good" -o "$t/out.msh" --overlaps foo
+check bad-quad-method 2 "not one of: merge, morph, mixed" mesh "$good" -o "$t/out.msh" --quad --quad-method x
+check bad-msh-version 2 "'3' is not one of: 4.1, 2.2" mesh "$good" -o "$t/out.msh" --msh-version 3
+check bad-internal-faces 2 "not one of: auto, crack, bond" mesh "$good" -o "$t/out.msh" --internal-faces y
 check no-output 2 output mesh "$good"
 check no-folder 2 folder mesh "$good" -o "$t/nofolder/out.msh"
 check missing-sizing 2 sizing mesh "$good" -o "$t/out.msh" --sizing "$t/nosuch.json"

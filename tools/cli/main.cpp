@@ -9,6 +9,7 @@
 
 #include "mesher/core/Error.h"
 #include "tools/cli/AdaptCommand.h"
+#include "tools/cli/ChoiceOption.h"
 #include "tools/cli/Commands.h"
 #include "tools/cli/HelpFormat.h"
 #include "tools/cli/SizeOptions.h"
@@ -27,7 +28,7 @@ void addOverlapsOption(CLI::App& cmd, cad::OverlapPolicy& p) {
   cmd.add_option("--overlaps", p,
                  "Overlapping solids: merge (each common region meshed once, in the smaller part; a thin film where it leaves no narrow faces), keep (left "
                  "unfragmented, overlapping meshes) or error (exit 2)")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, cad::OverlapPolicy>{
+      ->transform(cli::choice(std::vector<std::pair<std::string, cad::OverlapPolicy>>{
           {"merge", cad::OverlapPolicy::Merge}, {"keep", cad::OverlapPolicy::Keep}, {"error", cad::OverlapPolicy::Error}}))
       ->option_text("merge|keep|error")
       ->default_str("merge")
@@ -96,14 +97,14 @@ int main(int argc, char** argv) {
       ->group(kOutput);
   meshCmd->add_flag("--quad", mesh.options.quad, "Quad-dominant surface mesh")->group(kOutput);
   meshCmd->add_option("--quad-method", mesh.options.quadMethod, "How --quad makes quads from triangles (thesis 4.7)")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, QuadMethod>{
+      ->transform(cli::choice(std::vector<std::pair<std::string, QuadMethod>>{
           {"merge", QuadMethod::Merge}, {"morph", QuadMethod::Morph}, {"mixed", QuadMethod::Mixed}}))
       ->option_text("merge|morph|mixed")
       ->default_str("merge")
       ->group(kOutput);
   meshCmd->add_flag("--binary", mesh.binary, "Binary output where the format has it")->group(kOutput);
   meshCmd->add_option("--msh-version", mesh.mshVersion, "MSH format version")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, int>{{"4.1", 41}, {"2.2", 22}}))
+      ->transform(cli::choice(std::vector<std::pair<std::string, int>>{{"4.1", 41}, {"2.2", 22}}))
       ->option_text("4.1|2.2")
       ->default_str("4.1")
       ->group(kOutput);
@@ -116,7 +117,7 @@ int main(int argc, char** argv) {
   meshCmd->add_option("--internal-faces", mesh.options.internalFaces,
                       "Faces inside a solid: crack = two-sided (nodes doubled), bond = one-sided (nodes shared); auto = "
                       "crack where the CAD keeps the face in a shell of its own, bond otherwise")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, InternalFaces>{
+      ->transform(cli::choice(std::vector<std::pair<std::string, InternalFaces>>{
           {"auto", InternalFaces::Auto}, {"crack", InternalFaces::Crack}, {"bond", InternalFaces::Bond}}))
       ->option_text("auto|crack|bond")
       ->default_str("auto")
