@@ -57,6 +57,13 @@ std::vector<Problem> surfaceProblems(const Model& model, const SurfaceMeshResult
     if (ps.size() > 1) detail += " (and " + std::to_string(ps.size() - 1) + " more)";
     out.push_back({EntityRef::face(static_cast<int>(f), parts[f]), Severity::Failed, "face-mesh", detail, "surface"});
   }
+  // refinement stopped at its insertion bound (FaceMesher.h): valid, coarser than asked somewhere
+  for (std::size_t f = 0; f < sr.faces.size(); ++f)
+    if (sr.faces[f].problems.empty() && sr.faces[f].stats.insertionLimitReached)
+      out.push_back({EntityRef::face(static_cast<int>(f), parts[f]), Severity::Note, "refinement-limit",
+                     "its refinement stopped at the insertion bound: elements may be larger than the sizing asks "
+                     "somewhere",
+                     "surface"});
   // faces meshed, then collapsed by the surface repair (SurfaceSlivers.h: narrower than its
   // tolerance): the surface stays closed over them, but a load or support on them has no nodes
   std::vector<int> left(sr.faces.size(), 0);

@@ -26,7 +26,7 @@ ModelGrade gradeModel(const Model& model);
 
 /// One Failed problem ("face-mesh", phase "surface") per face the surface mesher left out,
 /// one Note ("face-collapsed") per face it meshed that the surface repair left without
-/// elements.
+/// elements, one Note ("refinement-limit") per face whose refinement stopped at its bound.
 std::vector<Problem> surfaceProblems(const Model& model, const SurfaceMeshResult& surface);
 
 /// The solids' problems, their part names filled in (phase "volume").

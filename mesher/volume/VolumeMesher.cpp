@@ -293,6 +293,11 @@ void finishSolid(const VolumeMesherInput& in, const std::vector<std::vector<int>
     p.outcome.times.emplace_back("volume refinement", since(t0));
     p.outcome.counters.emplace_back("refinement_inserted", static_cast<double>(rs.inserted));
     p.outcome.counters.emplace_back("refinement_abandoned", static_cast<double>(rs.abandoned));
+    if (rs.budgetExhausted)
+      p.outcome.problems.push_back({solidRef(solid), Severity::Degraded, "refinement-budget",
+                                    "the refinement stopped at its vertex budget (" + std::to_string(rs.finalTets) +
+                                        " tetrahedra): elements are larger than the sizing asks somewhere",
+                                    "volume"});
     if (!validated(p, in, bt.tets, b, "refinement")) return;
   }
   std::optional<improve3d::VertexMetrics> metrics;  // the improvement's, read by the report

@@ -2,7 +2,8 @@
 
 usage: module_test.py ANISOMESH_CLI OWN_MODELS_DIR SHARED_MODELS_DIR   (PYTHONPATH: build/python)
 The mesh the module writes is the CLI's, byte for byte (bracket 3D and 2D; periodic_u_cst,
-whose 3D run at the thesis' sizing keeps one proximity round); the arrays are the mesh
+whose 3D run at the thesis' sizing keeps one proximity round; blocks2, whose run at the
+thesis' sizing keeps the coarse-solid retry); the arrays are the mesh
 (shapes, 0-based, positive volumes, CAD ids); bad input raises InputError, a time limit
 MeshingError with its problems; progress is reported and Ctrl-C stops a run.
 """
@@ -22,6 +23,7 @@ import anisomesh
 CLI, OWN, SHARED = sys.argv[1:4]
 BRACKET = os.path.join(OWN, "bracket.step")
 PERIODIC = os.path.join(SHARED, "periodic_u_cst.step")
+BLOCKS2 = os.path.join(OWN, "blocks2.step")
 
 
 def read(path):
@@ -55,6 +57,11 @@ class SameAsCli(unittest.TestCase):
     def test_proximity_round(self):
         m = self.same(PERIODIC, ["--hmax-rel", "0.5", "--curvature-ratio", "0.15"], hmax_rel=0.5, curvature_ratio=0.15)
         self.assertEqual(m.report["proximity"]["rounds"], 1)  # the round is the point of this case
+
+    def test_coarse_solid_retry(self):
+        thesis = ["--hmax-rel", "0.5", "--curvature-ratio", "0.15", "--chord-deviation-rel", "0"]
+        m = self.same(BLOCKS2, thesis, hmax_rel=0.5, curvature_ratio=0.15, chord_deviation_rel=0)
+        self.assertTrue(m.report["coarse_solids"]["refined_kept"])  # the retry is the point of this case
 
     def test_chord_deviation(self):
         off = self.same(BRACKET, ["--dim", "2", "--chord-deviation-rel", "0"], dim=2, chord_deviation_rel=0)

@@ -26,7 +26,10 @@ void fillSurfaceReport(const SurfaceMeshResult& sr, io::Report& report) {
     const FaceOutcome& o = sr.faces[f];
     faces.push_back({{"face", f + 1}, {"triangles", o.triangles}, {"eta_M", meanOf(o.quality.eta)},
                      {"mu_M", meanOf(o.quality.mu)}, {"E_K", meanOf(o.quality.ek)},
-                     {"missing_boundary_edges", o.stats.missingBoundaryEdges}});
+                     {"missing_boundary_edges", o.stats.missingBoundaryEdges},
+                     {"refinement_limit_reached", o.stats.insertionLimitReached},
+                     {"folds_left", o.stats.foldsLeft},  // the face mesher's; the final check grades the mesh
+                     {"flat_triangles_left", o.stats.flatTrianglesLeft}});
   }
   report.quality["faces"] = faces;
   report.quads = static_cast<long long>(sr.mesh.quads.size());
