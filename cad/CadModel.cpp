@@ -64,6 +64,7 @@ CadModel::~CadModel() = default;
 
 const std::string& CadModel::path() const { return impl_->path; }
 CadFormat CadModel::format() const { return impl_->format; }
+const std::string& CadModel::fileUnit() const { return impl_->fileUnit; }
 int CadModel::solidsLost() const { return impl_->solidsLost; }
 
 namespace {

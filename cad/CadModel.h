@@ -110,6 +110,9 @@ class CadModel {
 
   const std::string& path() const;
   CadFormat format() const;
+  /// The length unit the file declares, in lower case ("inch", "millimetre"; "" when it
+  /// says none, and for BREP). Lengths are in mm whatever it is (OCCT converts on reading).
+  const std::string& fileUnit() const;
   /// Solids the file declares that reading could not give as solids, not even rebuilt from
   /// their faces (a STEP solid bounded by an open shell that does not close, or one OCCT's
   /// transfer dropped): their faces, if any were read, are loose faces. 0 for IGES and BREP.

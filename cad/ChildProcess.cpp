@@ -66,6 +66,7 @@ void writeShape(const CadModel::Impl& impl, const Exchange& x, std::ostream& met
   if (!impl.shape.IsNull()) b.Add(all, impl.shape);
   putInt(meta, impl.solidsLost);
   putInt(meta, impl.facesInFile);
+  putString(meta, impl.fileUnit);
   putInt(meta, static_cast<std::int64_t>(impl.names.size()));
   for (size_t i = 0; i < impl.names.size(); ++i) {
     putString(meta, impl.names[i]);
@@ -92,6 +93,7 @@ void readShape(CadModel::Impl& impl, const Exchange& x, std::istream& meta) {
   const bool hasShape = getInt(meta) != 0;
   const int solidsLost = static_cast<int>(getInt(meta));
   const int facesInFile = static_cast<int>(getInt(meta));
+  std::string fileUnit = getString(meta);
   std::vector<std::string> names(static_cast<size_t>(getInt(meta))), colors(names.size());
   for (size_t i = 0; i < names.size(); ++i) {
     names[i] = getString(meta);
@@ -118,6 +120,7 @@ void readShape(CadModel::Impl& impl, const Exchange& x, std::istream& meta) {
   }
   impl.solidsLost = solidsLost;
   impl.facesInFile = facesInFile;
+  impl.fileUnit = std::move(fileUnit);
   impl.names = std::move(names);
   impl.partColors = std::move(colors);
   impl.faceTags = std::move(tags);

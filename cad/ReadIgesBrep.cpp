@@ -1,8 +1,12 @@
 // IGES and BREP readers, each in a child process (detail/ChildProcess.h).
+#include <algorithm>
+#include <cctype>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <IGESControl_Reader.hxx>
+#include <IGESData_GlobalSection.hxx>
+#include <IGESData_IGESModel.hxx>
 #include <Message.hxx>
 #include <Message_Messenger.hxx>
 #include <Message_PrinterOStream.hxx>
@@ -40,6 +44,19 @@ void readIsolated(CadModel::Impl& impl, const char* format, void (*reader)(CadMo
                    (o.kind == ChildOutcome::Crashed ? "it crashed in the reader: " : "") + o.message + ")");
 }
 
+/// The IGES global section's unit (flag 1-11, IGES 5.3 sec. 2.2.4.3; flag 3 names it).
+std::string igesUnit(const IGESData_GlobalSection& g) {
+  static const char* const kUnits[] = {"",     "inch",   "millimetre", "",     "foot",      "mile",
+                                       "metre", "kilometre", "mil",   "micrometre", "centimetre", "microinch"};
+  const int flag = g.UnitFlag();
+  if (flag == 3 && !g.UnitName().IsNull()) {
+    std::string n = g.UnitName()->ToCString();
+    std::transform(n.begin(), n.end(), n.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return n;
+  }
+  return flag >= 1 && flag <= 11 ? kUnits[flag] : "";
+}
+
 void readIgesHere(CadModel::Impl& impl) {
   try {
     IGESControl_Reader reader;
@@ -48,6 +65,7 @@ void readIgesHere(CadModel::Impl& impl) {
     reader.TransferRoots();
     if (reader.NbShapes() == 0) throw InputError(impl.path + ": IGES file has no shape OpenCASCADE can transfer");
     impl.shape = reader.OneShape();
+    impl.fileUnit = igesUnit(reader.IGESModel()->GlobalSection());
   } catch (const Standard_Failure& e) {
     throw InputError(impl.path + ": OpenCASCADE failed reading IGES: " + e.GetMessageString());
   }

@@ -182,6 +182,7 @@ std::string readStepXcaf(CadModel::Impl& impl) {
     }
     collectPartNames(tool, XCAFDoc_DocumentTool::ColorTool(doc->Main()), impl);
     impl.facesInFile = stepFaceCount(reader.ChangeReader());
+    impl.fileUnit = stepFileUnit(reader.ChangeReader());
     std::string lost = lostSolids(reader.ChangeReader(), impl.shape, &impl.solidsLost);
     app->Close(doc);
     return lost;

@@ -3,6 +3,10 @@
 // aborts when none is on the stack): OCC_CATCH_SIGNALS must expand to one, so the macro
 // that enables it is defined before the header.
 #define OCC_CONVERT_SIGNALS
+#include <algorithm>
+#include <cctype>
+#include <vector>
+
 #include <BRep_Builder.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <OSD.hxx>
@@ -12,6 +16,7 @@
 #include <StepData_StepModel.hxx>
 #include <StepShape_Face.hxx>
 #include <StepShape_ManifoldSolidBrep.hxx>
+#include <TColStd_SequenceOfAsciiString.hxx>
 #include <TopExp.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
 #include <TopoDS_Compound.hxx>
@@ -56,6 +61,20 @@ int stepFaceCount(XSControl_Reader& reader) {
   return faces;
 }
 
+std::string stepFileUnit(STEPControl_Reader& reader) {
+  TColStd_SequenceOfAsciiString lengths, angles, solidAngles;
+  reader.FileUnits(lengths, angles, solidAngles);
+  std::vector<std::string> names;
+  for (int i = 1; i <= lengths.Length(); ++i) {
+    std::string n = lengths.Value(i).ToCString();
+    std::transform(n.begin(), n.end(), n.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (!n.empty() && std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
+  }
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
 std::string readStepPlain(CadModel::Impl& impl) {
   STEPControl_Reader reader;
   loadStepFile(reader, impl.path);
@@ -64,6 +83,7 @@ std::string readStepPlain(CadModel::Impl& impl) {
     throw InputError(impl.path + ": STEP file has no shape OpenCASCADE can transfer");
   impl.shape = reader.OneShape();
   impl.facesInFile = stepFaceCount(reader);
+  impl.fileUnit = stepFileUnit(reader);
   return lostSolids(reader, impl.shape, &impl.solidsLost);
 }
 
@@ -94,6 +114,7 @@ std::string readStepRoots(CadModel::Impl& impl) {
   if (kept == 0) throw MeshingError("no root of " + std::to_string(n) + " could be transferred");
   impl.shape = kept == 1 && n == 1 ? TopoDS_Shape(reader.OneShape()) : TopoDS_Shape(c);
   impl.facesInFile = stepFaceCount(reader);
+  impl.fileUnit = stepFileUnit(reader);
   const std::string lost = lostSolids(reader, impl.shape, &impl.solidsLost);
   if (skipped.empty()) return lost;
   return "skipped root(s) " + skipped + " of " + std::to_string(n) + (lost.empty() ? std::string() : "; " + lost);

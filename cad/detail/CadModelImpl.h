@@ -41,6 +41,9 @@ struct CadModel::Impl {
   /// Faces the STEP file holds (FACE entities, whether or not a shape uses them): says why a
   /// model that came out empty is empty.
   int facesInFile = 0;
+  /// The length unit the file declares ("inch", "millimetre"; "" when it says none or is
+  /// BREP); OCCT converts to mm on reading.
+  std::string fileUnit;
   /// accurateVolume of the solids measured so far, keyed by the solid (TShape + location):
   /// summary() and topology() of one prepared shape integrate each solid once.
   mutable TopTools_DataMapOfShapeReal volumes;

@@ -3,6 +3,7 @@
 // throws InputError naming the file; none lets an OCCT exception escape.
 #include <string>
 
+#include <STEPControl_Reader.hxx>
 #include <XSControl_Reader.hxx>
 
 #include "cad/detail/CadModelImpl.h"
@@ -42,6 +43,10 @@ std::string lostSolids(XSControl_Reader& reader, TopoDS_Shape& shape, int* notRe
 /// The FACE entities (ADVANCED_FACE, FACE_SURFACE, ...) of the file loaded in `reader`,
 /// whether or not a shape uses them.
 int stepFaceCount(XSControl_Reader& reader);
+
+/// The length unit(s) the STEP file loaded in `reader` declares for its shapes, in lower
+/// case ("inch", "millimetre"; several joined by ", "); "" when it declares none.
+std::string stepFileUnit(STEPControl_Reader& reader);
 
 /// Makes solids again of the faces outside any solid in `shape` when, sewn with a tolerance
 /// of 1e-6 of their extent, they form closed shells, at least one and at most `lost` of

@@ -8,6 +8,7 @@
 - --progress on bracket: at most 40 lines (1,560 before), every phase one token (no spaces), percent
   lines parsed by the FreeCAD dialog's pattern; as1-tu-203 (18 parts, ~10 s) under 300 lines (15,769).
 - overlap2.step: the summary warns of the overlapping parts and says where the common region went.
+- a part written in inches: info, info --json and the summary name the file's unit (lengths in mm).
 - -o DIR: exit 2 "is a directory"; --quad on a solid: --dim 2 implied and said (quads written, no
   tetrahedra); --quad --dim 3: exit 2 naming the fix.
 usage: run_summary_test.py CLI MODELS_DIR SHARED_DIR"""
@@ -98,6 +99,27 @@ if os.path.exists(thin):
           and abs(float(m.group(1)) - min(e["size"] for e in refined)) < 1e-5 * float(m.group(1))
           and [int(x) for x in m.group(2).split(",")] == [e["face"] for e in refined],
           f"periodic_u_cst: the thin-wall warning names the faces and size of the report ({r.stderr[-300:]})")
+
+# --- units: the bracket written in inches is read in mm and said so (info, info --json, mesh)
+text = open(bracket).read()
+mm_unit = re.search(r"#(\d+) = \( LENGTH_UNIT\(\) NAMED_UNIT\(\*\) SI_UNIT\(\.MILLI\.,\.METRE\.\) \);", text)
+check(mm_unit is not None, "bracket.step declares millimetres")
+if mm_unit:
+    inch = os.path.join(t, "bracket_inch.step")
+    open(inch, "w").write(text.replace(mm_unit.group(0), (
+        f"#{mm_unit.group(1)} = ( CONVERSION_BASED_UNIT('INCH',#990001) LENGTH_UNIT() NAMED_UNIT(#990002) );\n"
+        "#990001 = LENGTH_MEASURE_WITH_UNIT(LENGTH_MEASURE(25.4),#990003);\n"
+        "#990002 = DIMENSIONAL_EXPONENTS(1.,0.,0.,0.,0.,0.,0.);\n"
+        "#990003 = ( LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.MILLI.,.METRE.) );")))
+    mm_info, in_info = json.loads(run("info", bracket, "--json").stdout), json.loads(run("info", inch, "--json").stdout)
+    check(mm_info["file_unit"] == "millimetre" and in_info["file_unit"] == "inch"
+          and abs(in_info["volume"] / mm_info["volume"] - 25.4 ** 3) < 1e-6 * 25.4 ** 3,
+          f"info --json: file_unit millimetre / inch, the inch part 25.4^3 times the volume ({in_info.get('file_unit')})")
+    check("lengths in mm, converted from inch" in run("info", inch).stdout, "info names the file's unit")
+    r = run("mesh", inch, "-o", os.path.join(t, "bi.msh"), "--size", "50")
+    check(r.returncode == 0 and "(lengths in mm, converted from inch)" in r.stderr, "mesh: the summary names the file's unit")
+    r = run("mesh", bracket, "-o", os.path.join(t, "bm.msh"), "--size", "2")
+    check(r.returncode == 0 and "(lengths in mm)" in r.stderr, "mesh: a millimetre file says mm only")
 
 # --- errors a new user meets
 r = run("mesh", bracket, "-o", t)

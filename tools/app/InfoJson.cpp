@@ -34,6 +34,12 @@ nlohmann::ordered_json analyticJson(const std::string& file) {
 
 const char* lengthUnit(cad::CadFormat f) { return f == cad::CadFormat::Brep ? "file" : "mm"; }
 
+std::string unitsPhrase(cad::CadFormat f, const std::string& fileUnit) {
+  if (f == cad::CadFormat::Brep) return "the file's unit: BREP stores none";
+  if (fileUnit.empty() || fileUnit == "millimetre" || fileUnit == "mm") return "mm";
+  return "mm, converted from " + fileUnit;
+}
+
 InfoModel readInfoModel(const InfoRequest& r) {
   InfoModel m{cad::CadModel::read(r.file), {}, {}};
   m.asRead = m.model.summary();
@@ -52,6 +58,7 @@ nlohmann::ordered_json infoJson(const InfoRequest& r) {
   j["file"] = r.file;
   j["format"] = cad::formatName(model.format());
   j["units"] = lengthUnit(model.format());
+  j["file_unit"] = model.fileUnit();
   nlohmann::ordered_json p = summaryJson(model.summary());
   p.update(prepareJson(m.prepare));
   j["prepared"] = p;

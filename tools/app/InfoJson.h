@@ -33,4 +33,8 @@ nlohmann::ordered_json infoJson(const InfoRequest& request);
 /// readers convert to millimetres (xstep.cascade.unit, default MM); BREP stores no unit.
 const char* lengthUnit(cad::CadFormat f);
 
+/// How the model's lengths came to be in lengthUnit, for people: "mm", "mm, converted from
+/// inch" (the file's own unit, CadModel::fileUnit), "the file's unit: BREP stores none".
+std::string unitsPhrase(cad::CadFormat f, const std::string& fileUnit);
+
 }  // namespace aniso::app

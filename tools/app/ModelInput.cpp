@@ -61,6 +61,7 @@ ModelInput loadModel(const std::string& file, bool fragment, cad::OverlapPolicy 
   in.solids = summary.solids;
   in.summary = summaryJson(summary);
   in.summary.update(prepareJson(prep));
+  in.summary["file_unit"] = model.fileUnit();
   t = Clock::now();
   in.model = model.topology();
   in.times.emplace_back("topology", since(t));

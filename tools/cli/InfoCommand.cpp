@@ -41,9 +41,8 @@ int runInfo(const InfoArgs& args) {
   const cad::PrepareReport& prep = m.prepare;
   const cad::ShapeSummary prepared = model.summary();
 
-  const bool mm = std::string(app::lengthUnit(model.format())) == "mm";
   std::printf("%s (%s, lengths in %s)\nas read:\n%s", args.file.c_str(), cad::formatName(model.format()),
-              mm ? "mm: converted from the file's unit" : "the file's unit: BREP stores none", app::summaryText(asRead, "  ").c_str());
+              app::unitsPhrase(model.format(), model.fileUnit()).c_str(), app::summaryText(asRead, "  ").c_str());
   std::printf("after preparation (fix, sew%s):\n%s", args.fragment ? ", fragment" : "",
               app::summaryText(prepared, "  ").c_str());
   if (prep.facesSewn) std::printf("  %d loose faces sewn\n", prep.facesSewn);

@@ -6,6 +6,7 @@
 
 #include "mesher/core/FileExtension.h"
 #include "mesher/core/Log.h"
+#include "tools/app/InfoJson.h"
 
 namespace aniso::cli {
 namespace {
@@ -30,11 +31,14 @@ double number(const json& j, const char* key, double otherwise = 0) {
   return j.is_object() && j.contains(key) && j[key].is_number() ? j[key].get<double>() : otherwise;
 }
 
-/// The unit lengths are in: OpenCASCADE converts STEP and IGES to millimetres; BREP and
-/// analytic models carry no unit.
-std::string unitsText(const std::string& input) {
+/// The unit lengths are in: OpenCASCADE converts STEP and IGES to millimetres (from the
+/// file's unit, the model's "file_unit"); BREP and analytic models carry no unit.
+std::string unitsText(const std::string& input, const json& model) {
   const std::string ext = lowerExtension(input);
-  if (ext == ".step" || ext == ".stp" || ext == ".igs" || ext == ".iges") return "lengths in mm";
+  if (ext == ".step" || ext == ".stp" || ext == ".igs" || ext == ".iges") {
+    const std::string unit = model.is_object() ? model.value("file_unit", std::string()) : std::string();
+    return "lengths in " + app::unitsPhrase(cad::CadFormat::Step, unit);
+  }
   return "lengths in the file's units";
 }
 
@@ -51,7 +55,7 @@ std::string sizeText(const std::string& path) {
 
 void addPartsLine(const io::Report& r, std::vector<std::string>& out) {
   const json& model = r.extra.contains("model") ? r.extra["model"] : json::object();
-  std::string line = r.input + " (" + unitsText(r.input) + ")";
+  std::string line = r.input + " (" + unitsText(r.input, model) + ")";
   if (model.contains("solid_list")) {
     const json& list = model["solid_list"];
     line += ": " + counted(static_cast<long long>(list.size()), "part", "parts");
