@@ -100,6 +100,7 @@ BoundarySegments boundarySegments(const ControlSpace2d& cs, const FaceBoundary& 
   for (int l = 0; l < static_cast<int>(boundary.loops.size()); ++l) {
     const auto& loop = boundary.loops[l];
     const int n = static_cast<int>(loop.size());
+    out.loopFirst.push_back(static_cast<int>(out.segments.size()));
     double along = 0;
     for (int i = 0; i < n; ++i) {
       const BoundaryNode& a = loop[i];
@@ -112,6 +113,7 @@ BoundarySegments boundarySegments(const ControlSpace2d& cs, const FaceBoundary& 
     }
     out.loopLength.push_back(along);
   }
+  out.loopFirst.push_back(static_cast<int>(out.segments.size()));
   return out;
 }
 

@@ -30,6 +30,7 @@ struct BoundarySegment {
 struct BoundarySegments {
   std::vector<BoundarySegment> segments;  ///< pole pieces (same node at both ends) left out
   std::vector<double> loopLength;         ///< real length of each loop
+  std::vector<int> loopFirst;             ///< each loop's first segment, then segments.size()
   Box2 box;                               ///< (u, v) box of every boundary node
 };
 

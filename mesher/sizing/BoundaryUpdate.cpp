@@ -43,6 +43,13 @@ struct Source {
   Metric2d m;
 };
 
+/// The segments before and after segment i along its loop (i itself on a loop of one).
+std::pair<int, int> loopNeighbours(const BoundarySegments& bs, int i) {
+  const std::size_t loop = static_cast<std::size_t>(bs.segments[static_cast<std::size_t>(i)].loop);
+  const int first = bs.loopFirst[loop], last = bs.loopFirst[loop + 1] - 1;
+  return {i > first ? i - 1 : last, i < last ? i + 1 : first};
+}
+
 /// The sources of one gap (BoundaryUpdate.h): elements no longer than the gap across it, at
 /// most γ_a times that along it, at the segment's midpoint and the nearest point of the
 /// other side (the gap found there) and at the segment's ends (their distance to that other
@@ -52,9 +59,26 @@ void addGapSources(const CSAdaptive2d& cs, const BoundarySegments& bs, const Bou
                    double hMin, bool along, const SizingParameters& params, std::vector<Source>& sources,
                    BoundaryUpdateStats& stats) {
   const BoundarySegment& s = bs.segments[g.segment];
-  const BoundarySegment& t = bs.segments[g.other];
   const Mat2 mp = cs.getMetric(g.at).parameterization;
-  const auto atEnd = [&](const Vec2& e) { return (mp * (closestPointOnSegment<Vec2>(e, t.a, t.b) - e)).norm(); };
+  // The width at a sample is its distance to the other side: to `other` and the segments
+  // next to it along its loop. To `other` alone, a sample beyond its end measured the
+  // offset along the gap too: a strip 1 um wide whose sides' nodes do not face each other
+  // (KiCad's pin sockets, 1 um steps round the pin holes) had a width of a few um at
+  // the nodes, above the narrowest resolved gap, and the sources there graded h_min into
+  // the faces around (needles, 0.24 deg tets).
+  // The neighbours of `other` that are `segment` or next to it are this side, not the other
+  // (a sharp corner: the two sides meet at its tip).
+  const auto [prev, next] = loopNeighbours(bs, g.other);
+  const auto [mine0, mine1] = loopNeighbours(bs, g.segment);
+  const auto atEnd = [&](const Vec2& e) {
+    double d = 1e300;
+    for (const int k : {prev, g.other, next}) {
+      if (k != g.other && (k == g.segment || k == mine0 || k == mine1)) continue;
+      const BoundarySegment& o = bs.segments[static_cast<std::size_t>(k)];
+      d = std::min(d, (mp * (closestPointOnSegment<Vec2>(e, o.a, o.b) - e)).norm());
+    }
+    return d;
+  };
   std::vector<std::pair<Vec2, double>> samples = {
       {s.a, atEnd(s.a)}, {Vec2(0.5 * (s.a + s.b)), g.width()}, {s.b, atEnd(s.b)}, {g.at, g.width()}};
   // A segment much longer than the gap (a first discretization at h_max along a strip):

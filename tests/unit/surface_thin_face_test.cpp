@@ -230,4 +230,31 @@ TEST(SurfaceThinFace, StepFaceEndsGetNoSourceInAVolumeMesh) {
   EXPECT_LT(cs2->getMetric(Vec2(10 - c / 2, c / 2)).sizing.angleLengths().h2, 0.1);
 }
 
+
+TEST(SurfaceThinFace, AStepWhoseSidesNodesDoNotFaceEachOtherGetsNoGapSource) {
+  // A strip 0.004 wide, h_min 0.01, in a volume mesh (KiCad's pin sockets: 1 um steps round
+  // the pin holes), its top nodes 0.03 short of the bottom ones. A top node lies beyond the
+  // end of the bottom segment its segment faces: measured to that segment alone, the width
+  // there was 0.03, above the narrowest resolved gap (0.02), and a source of 0.03 went in.
+  // Measured to the other side (that segment and the ones next to it), it is 0.004: none.
+  SizingParameters params;
+  params.anisotropy = 1;
+  const Box2 area = box(-0.1, -0.1, 10.1, 10.1);
+  CSQuadtree2d cs(area, params);
+  cs.setContinuousSource(CSAnalytic2d(area, [](const Vec2&) { return Metric2d::isotropic(1); }));
+  FaceBoundary b;
+  b.face = 0;
+  b.loops.emplace_back();
+  int id = 0;
+  for (int i = 0; i <= 10; ++i) b.loops[0].push_back({Vec2(i, 0), id++});
+  for (int i = 10; i >= 0; --i) b.loops[0].push_back({Vec2(i == 0 || i == 10 ? i : i - 0.03, 0.004), id++});
+  BoundaryUpdateOptions o;
+  o.hMin = 0.01;
+  o.thinFaces = false;
+  const BoundaryUpdateStats s = updateFromBoundary(cs, b, params, o);
+  EXPECT_EQ(s.gaps, 0);
+  EXPECT_GT(s.unresolvedGaps, 0);
+  for (const double x : {0.97, 3.0, 5.5, 9.97}) EXPECT_GT(cs.getMetric(Vec2(x, 0.002)).sizing.angleLengths().h1, 0.5) << x;
+}
+
 }  // namespace aniso::test
