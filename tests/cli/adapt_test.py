@@ -15,7 +15,8 @@ The field is read identically from MSH 4.1 ascii / binary, MSH 2.2 binary, VTU z
 (meshio's default), VTU raw binary and ascii (the report's field_min / field_max); a vector's
 magnitude and a component, and element data averaged to the nodes, are accepted.
 3D, models/cube.step (10 mm), the same field on x / 10, first mesh size 1, 3000 nodes asked:
-count within 30 %, referee-valid (no inverted tet, volume 1000 within 1 %).
+count within 30 %, referee-valid (no inverted tet, volume 1000 within 1 %); written as MSH,
+INP and VTU it has the groups (faces, solids) and element types of the first mesh.
 Bad input exits 2 with one line naming the file, and writes no mesh: an unknown field (the
 line lists the available ones), a field with NaN, a mesh of another model.
 usage: adapt_test.py CLI MODELS_DIR
@@ -176,6 +177,20 @@ with tempfile.TemporaryDirectory() as t:
         q = meshq(j("c1.msh"))
         check(q.get("inverted", 1) == 0 and abs(q.get("volume", 0) - 1000) < 10,
               f"cube: referee inverted {q.get('inverted')}, volume {q.get('volume')}")
+
+        # every format: the adapted mesh's groups are the first mesh's (the CAD's faces and solids)
+        for ext in ["msh", "inp", "vtu"]:
+            r0 = run("mesh", os.path.join(models, "cube.step"), "-o", j("g0." + ext), "--size", "2")
+            r1 = run("adapt", os.path.join(models, "cube.step"), "--from", j("c0f.msh"), "--field", "f", "-o",
+                     j("g1." + ext), "--target-nodes", "1000")
+            if r0.returncode or r1.returncode:
+                check(False, f"{ext}: mesh exit {r0.returncode}, adapt exit {r1.returncode}")
+                continue
+            g0, g1 = meshio.read(j("g0." + ext)), meshio.read(j("g1." + ext))
+            groups = lambda m: (sorted(m.field_data), sorted(m.cell_sets), sorted(m.point_sets), sorted(m.cell_data))
+            types = lambda m: sorted({b.type for b in m.cells})
+            check(groups(g0) == groups(g1) and types(g0) == types(g1) and groups(g0) != ([], [], [], []),
+                  f"{ext}: the adapted mesh has the first mesh's groups and element types {groups(g1)} {types(g1)}")
 
 print("adapt:", "FAILED " + "; ".join(failures) if failures else "all passed")
 sys.exit(1 if failures else 0)
