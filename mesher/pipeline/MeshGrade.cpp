@@ -141,6 +141,12 @@ std::vector<Problem> gradeSurfaceGeometry(const Model& model, const SurfaceGeome
   for (const auto& [f, n] : check.flatFaces)
     out.push_back({EntityRef::face(f, part(f)), Severity::Degraded, "flat-triangles",
                    format("%.0f of its triangles are flat (no area a solver can use)", n), "surface"});
+  for (const auto& [f, n] : check.crossingFaces)
+    out.push_back({EntityRef::face(f, part(f)), Severity::Degraded, "surface-crossing",
+                   format("its triangles cross a neighbouring face's near their common edge (%.0f pairs "
+                          "of triangles cross)",
+                          n),
+                   "surface"});
   for (const auto& [s, n] : check.openSolids)
     out.push_back({solidRef(model, static_cast<std::size_t>(s)), Severity::Degraded, "surface-open",
                    format("its boundary mesh is open at %.0f edges", static_cast<double>(n)), "surface"});

@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 
+#include "mesher/volume/SegmentCrossing.h"
 #include "mesher/volume/UnfoldSurface.h"
 
 namespace aniso {
@@ -34,6 +35,61 @@ long long openEdgesOfSolid(const Model& model, const std::vector<std::vector<int
   return std::count_if(uses.begin(), uses.end(), [](const auto& u) { return u.second % 2 != 0; });
 }
 
+/// Do triangles t and u (sharing at least one node) meet beyond what they share? Every edge
+/// of one that is not an edge of the other, against the other (SegmentCrossing.h).
+bool crossing(const SurfaceMesh& m, const std::array<int, 3>& t, const std::array<int, 3>& u) {
+  const auto hasEdge = [](const std::array<int, 3>& x, int a, int b) {
+    for (int k = 0; k < 3; ++k)
+      if ((x[k] == a && x[(k + 1) % 3] == b) || (x[k] == b && x[(k + 1) % 3] == a)) return true;
+    return false;
+  };
+  for (const auto& [x, y] : {std::pair{&t, &u}, std::pair{&u, &t}}) {
+    const double *a = m.nodes[(*y)[0]].data(), *b = m.nodes[(*y)[1]].data(), *c = m.nodes[(*y)[2]].data();
+    for (int k = 0; k < 3; ++k) {
+      const int p = (*x)[k], q = (*x)[(k + 1) % 3];
+      if (hasEdge(*y, p, q)) continue;
+      if (volume::segmentCrossesTriangle(m.nodes[p].data(), m.nodes[q].data(), a, b, c) != volume::Cross::None) return true;
+    }
+  }
+  return false;
+}
+
+/// Pairs of triangles around nodes on CAD vertices and edges that cross (header); each
+/// pair once, (face, pairs) by face.
+int crossingsNearEdges(const SurfaceMesh& m, std::vector<std::pair<int, int>>& byFace) {
+  const std::size_t n = m.nodes.size();
+  std::vector<int> start(n + 1, 0);
+  const auto watched = [&](int v) {
+    return static_cast<std::size_t>(v) < m.nodeOn.size() &&
+           (m.nodeOn[v].kind == NodeOn::Kind::Vertex || m.nodeOn[v].kind == NodeOn::Kind::Edge);
+  };
+  for (const auto& t : m.triangles)
+    for (const int v : t)
+      if (watched(v)) ++start[static_cast<std::size_t>(v) + 1];
+  for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
+  std::vector<int> around(static_cast<std::size_t>(start[n])), fill(start.begin(), start.end() - 1);
+  for (std::size_t t = 0; t < m.triangles.size(); ++t)
+    for (const int v : m.triangles[t])
+      if (watched(v)) around[static_cast<std::size_t>(fill[static_cast<std::size_t>(v)]++)] = static_cast<int>(t);
+  std::vector<std::pair<int, int>> pairs;
+  for (std::size_t v = 0; v < n; ++v)
+    for (int i = start[v]; i < start[v + 1]; ++i)
+      for (int j = i + 1; j < start[v + 1]; ++j) {
+        const int t = around[static_cast<std::size_t>(i)], u = around[static_cast<std::size_t>(j)];
+        if (crossing(m, m.triangles[t], m.triangles[u])) pairs.emplace_back(std::min(t, u), std::max(t, u));
+      }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  std::map<int, int> faces;
+  for (const auto& [t, u] : pairs) {
+    ++faces[m.triangleFace[static_cast<std::size_t>(t)]];
+    if (m.triangleFace[static_cast<std::size_t>(u)] != m.triangleFace[static_cast<std::size_t>(t)])
+      ++faces[m.triangleFace[static_cast<std::size_t>(u)]];
+  }
+  byFace.assign(faces.begin(), faces.end());
+  return static_cast<int>(pairs.size());
+}
+
 }  // namespace
 
 std::vector<std::string> SurfaceGeometryCheck::messages() const {
@@ -41,6 +97,7 @@ std::vector<std::string> SurfaceGeometryCheck::messages() const {
   if (foldedEdges) out.push_back(std::to_string(foldedEdges) + " folded edges");
   if (flatTriangles) out.push_back(std::to_string(flatTriangles) + " flat triangles");
   if (openEdges) out.push_back(std::to_string(openEdges) + " open edges on closed shells");
+  if (crossingPairs) out.push_back(std::to_string(crossingPairs) + " pairs of triangles crossing near CAD edges");
   return out;
 }
 
@@ -68,6 +125,7 @@ SurfaceGeometryCheck checkSurfaceGeometry(const Model& model, const SurfaceMesh&
       c.openEdges += n;
       c.openSolids.push_back({static_cast<int>(s), n});
     }
+  c.crossingPairs = crossingsNearEdges(mesh, c.crossingFaces);
   return c;
 }
 

@@ -66,3 +66,34 @@ TEST(SurfaceGeometry, QuadsCountForClosure) {
   m.quadFace.clear();
   EXPECT_EQ(checkSurfaceGeometry(model, m).openEdges, 4);
 }
+
+// Near a CAD edge the chords of two faces can pass through each other (a wedge narrower
+// than their sagitta): two triangles of faces 0 and 1 around an edge node, the second's
+// far edge piercing the first. The same pair bent apart along their common edge is fine,
+// and so is a crossing around a node inside a face (folds there are the fold check's).
+TEST(SurfaceGeometry, TrianglesCrossingNearAnEdgeAreFound) {
+  const auto pair = [](const Vec3& c, const Vec3& d, NodeOn::Kind at) {
+    SurfaceMesh m;
+    const NodeOn face{NodeOn::Kind::Face, 0, 0, Vec2(0, 0)};
+    m.addNode(Vec3(0, 0, 0), NodeOn{at, 0, 0, Vec2(0, 0)});
+    m.addNode(Vec3(1, 0, 0), face);
+    m.addNode(Vec3(0, 1, 0), face);
+    m.addNode(c, face);
+    m.addNode(d, face);
+    m.triangles = {{0, 1, 2}, {0, 3, 4}};
+    m.triangleFace = {0, 1};
+    return m;
+  };
+  const SurfaceGeometryCheck crossed =
+      checkSurfaceGeometry(Model{}, pair(Vec3(0.3, 0.3, -0.5), Vec3(0.3, 0.3, 0.5), NodeOn::Kind::Edge));
+  EXPECT_EQ(crossed.crossingPairs, 1);
+  ASSERT_EQ(crossed.crossingFaces.size(), 2u);
+  EXPECT_FALSE(crossed.ok());
+  EXPECT_FALSE(crossed.messages().empty());
+  // the second triangle above the first (touching it only at the node): no crossing
+  EXPECT_EQ(checkSurfaceGeometry(Model{}, pair(Vec3(0.3, 0.3, 0.5), Vec3(0.3, 0.6, 0.5), NodeOn::Kind::Edge)).crossingPairs, 0);
+  // lying in the first one's plane, inside it: a node strictly inside the other counts
+  EXPECT_EQ(checkSurfaceGeometry(Model{}, pair(Vec3(0.2, 0.1, 0), Vec3(0.1, 0.2, 0), NodeOn::Kind::Vertex)).crossingPairs, 1);
+  // around a node inside a face: not looked at
+  EXPECT_EQ(checkSurfaceGeometry(Model{}, pair(Vec3(0.3, 0.3, -0.5), Vec3(0.3, 0.3, 0.5), NodeOn::Kind::Face)).crossingPairs, 0);
+}

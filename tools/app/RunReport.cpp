@@ -92,7 +92,8 @@ void fillRunReport(const Model& model, const MeshResult& r, io::Report& report) 
     const SurfaceGeometryCheck& c = r.surfaceCheck;
     report.extra["surface_repair"] = {{"nodes_merged", sr.nodesMerged},     {"caps_flipped", sr.capsFlipped},
                                       {"folds_repaired", sr.foldsRepaired}, {"folded_edges", c.foldedEdges},
-                                      {"flat_triangles", c.flatTriangles},  {"open_edges_closed_shells", c.openEdges}};
+                                      {"flat_triangles", c.flatTriangles},  {"open_edges_closed_shells", c.openEdges},
+                                      {"crossing_pairs", c.crossingPairs}};
   }
   if (r.volumeRan) {
     report.extra["coarse_solids"] = {{"solids", r.coarse.solids}, {"refined_kept", r.coarse.refinedKept}};
