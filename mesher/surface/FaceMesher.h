@@ -12,9 +12,12 @@
 //   3 removal of the triangles outside the face by marking from the oriented loops
 //     (holes, inner loops, seams, poles);
 //   4 refinement (4.5): heap of triangles by q(K) = S_oI / S_oK (eq. 4.1) below q_t, and
-//     of edges with l_M > 1.5; MLE then CCS insertion (mixed), with the cancellation rules
-//     (point outside the face, too close to an existing vertex or to a contour in metric,
-//     metric jump), at most 4 NT_p + 1000 insertions (eq. 6.2);
+//     of edges with l_M > 1.5; first a frontal phase (face/FrontalPoint.h, Rebay's frontal
+//     Delaunay: the bad triangles on the front, next to a contour or an accepted triangle,
+//     each refined by the point on its front edge), then the thesis' mixed MLE/CCS insertion
+//     for the triangles left, with the cancellation rules (point outside the face, too
+//     close to an existing vertex or to a contour in metric, metric jump), at most
+//     4 NT_p + 1000 insertions in all (eq. 6.2; FaceMeshStats::insertionLimitReached);
 //   5 improvement (4.6, improveFaceMesh): smoothing and swaps, N_imp passes;
 //   6 unfolding (face/UnfoldFace.h) of what steps 1–3 left turned over on the surface;
 //   7 flips and moves of triangles flat on the surface (face/FlatTriangles.h).
