@@ -66,9 +66,10 @@ struct RecoveryResult {
   bool selfCrossing = false;  ///< the boundary mesh intersects itself (left starts with the crossings)
 };
 
-/// Recovers the boundary in `bt.tets` (kernel from triangulateBoundary). On return every
-/// present boundary face carries the constrained bit. `inside` is the solid's boundary
-/// mesh used to keep Steiner points inside the material.
+/// Recovers the boundary `bt.boundary` in `bt.tets` (kernel from triangulateBoundary). On
+/// return every present boundary face carries the constrained bit; the Steiner points of
+/// phase 2 lie strictly inside the solid (on the material side of the boundary triangles
+/// around them, CavityRecovery.h).
 RecoveryResult recoverBoundary(BoundaryTriangulation& bt, const RecoveryOptions& options = {});
 
 }  // namespace aniso
