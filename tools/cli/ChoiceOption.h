@@ -17,8 +17,8 @@ CLI::Validator choice(std::vector<std::pair<std::string, T>> words) {
   for (const auto& [w, v] : words) names += (names.empty() ? "" : ", ") + w;
   return CLI::Validator(
       [words, names](std::string& in) -> std::string {
-        for (const auto& [w, v] : words)
-          if (w == in) {
+        for (const auto& [w, v] : words)  // the word, or the number it stands for (--msh-version 22)
+          if (w == in || std::to_string(static_cast<long long>(v)) == in) {
             in = std::to_string(static_cast<long long>(v));
             return {};
           }
