@@ -1,6 +1,4 @@
 // IGES and BREP readers, each in a child process (detail/ChildProcess.h).
-#include <algorithm>
-#include <cctype>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <IFSelect_ReturnStatus.hxx>
@@ -18,6 +16,7 @@
 #include "cad/detail/ChildProcess.h"
 #include "cad/detail/Readers.h"
 #include "mesher/core/Error.h"
+#include "mesher/core/FileExtension.h"
 
 namespace aniso::cad::detail {
 
@@ -49,11 +48,7 @@ std::string igesUnit(const IGESData_GlobalSection& g) {
   static const char* const kUnits[] = {"",     "inch",   "millimetre", "",     "foot",      "mile",
                                        "metre", "kilometre", "mil",   "micrometre", "centimetre", "microinch"};
   const int flag = g.UnitFlag();
-  if (flag == 3 && !g.UnitName().IsNull()) {
-    std::string n = g.UnitName()->ToCString();
-    std::transform(n.begin(), n.end(), n.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return n;
-  }
+  if (flag == 3 && !g.UnitName().IsNull()) return lowerCase(g.UnitName()->ToCString());
   return flag >= 1 && flag <= 11 ? kUnits[flag] : "";
 }
 

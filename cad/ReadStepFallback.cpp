@@ -4,7 +4,6 @@
 // that enables it is defined before the header.
 #define OCC_CONVERT_SIGNALS
 #include <algorithm>
-#include <cctype>
 #include <vector>
 
 #include <BRep_Builder.hxx>
@@ -23,6 +22,7 @@
 
 #include "cad/detail/ChildProcess.h"
 #include "cad/detail/Readers.h"
+#include "mesher/core/FileExtension.h"
 #include "mesher/core/Error.h"
 
 namespace aniso::cad::detail {
@@ -66,8 +66,7 @@ std::string stepFileUnit(STEPControl_Reader& reader) {
   reader.FileUnits(lengths, angles, solidAngles);
   std::vector<std::string> names;
   for (int i = 1; i <= lengths.Length(); ++i) {
-    std::string n = lengths.Value(i).ToCString();
-    std::transform(n.begin(), n.end(), n.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string n = lowerCase(lengths.Value(i).ToCString());
     if (!n.empty() && std::find(names.begin(), names.end(), n) == names.end()) names.push_back(n);
   }
   std::string out;

@@ -1,6 +1,6 @@
 #pragma once
 // The extension of a path in lower case (".step" for "Part.STEP", "" for none): how every
-// reader and writer chooses by extension, in one place.
+// reader and writer chooses by extension, in one place; and a word in lower case (ASCII).
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -8,10 +8,13 @@
 
 namespace aniso {
 
+inline std::string lowerCase(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
 inline std::string lowerExtension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
+  return lowerCase(std::filesystem::path(path).extension().string());
 }
 
 }  // namespace aniso

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <map>
+#include <span>
 #include <utility>
 
 #include <Eigen/Geometry>
 
+#include "mesher/core/NodeBuckets.h"
 #include "mesher/volume/SegmentCrossing.h"
 #include "mesher/volume/UnfoldSurface.h"
 
@@ -57,27 +59,25 @@ bool crossing(const SurfaceMesh& m, const std::array<int, 3>& t, const std::arra
 /// Pairs of triangles around nodes on CAD vertices and edges that cross (header); each
 /// pair once, (face, pairs) by face.
 int crossingsNearEdges(const SurfaceMesh& m, std::vector<std::pair<int, int>>& byFace) {
-  const std::size_t n = m.nodes.size();
-  std::vector<int> start(n + 1, 0);
   const auto watched = [&](int v) {
     return static_cast<std::size_t>(v) < m.nodeOn.size() &&
            (m.nodeOn[v].kind == NodeOn::Kind::Vertex || m.nodeOn[v].kind == NodeOn::Kind::Edge);
   };
-  for (const auto& t : m.triangles)
-    for (const int v : t)
-      if (watched(v)) ++start[static_cast<std::size_t>(v) + 1];
-  for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
-  std::vector<int> around(static_cast<std::size_t>(start[n])), fill(start.begin(), start.end() - 1);
+  std::vector<std::pair<int, int>> uses;  // (watched node, triangle)
   for (std::size_t t = 0; t < m.triangles.size(); ++t)
     for (const int v : m.triangles[t])
-      if (watched(v)) around[static_cast<std::size_t>(fill[static_cast<std::size_t>(v)]++)] = static_cast<int>(t);
+      if (watched(v)) uses.emplace_back(v, static_cast<int>(t));
+  NodeBuckets<std::pair<int, int>> around = bucketByNode(
+      std::span<const std::pair<int, int>>(uses), m.nodes.size(), [](const std::pair<int, int>& u) { return u.first; });
   std::vector<std::pair<int, int>> pairs;
-  for (std::size_t v = 0; v < n; ++v)
-    for (int i = start[v]; i < start[v + 1]; ++i)
-      for (int j = i + 1; j < start[v + 1]; ++j) {
-        const int t = around[static_cast<std::size_t>(i)], u = around[static_cast<std::size_t>(j)];
+  for (std::size_t v = 0; v < around.nodes(); ++v) {
+    const std::span<std::pair<int, int>> b = around.bucket(v);
+    for (std::size_t i = 0; i < b.size(); ++i)
+      for (std::size_t j = i + 1; j < b.size(); ++j) {
+        const int t = b[i].second, u = b[j].second;
         if (crossing(m, m.triangles[t], m.triangles[u])) pairs.emplace_back(std::min(t, u), std::max(t, u));
       }
+  }
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
   std::map<int, int> faces;

@@ -63,6 +63,12 @@ double tetMinDihedral(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d
   return std::acos(cmax) * kRadToDeg;
 }
 
+double tetMinDihedral(const del3d::TetMesh& mesh, del3d::TetId t) {
+  const std::uint32_t* v = mesh.tetVertices(t);
+  return tetMinDihedral(mesh.point(del3d::VertexId(v[0])), mesh.point(del3d::VertexId(v[1])),
+                        mesh.point(del3d::VertexId(v[2])), mesh.point(del3d::VertexId(v[3])));
+}
+
 bool dihedralCosineOutside(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, double cosAbove,
                            double cosBelow) {
   const Vec3 n[4] = {(c - b).cross(d - b), (c - a).cross(d - a), (b - a).cross(d - a), (b - a).cross(c - a)};

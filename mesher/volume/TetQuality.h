@@ -40,6 +40,8 @@ struct DihedralRange {
 DihedralRange tetDihedralRange(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
 /// Smallest dihedral angle only.
 double tetMinDihedral(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d);
+/// Smallest dihedral angle of the tet t of `mesh` (of its four corners, as above).
+double tetMinDihedral(const del3d::TetMesh& mesh, del3d::TetId t);
 /// True when a dihedral angle of (a, b, c, d) has its cosine above cosAbove (an angle
 /// below acos(cosAbove)) or below cosBelow (an angle above acos(cosBelow)): the test of
 /// tetDihedralRange's angles against thresholds without acos and without normalising the

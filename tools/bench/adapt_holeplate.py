@@ -49,18 +49,8 @@ TOLERANCE = 0.01
 def faces_at_ends(inp):
     """The node sets FACE<n> of the ends x = 0 and x = LENGTH (found from their nodes)."""
     nodes = ccxlib.inp_nodes(inp)
-    ends = {}
-    n = 1
-    while True:
-        ids = ccxlib.inp_nset(inp, f"FACE{n}")
-        if not ids:
-            break
-        xs = [nodes[i][0] for i in ids]
-        for end in (0.0, LENGTH):
-            if max(abs(x - end) for x in xs) < 1e-6 * LENGTH:
-                ends[end] = n
-        n += 1
-    return ends[0.0], ends[LENGTH], nodes
+    tol = 1e-6 * LENGTH
+    return ccxlib.face_with_nodes_at(inp, 0, 0.0, tol, nodes), ccxlib.face_with_nodes_at(inp, 0, LENGTH, tol, nodes), nodes
 
 
 def nearest(nodes, ids, p):
@@ -73,14 +63,7 @@ def solve(d):
     end = ccxlib.inp_nset(os.path.join(d, "mesh.inp"), f"FACE{fixed}")
     a = nearest(nodes, end, (0, WIDTH / 2, THICKNESS / 2))
     b = nearest(nodes, end, (0, 0, THICKNESS / 2))
-    with open(os.path.join(d, "job.inp"), "w") as fp:
-        fp.write(f"""*INCLUDE, INPUT=mesh.inp
-*MATERIAL, NAME=STEEL
-*ELASTIC
-210000., 0.3
-*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL
-*STEP
-*STATIC
+    ccxlib.static_steel_deck(d, f"""
 *BOUNDARY
 FACE{fixed}, 1, 1, 0.
 {a}, 2, 3, 0.
@@ -90,9 +73,7 @@ S_FACE{loaded}, P, {-TRACTION}
 *NODE FILE
 U
 *EL FILE
-S
-*END STEP
-""")
+S""")
     ccxlib.run_ccx(d)
     vm = ccxlib.frd_mises(os.path.join(d, "job.frd"))
     hole = [i for i, p in nodes.items()
@@ -101,16 +82,13 @@ S
 
 
 def mesh_uniform(cli, model, d, h):
-    os.makedirs(d, exist_ok=True)
-    subprocess.run([cli, "mesh", model, "-o", os.path.join(d, "mesh.inp"), "--dim", "3", "--order", "2",
-                    "--size", repr(h), "--no-curvature", "-q"], check=True)
+    ccxlib.mesh_c3d10(cli, ["mesh", model, "--dim", "3", "--size", repr(h), "--no-curvature"], d)
     return solve(d)
 
 
 def mesh_adapted(cli, model, d, prev, target):
-    os.makedirs(d, exist_ok=True)
-    subprocess.run([cli, "adapt", model, "--from", os.path.join(prev, "job.frd"), "--field", "STRESS",
-                    "-o", os.path.join(d, "mesh.inp"), "--order", "2", "--target-nodes", str(target), "-q"], check=True)
+    ccxlib.mesh_c3d10(cli, ["adapt", model, "--from", os.path.join(prev, "job.frd"), "--field", "STRESS",
+                            "--target-nodes", str(target)], d)
     return solve(d)
 
 

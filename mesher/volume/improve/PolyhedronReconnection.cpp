@@ -178,7 +178,7 @@ std::vector<Quad> bestTetrahedralization(const del3d::TetMesh& mesh, const Polyh
   for (const auto& [k, e] : faces)
     if (e.second == 1) front.emplace(k, e.first);
   double worstOld = 1e300;
-  for (const TetId u : p.tets) worstOld = std::min(worstOld, minDihedral(mesh, {mesh.vertex(u, 0), mesh.vertex(u, 1), mesh.vertex(u, 2), mesh.vertex(u, 3)}));
+  for (const TetId u : p.tets) worstOld = std::min(worstOld, tetMinDihedral(mesh, u));
   std::vector<VertexId> vertices = p.vertices;
   std::sort(vertices.begin(), vertices.end(), [](VertexId a, VertexId b) { return a.index < b.index; });
   Search search(mesh, vertices, worstOld, steps);

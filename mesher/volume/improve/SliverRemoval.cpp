@@ -106,20 +106,17 @@ bool SliverRemover::removeEdges(TetId t) {
 // kReconnectionChain times: the best tiling of a polyhedron may keep a flat tet that a
 // neighbouring one removes); then flips of the created slivers.
 bool SliverRemover::reconnect(TetId t) {
-  const auto flatness = [&](TetId u) {
-    const std::uint32_t* v = s_.mesh.tetVertices(u);
-    return tetMinDihedral(s_.mesh.point(VertexId(v[0])), s_.mesh.point(VertexId(v[1])), s_.mesh.point(VertexId(v[2])),
-                          s_.mesh.point(VertexId(v[3])));
-  };
-  if (!(flatness(t) < kReconnectionAngleDeg)) return false;
+  if (!(tetMinDihedral(s_.mesh, t) < kReconnectionAngleDeg)) return false;
   created_.clear();
   if (!reconnectPolyhedron(s_, t, created_)) return false;
   ++stats.reconnections;
   for (int k = 1; k < kReconnectionChain; ++k) {
     TetId flattest;
     double angle = kReconnectionAngleDeg;
-    for (const TetId u : created_)
-      if (s_.mesh.isAlive(u) && flatness(u) < angle) angle = flatness(u), flattest = u;
+    for (const TetId u : created_) {
+      if (!s_.mesh.isAlive(u)) continue;
+      if (const double a = tetMinDihedral(s_.mesh, u); a < angle) angle = a, flattest = u;
+    }
     if (!flattest.valid() || !reconnectPolyhedron(s_, flattest, created_)) break;
     ++stats.reconnections;
   }

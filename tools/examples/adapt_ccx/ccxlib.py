@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Small CalculiX helpers shared by adapt_loop.sh and the adapt benchmarks (tools/bench/).
 
-As a module: inp_nodes, inp_nset, frd_mises, run_ccx. As a program:
+As a module: inp_nodes, inp_nset, face_with_nodes_at, static_steel_deck, mesh_c3d10,
+frd_mises, run_ccx. As a program:
   ccxlib.py nset-count MESH.inp NAME   the number of nodes of *NSET NAME
   ccxlib.py max-mises JOB.frd          the largest nodal von Mises stress of the last STRESS block
   ccxlib.py nodes MESH.inp             the number of nodes of the *NODE blocks
@@ -35,6 +36,33 @@ def inp_nset(path, name):
         if on:
             ids += [int(x) for x in line.replace(" ", "").strip().split(",") if x]
     return ids
+
+
+def face_with_nodes_at(inp, axis, value, tol, nodes=None):
+    """n of the node set FACE<n> whose nodes all lie within tol of coordinate `axis` = value;
+    None when no face set does. `nodes`: inp_nodes(inp) when already read."""
+    nodes = nodes if nodes is not None else inp_nodes(inp)
+    n = 1
+    while ids := inp_nset(inp, f"FACE{n}"):
+        if max(abs(nodes[i][axis] - value) for i in ids) < tol:
+            return n
+        n += 1
+    return None
+
+
+def static_steel_deck(workdir, step):
+    """Writes WORKDIR/job.inp: mesh.inp included, steel (E 210000 MPa, nu 0.3) on EALL, one
+    static step holding `step` (boundary conditions, loads, output requests)."""
+    with open(os.path.join(workdir, "job.inp"), "w") as fp:
+        fp.write("*INCLUDE, INPUT=mesh.inp\n*MATERIAL, NAME=STEEL\n*ELASTIC\n210000., 0.3\n"
+                 "*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL\n*STEP\n*STATIC\n" + step.strip() + "\n*END STEP\n")
+
+
+def mesh_c3d10(cli, args, workdir):
+    """anisomesh ARGS -o WORKDIR/mesh.inp --order 2 -q (ARGS: `mesh MODEL ...` or `adapt MODEL
+    --from ...`); raises CalledProcessError when it fails."""
+    os.makedirs(workdir, exist_ok=True)
+    subprocess.run([cli, *args, "-o", os.path.join(workdir, "mesh.inp"), "--order", "2", "-q"], check=True)
 
 
 def von_mises(s):
