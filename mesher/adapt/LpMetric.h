@@ -33,7 +33,7 @@ namespace aniso {
 inline constexpr double kHessianFloor = 1e-12;
 /// a_d, b_d above: nodes per unit of interior and of boundary complexity, measured on
 /// meshes of a uniform metric (the Hessian of |x|²) by `anisomesh adapt`, whose volume
-/// metric is kVolumeLengthFactor finer than its tets (tools/cli/AdaptCommand.cpp). 3D, the
+/// metric is kVolumeLengthFactor finer than its tets (AdaptSources.h). 3D, the
 /// 10 mm cube at 2000 / 16000 nodes asked (4529 / 27951 made): 1.659 and 2.657 (fit of the
 /// two; the 4000 and 8000 runs land within 3 %). For comparison, a regular unit tet has
 /// volume √2/12 and a Delaunay mesh ~6 tets per node (1.4 nodes per unit volume), a unit

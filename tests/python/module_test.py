@@ -88,6 +88,53 @@ class SameAsCli(unittest.TestCase):
                 self.assertEqual(read(x), read(y), ext)
 
 
+class AdaptSameAsCli(unittest.TestCase):
+    """anisomesh adapt and anisomesh.adapt() on a tanh front sampled on a first mesh of the cube."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.dir = tempfile.TemporaryDirectory()
+        cls.cube = os.path.join(OWN, "cube.step")
+        first = anisomesh.mesh(cls.cube, size=1)
+        x = first.nodes / 10.0
+        f = np.tanh(50 * (((x - 0.5) ** 2).sum(1) - 0.09))
+        cls.field = os.path.join(cls.dir.name, "f.vtu")
+        tets = first.tetrahedra
+        with open(cls.field, "w") as out:  # an ASCII VTU, as ParaView writes one
+            out.write('<VTKFile type="UnstructuredGrid" version="1.0"><UnstructuredGrid>'
+                      f'<Piece NumberOfPoints="{len(x)}" NumberOfCells="{len(tets)}"><PointData>'
+                      '<DataArray type="Float64" Name="f" format="ascii">' + " ".join(map(repr, f)) +
+                      '</DataArray></PointData><Points><DataArray type="Float64" NumberOfComponents="3" format="ascii">' +
+                      " ".join(map(repr, first.nodes.ravel())) + '</DataArray></Points><Cells>'
+                      '<DataArray type="Int64" Name="connectivity" format="ascii">' + " ".join(map(str, tets.ravel())) +
+                      '</DataArray><DataArray type="Int64" Name="offsets" format="ascii">' +
+                      " ".join(str(4 * (i + 1)) for i in range(len(tets))) +
+                      '</DataArray><DataArray type="UInt8" Name="types" format="ascii">' + " 10" * len(tets) +
+                      '</DataArray></Cells></Piece></UnstructuredGrid></VTKFile>\n')
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.dir.cleanup()
+
+    def test_count_rounds_as_the_cli(self):
+        x, y = os.path.join(self.dir.name, "x.msh"), os.path.join(self.dir.name, "y.msh")
+        subprocess.run([CLI, "adapt", self.cube, "--from", self.field, "--field", "f", "-o", x, "--target-nodes", "3000",
+                        "-q"], check=True)
+        m = anisomesh.adapt(self.cube, from_mesh=self.field, field="f", target_nodes=3000)
+        m.write(y)
+        self.assertEqual(read(x), read(y), "the module's adapted mesh differs from the CLI's")
+        count = m.report["adapt"]["count"]
+        self.assertEqual(count["made"], len(m.nodes))
+        self.assertGreaterEqual(count["meshes"], 1)
+
+    def test_bad_field(self):
+        with self.assertRaises(anisomesh.InputError) as e:
+            anisomesh.adapt(self.cube, from_mesh=self.field, field="nope", target_nodes=100)
+        self.assertIn("nope", str(e.exception))
+        with self.assertRaises(anisomesh.InputError):
+            anisomesh.adapt(self.cube, from_mesh=self.field, field="f", target_nodes=100, error=0.1)
+
+
 class Arrays(unittest.TestCase):
     @classmethod
     def setUpClass(cls):

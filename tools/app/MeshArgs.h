@@ -2,10 +2,7 @@
 // MeshArgs — a mesh run as a program asks for it (the CLI's `mesh` command, the Python
 // module): the model file, the options as given, where the mesh and the report go.
 // MeshRun.h turns it into meshModel's request with the program's defaults.
-#include <functional>
 #include <string>
-
-#include <nlohmann/json.hpp>
 
 #include "cad/CadModel.h"
 #include "mesher/core/MeshOptions.h"
@@ -30,10 +27,6 @@ struct MeshArgs {
   bool anisotropyGiven = false;
   /// --time-limit S: the run stops (status failed, exit 3, no mesh) after S seconds; 0 = none.
   double timeLimit = 0;
-  /// Called once the model is read, before meshing: adds to the user's sizing (the adapt
-  /// command's metric as point sources); its result goes to the report's "adapt" block.
-  /// May throw InputError.
-  std::function<nlohmann::json(const Model&, UserSizing&)> extraSizing;
 };
 
 }  // namespace aniso::app

@@ -21,25 +21,24 @@ const Problem* firstShortcoming(const io::Report& r) {
 
 }  // namespace
 
-MeshRun meshFile(MeshArgs& args, io::Report& report) {
+PreparedRun prepareRun(MeshArgs& args, io::Report& report) {
   checkMeshArguments(args);
   const std::string bad = args.options.sizing.check();
   if (!bad.empty()) throw InputError(args.file + ": " + bad);
   // The sizing file is read (and checked) before the model, so a bad one fails fast.
-  MeshRequest request;
+  PreparedRun run;
+  MeshRequest& request = run.request;
   if (!args.options.sizingFile.empty()) request.user = io::readSizingFile(args.options.sizingFile);
   report.input = args.file;
   report.options = optionsJson(args);
 
   // Reading and preparing the model: failures here are bad input (exit 2).
-  MeshRun run;
   run.input = loadModel(args.file, args.fragment, args.overlaps, args.options.cancel.get());
   ModelInput& in = run.input;
   checkCancel(args.options.cancel.get(), "reading");
   report.times = in.times;
   report.extra["model"] = in.summary;
   report.problems.insert(report.problems.end(), in.problems.begin(), in.problems.end());
-  if (args.extraSizing) report.extra["adapt"] = args.extraSizing(in.model, request.user);
   const int dim = args.options.dim == 0 ? defaultDimension(args, in.solids) : resolvedDim(args.options, in.solids > 0);
   if (dim == 3 && in.solids == 0)
     throw InputError(args.file + (in.analytic ? ": nothing to mesh in 3D: an analytic model is a surface (use --dim 2)"
@@ -53,14 +52,23 @@ MeshRun meshFile(MeshArgs& args, io::Report& report) {
   args.options.maxElements = report.options["max_elements"] = elementBudget(args.options.maxElements, dim);
   args.options.dim = dim;
   request.options = args.options;
-  const std::unique_ptr<ControlSpace2d> analytic = analyticControlSpace(in);
-  request.analytic = analytic.get();
+  run.analytic = analyticControlSpace(in);
+  request.analytic = run.analytic.get();
+  return run;
+}
 
-  run.result = meshModel(in.model, request);
-  const MeshResult& result = run.result;
-  fillRunReport(in.model, result, report);
-  report.extra["sizing"] = sizingReport(args.options.sizing, in.model.diagonal(), result.surface.mesh,
+void reportResult(const MeshArgs& args, const Model& model, const MeshResult& result, io::Report& report) {
+  fillRunReport(model, result, report);
+  report.extra["sizing"] = sizingReport(args.options.sizing, model.diagonal(), result.surface.mesh,
                                         result.volumeRan ? &result.volume.mesh : nullptr);
+}
+
+MeshRun meshFile(MeshArgs& args, io::Report& report) {
+  PreparedRun prepared = prepareRun(args, report);
+  MeshRun run;
+  run.result = meshModel(prepared.input.model, prepared.request);
+  run.input = std::move(prepared.input);
+  reportResult(args, run.input.model, run.result, report);
   return run;
 }
 

@@ -4,9 +4,11 @@
 // (mesher/pipeline/Pipeline.h) called and the run report filled. Writing the mesh and the
 // report, and what the terminal shows, are the caller's. The same MeshArgs give the same
 // mesh, byte for byte, through either program.
+#include <memory>
 #include <string>
 
 #include "io/Report.h"
+#include "mesher/pipeline/MeshRequest.h"
 #include "mesher/pipeline/MeshResult.h"
 #include "tools/app/MeshArgs.h"
 #include "tools/app/ModelInput.h"
@@ -17,6 +19,20 @@ struct MeshRun {
   ModelInput input;    ///< the model as read and prepared
   MeshResult result;   ///< result.meshed() false: no mesh (failureMessage says why)
 };
+
+/// A run read and resolved, up to meshModel's call (what meshFile and adaptFile share).
+struct PreparedRun {
+  ModelInput input;
+  MeshRequest request;  ///< request.analytic points into `analytic`
+  std::unique_ptr<ControlSpace2d> analytic;
+};
+
+/// meshFile's first half: the checks, the sizing file and the model read, the defaults
+/// resolved into `args` and `request`, `report` filled with the input, options and model.
+PreparedRun prepareRun(MeshArgs& args, io::Report& report);
+
+/// meshFile's last half: `report` gets the mesh's counts, quality and sizing.
+void reportResult(const MeshArgs& args, const Model& model, const MeshResult& result, io::Report& report);
 
 /// Checks the options that need no model (checkMeshArguments, the sizing's check), reads
 /// args.options.sizingFile and args.file, resolves into `args` what the user left open:

@@ -7,6 +7,6 @@
 
 namespace aniso::cli {
 
-CLI::App* addAdaptCommand(CLI::App& app, AdaptArgs& a);
+CLI::App* addAdaptCommand(CLI::App& app, AdaptOptions& options);
 
 }  // namespace aniso::cli

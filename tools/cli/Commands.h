@@ -2,16 +2,18 @@
 // The subcommands of the anisomesh program. Each returns the process exit code
 // (0 ok, 2 bad input, 3 meshing failure) or throws InputError / MeshingError, which
 // main() turns into a one-line message and the same codes.
+#include <chrono>
 #include <functional>
 #include <string>
+#include <vector>
 
-#include <nlohmann/json.hpp>
 
 #include "cad/CadModel.h"
 #include "io/MeshWriter.h"
 #include "io/Report.h"
 #include "mesher/core/MeshOptions.h"
-#include "mesher/sizing/UserSizing.h"
+#include "mesher/pipeline/MeshResult.h"
+#include "tools/app/AdaptRun.h"
 #include "tools/app/MeshArgs.h"
 
 namespace aniso::cli {
@@ -26,28 +28,29 @@ struct InfoArgs {
 int runInfo(const InfoArgs& args);
 
 using app::MeshArgs;
-/// Called once the mesh is made, before it is written: data arrays at its nodes to write
-/// with it (adapt --transfer); may add to the report's `extra` block.
-using NodeDataHook = std::function<std::vector<io::NodeData>(const std::vector<Vec3>& nodes, nlohmann::ordered_json& extra)>;
-/// Meshes, writes, and prints the run's summary — or, given `report`, keeps the summary in
-/// it for the caller to print (adapt prints only its last mesh's).
-int runMesh(const MeshArgs& args, const NodeDataHook& nodeData = {}, io::Report* report = nullptr);
+/// Meshes, writes, and prints the run's summary.
+int runMesh(const MeshArgs& args);
 
-struct AdaptArgs {
-  MeshArgs mesh;           ///< model, output, report, order, sizing options
-  std::string from;        ///< the solver's mesh with the field (.msh .vtu .frd ...)
-  std::string field;       ///< NAME or NAME:COMPONENT (io/readers/fields/NodalField.h)
-  double targetNodes = 0;  ///< --target-nodes (default: the node count of --from)
-  double error = 0;        ///< --error
-  double norm = 2;         ///< --norm p; γ_a is mesh.options.sizing.anisotropy (default 10)
-  std::string hessian = "ls";  ///< --hessian: ls (least squares) or l2 (double L2 projection)
-  double metricTarget = 0;     ///< the vertex count the metric is scaled to (set by runAdapt)
-  double firstNodes = 0;       ///< the first mesh's count, when it was made again
-  bool transfer = false;       ///< --transfer: the field's array interpolated to the new nodes
-};
+/// What mesh and adapt share (MeshCommand.cpp): the option checks that need no model, the
+/// --time-limit token, `body` (which meshes and calls writeRun), then the run's summary
+/// printed. A time limit reached writes the failed report and throws MeshingError.
+int runGuarded(const MeshArgs& args, const std::function<int(MeshArgs&, io::Report&)>& body);
+
+/// Writes the mesh (with `nodeData` arrays at its nodes, .msh / .vtu) and the report graded
+/// from its problems; a result with no mesh writes the failed report and throws
+/// MeshingError naming the first failure. `t0`: when the run began (the report's total).
+int writeRun(const MeshArgs& args, const Model& model, const MeshResult& result, io::Report& report,
+             std::chrono::steady_clock::time_point t0, const std::vector<io::NodeData>& nodeData);
+
+using app::AdaptArgs;
 /// anisomesh adapt (AdaptCommand.cpp): the mesh of MODEL adapted to a field of a solver's
 /// mesh (issue 19).
-int runAdapt(const AdaptArgs& args);
+struct AdaptOptions {
+  AdaptArgs args;
+  std::string hessian = "ls";  ///< --hessian: ls (least squares) or l2 (double L2 projection)
+  bool transfer = false;       ///< --transfer: the field's array interpolated to the new nodes
+};
+int runAdapt(const AdaptOptions& options);
 
 struct SizingArgs {
   std::string file;

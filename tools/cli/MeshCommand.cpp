@@ -63,20 +63,14 @@ bool isKnownOutputExtension(const std::string& path) {
   return std::any_of(std::begin(known), std::end(known), [&](const char* k) { return ext == k; });
 }
 
-/// Reads the model, meshes it (tools/app/MeshRun.h), writes the mesh and the report.
-static int meshRun(const MeshArgs& given, io::Report& report, const NodeDataHook& nodeData) {
-  MeshArgs args = given;
+int writeRun(const MeshArgs& args, const Model& model, const MeshResult& result, io::Report& report,
+             std::chrono::steady_clock::time_point t0, const std::vector<io::NodeData>& nodeData) {
   using Clock = std::chrono::steady_clock;
-  const auto t0 = Clock::now();
-  checkArguments(args);
-  const app::MeshRun run = app::meshFile(args, report);
-  const MeshResult& result = run.result;
   if (!result.meshed()) failRun(args, report, t0, result.stop);
-  const Model& model = run.input.model;
   io::WriteOptions wopt;
   wopt.binary = args.binary;
   wopt.mshVersion = args.mshVersion;
-  if (nodeData) wopt.nodeData = nodeData((result.volumeRan ? result.volume.mesh.surface : result.surface.mesh).nodes, report.extra);
+  wopt.nodeData = nodeData;
   const auto tw = Clock::now();
   if (result.volumeRan) io::writeVolumeMesh(model, result.volume.mesh, args.output, wopt);
   else io::writeSurfaceMesh(model, result.surface.mesh, args.output, wopt);
@@ -87,15 +81,15 @@ static int meshRun(const MeshArgs& given, io::Report& report, const NodeDataHook
 
 /// --time-limit: the token every mesher checks (mesher/core/Cancel.h); when it fires, the
 /// report says failed, no mesh is written, and the one line names the phase (exit 3).
-int runMesh(const MeshArgs& given, const NodeDataHook& nodeData, io::Report* keep) {
+int runGuarded(const MeshArgs& given, const std::function<int(MeshArgs&, io::Report&)>& body) {
   const auto t0 = std::chrono::steady_clock::now();
   MeshArgs args = given;
   if (args.timeLimit > 0) args.options.cancel = std::make_shared<const CancelToken>(args.timeLimit);
   io::Report report;
   try {
-    const int rc = meshRun(args, report, nodeData);
-    if (keep) *keep = std::move(report);
-    else printRunSummary(report, args.output);
+    checkArguments(args);
+    const int rc = body(args, report);
+    printRunSummary(report, args.output);
     return rc;
   } catch (const Cancelled& e) {
     report.problems.push_back({EntityRef::model(), Severity::Failed, "time-limit", e.what(), "run"});
@@ -104,6 +98,14 @@ int runMesh(const MeshArgs& given, const NodeDataHook& nodeData, io::Report* kee
     writeReport(args, report);
     throw MeshingError(args.file + ": " + e.what());
   }
+}
+
+int runMesh(const MeshArgs& given) {
+  return runGuarded(given, [](MeshArgs& args, io::Report& report) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const app::MeshRun run = app::meshFile(args, report);
+    return writeRun(args, run.input.model, run.result, report, t0, {});
+  });
 }
 
 }  // namespace aniso::cli

@@ -166,10 +166,10 @@ int main(int argc, char** argv) {
   messages.add(*checkCmd);
   checkCmd->fallthrough();
 
-  cli::AdaptArgs adapt;
+  cli::AdaptOptions adapt;
   CLI::App* adaptCmd = cli::addAdaptCommand(app, adapt);
   // adapt keeps the thesis' sizing table: the field's metric decides the sizes
-  cli::SizeOptions adaptSize(*adaptCmd, adapt.mesh.options.sizing, false);
+  cli::SizeOptions adaptSize(*adaptCmd, adapt.args.mesh.options.sizing, false);
   messages.add(*adaptCmd);
 
   // CLI11 reports an unknown command as a missing one: name it instead.

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "mesher/core/Error.h"
+#include "tools/app/AdaptRun.h"
 #include "tools/app/InfoJson.h"
 #include "tools/app/MeshRun.h"
 #include "tools/python/MeshObject.h"
@@ -117,6 +118,59 @@ double secondsSince(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+/// Runs `job` (which fills `report`) in a worker; errors become the Python exceptions
+/// (a time limit as the CLI's runMesh reports it).
+void runJob(const app::MeshArgs& args, io::Report& report, std::chrono::steady_clock::time_point t0,
+            const py::object& progress, const std::function<void()>& job) {
+  try {
+    runInWorker(job, *args.options.cancel, progress);
+  } catch (const InputError& e) {
+    refuse(e.what());
+  } catch (const Cancelled& e) {  // time_limit, as the CLI's runMesh
+    report.problems.push_back({EntityRef::model(), Severity::Failed, "time-limit", e.what(), "run"});
+    report.status = io::RunStatus::Failed;
+    report.totalSeconds = secondsSince(t0);
+    const auto j = report.toJson();
+    raise(gMeshingError, args.file + ": " + e.what(), toPython(j["problems"]), toPython(j));
+  } catch (const MeshingError& e) {
+    const auto j = report.toJson();
+    raise(gMeshingError, e.what(), toPython(j["problems"]), toPython(j));
+  }
+}
+
+/// The anisomesh.Mesh of a run's result, graded; a result with no mesh raises MeshingError.
+py::object meshObject(const app::MeshArgs& args, io::Report& report, Model&& model, MeshResult&& result,
+                      std::chrono::steady_clock::time_point t0) {
+  report.totalSeconds = secondsSince(t0);
+  if (!result.meshed()) {
+    report.status = io::RunStatus::Failed;
+    const auto j = report.toJson();
+    raise(gMeshingError, app::failureMessage(args.file, report, result.stop), toPython(j["problems"]), toPython(j));
+  }
+  report.status = gradeRun(report.problems, true);
+  auto data = std::make_shared<MeshData>();
+  data->model = std::move(model);
+  data->volume = result.volumeRan;
+  if (data->volume) data->tets = std::move(result.volume.mesh);
+  else data->surface = std::move(result.surface.mesh);
+  data->dim = args.options.dim;
+  data->order = args.options.order;
+  data->status = statusName(report.status);
+  data->report = report.toJson();
+  if (report.status == io::RunStatus::Degraded)
+    py::module_::import("logging").attr("getLogger")("anisomesh").attr("warning")(
+        "%s", args.file + ": the mesh is degraded: " + app::degradedSummary(report) + " (Mesh.problems lists them all)");
+  return makeMesh(std::move(data));
+}
+
+/// A token always: Ctrl-C stops the run through it (Worker.h).
+void setTimeLimit(app::MeshArgs& args, std::optional<double> timeLimit) {
+  if (timeLimit && !(*timeLimit >= 0)) refuse("time_limit must be a number of seconds ≥ 0");
+  args.timeLimit = timeLimit.value_or(0);
+  args.options.cancel = args.timeLimit > 0 ? std::make_shared<const CancelToken>(args.timeLimit)
+                                           : std::make_shared<const CancelToken>();
+}
+
 py::object mesh(const py::object& path, std::optional<int> dim, std::optional<double> size, std::optional<double> hmax,
                 std::optional<double> hmin, int order, bool quad, const std::string& quadMethod,
                 const std::optional<std::string>& sizing, int threads, std::optional<double> maxElements,
@@ -130,47 +184,49 @@ py::object mesh(const py::object& path, std::optional<int> dim, std::optional<do
                            gradation, anisotropy, contourAnisotropy, chordDeviationRel, curvature};
   app::MeshArgs args = meshArgs(pathOf(path), dim, order, quad, quadMethod, sizes, sizing, threads, maxElements, fragment, overlaps,
                                 internalFaces);
-  if (timeLimit && !(*timeLimit >= 0)) refuse("time_limit must be a number of seconds ≥ 0");
-  args.timeLimit = timeLimit.value_or(0);
-  // A token always: Ctrl-C stops the run through it (Worker.h).
-  args.options.cancel = args.timeLimit > 0 ? std::make_shared<const CancelToken>(args.timeLimit)
-                                           : std::make_shared<const CancelToken>();
+  setTimeLimit(args, timeLimit);
   io::Report report;
   std::optional<app::MeshRun> run;
-  try {
-    runInWorker([&] { run.emplace(app::meshFile(args, report)); }, *args.options.cancel, progress);
-  } catch (const InputError& e) {
-    refuse(e.what());
-  } catch (const Cancelled& e) {  // time_limit, as the CLI's runMesh
-    report.problems.push_back({EntityRef::model(), Severity::Failed, "time-limit", e.what(), "run"});
-    report.status = io::RunStatus::Failed;
-    report.totalSeconds = secondsSince(t0);
-    const auto j = report.toJson();
-    raise(gMeshingError, args.file + ": " + e.what(), toPython(j["problems"]), toPython(j));
-  } catch (const MeshingError& e) {
-    const auto j = report.toJson();
-    raise(gMeshingError, e.what(), toPython(j["problems"]), toPython(j));
-  }
-  report.totalSeconds = secondsSince(t0);
-  if (!run->result.meshed()) {
-    report.status = io::RunStatus::Failed;
-    const auto j = report.toJson();
-    raise(gMeshingError, app::failureMessage(args.file, report, run->result.stop), toPython(j["problems"]), toPython(j));
-  }
-  report.status = gradeRun(report.problems, true);
-  auto data = std::make_shared<MeshData>();
-  data->model = std::move(run->input.model);
-  data->volume = run->result.volumeRan;
-  if (data->volume) data->tets = std::move(run->result.volume.mesh);
-  else data->surface = std::move(run->result.surface.mesh);
-  data->dim = args.options.dim;
-  data->order = args.options.order;
-  data->status = statusName(report.status);
-  data->report = report.toJson();
-  if (report.status == io::RunStatus::Degraded)
-    py::module_::import("logging").attr("getLogger")("anisomesh").attr("warning")(
-        "%s", args.file + ": the mesh is degraded: " + app::degradedSummary(report) + " (Mesh.problems lists them all)");
-  return makeMesh(std::move(data));
+  runJob(args, report, t0, progress, [&] { run.emplace(app::meshFile(args, report)); });
+  return meshObject(args, report, std::move(run->input.model), std::move(run->result), t0);
+}
+
+/// anisomesh.adapt(): the CLI's `adapt` (tools/app/AdaptRun.h) with its defaults (the
+/// thesis' sizing table, γ_a 10).
+py::object adapt(const py::object& path, const py::object& from, const std::string& field, std::optional<double> targetNodes,
+                 std::optional<double> error, double norm, const std::string& hessian, std::optional<int> dim, int order,
+                 std::optional<double> size, std::optional<double> hmax, std::optional<double> hmin,
+                 std::optional<double> hmaxRel, std::optional<double> hminRel, std::optional<double> gradation,
+                 std::optional<double> anisotropy, bool curvature, int threads, std::optional<double> timeLimit,
+                 const py::object& progress) {
+  const auto t0 = std::chrono::steady_clock::now();
+  app::AdaptArgs a;
+  a.mesh.file = pathOf(path);
+  a.from = pathOf(from);
+  a.field = field;
+  if (dim && *dim != 2 && *dim != 3) refuse("dim must be 2, 3 or None");
+  if (order != 1 && order != 2) refuse("order must be 1 or 2");
+  if (threads < 0 || threads > 4096) refuse("threads must be from 0 (all cores) to 4096");
+  if (targetNodes && !(*targetNodes > 0)) refuse("target_nodes must be positive");
+  if (error && !(*error > 0)) refuse("error must be positive");
+  a.mesh.options.dim = dim.value_or(0);
+  a.mesh.options.order = order;
+  a.mesh.options.threads = threads;
+  a.mesh.options.sizing.anisotropy = 10;
+  const SizeKeywords sizes{size, hmax, hmin, hmaxRel, hminRel, {}, {}, gradation, anisotropy, {}, {}, curvature};
+  sizes.apply(a.mesh.options.sizing);
+  a.targetNodes = targetNodes.value_or(0);
+  a.error = error.value_or(0);
+  a.norm = norm;
+  a.hessian = choice<HessianMethod>("hessian", hessian, {{"ls", HessianMethod::LeastSquares}, {"l2", HessianMethod::DoubleL2}});
+  setTimeLimit(a.mesh, timeLimit);
+  io::Report report;
+  std::optional<app::AdaptRun> run;
+  runJob(a.mesh, report, t0, progress, [&] {
+    const app::FieldInput f = app::readField(a);
+    run.emplace(app::adaptFile(a, f, report));
+  });
+  return meshObject(a.mesh, report, std::move(run->input.model), std::move(run->result.mesh), t0);
 }
 
 py::object info(const py::object& path, bool faces, bool fragment, const std::string& overlaps) {
@@ -210,6 +266,16 @@ void bindCalls(py::module_& m) {
         py::arg("overlaps") = "merge", py::arg("internal_faces") = "auto", py::arg("chord_deviation_rel") = py::none(),
         "Meshes a CAD file (STEP, IGES, BREP, .json analytic) as `anisomesh mesh` does with the same options; "
         "returns an anisomesh.Mesh. progress(phase, done, total, detail) is called from this thread.");
+  m.def("adapt", &adapt, py::arg("path"), py::kw_only(), py::arg("from_mesh"), py::arg("field"),
+        py::arg("target_nodes") = py::none(), py::arg("error") = py::none(), py::arg("norm") = 2.0,
+        py::arg("hessian") = "ls", py::arg("dim") = py::none(), py::arg("order") = 1, py::arg("size") = py::none(),
+        py::arg("hmax") = py::none(), py::arg("hmin") = py::none(), py::arg("hmax_rel") = py::none(),
+        py::arg("hmin_rel") = py::none(), py::arg("gradation") = py::none(), py::arg("anisotropy") = py::none(),
+        py::arg("curvature") = true, py::arg("threads") = 0, py::arg("time_limit") = py::none(),
+        py::arg("progress") = py::none(),
+        "Meshes a CAD file adapted to a field of a solver's mesh, as `anisomesh adapt` does with the same options "
+        "(from_mesh: .msh .vtu .frd .inp; field: NAME, NAME:x|y|z|N, NAME:mises|p1|p2|p3; target_nodes default: "
+        "the node count of from_mesh); returns an anisomesh.Mesh whose report has the 'adapt' block.");
   m.def("info", &info, py::arg("path"), py::kw_only(), py::arg("faces") = false, py::arg("fragment") = true,
         py::arg("overlaps") = "merge", "What `anisomesh info --json [--faces]` prints, as a dict");
 }
