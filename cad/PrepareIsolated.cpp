@@ -1,9 +1,12 @@
+#include <chrono>
+#include <cstdio>
 #include <sstream>
 #include <vector>
 
 #include "cad/detail/ChildProcess.h"
 #include "cad/detail/Prepare.h"
 #include "mesher/core/Error.h"
+#include "mesher/core/Log.h"
 
 namespace aniso::cad::detail {
 namespace {
@@ -62,11 +65,15 @@ PrepareReport decode(const std::string& text) {
 void runPrepareStep(const char* step, const char* crashPoint, CadModel::Impl& impl, PrepareReport& report,
                     const std::function<void(CadModel::Impl&, PrepareReport&)>& run) {
   // the child starts from copies of impl and report, and sends both back
+  const auto t0 = std::chrono::steady_clock::now();
   const ChildOutcome o = runInChild(impl, step, [&](CadModel::Impl& i) {
     testCrashPoint(crashPoint);
     run(i, report);
     return encode(report);
   });
+  char took[64];
+  std::snprintf(took, sizeof took, ": %.2f s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  logDebug(std::string("preparation, ") + step + took);
   if (o.kind == ChildOutcome::Done) {
     report = decode(o.payload);
     return;

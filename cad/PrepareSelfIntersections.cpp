@@ -24,6 +24,7 @@
 #include <TopoDS_Solid.hxx>
 
 #include <cmath>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -74,19 +75,32 @@ bool selfInterfering(const TopoDS_Shape& solid, bool parallel) {
 /// single part (U_Joint_2: 4.1 s of 15 s serial). The threads are OpenCASCADE's own pool
 /// (OSD_ThreadPool), not TBB's: this runs in the forked child of runPrepareStep, where a TBB
 /// pool the parent had started (a Python program may have) would wait for workers that do
-/// not exist; the parent process never starts OpenCASCADE's pool. The verdicts do not
-/// depend on the threads. Result: 1 crossing, 0 not, -1 the check failed (left as is).
+/// not exist; the parent process never starts OpenCASCADE's pool. Instances of one part
+/// (the same TShape placed by different locations: an assembly's screws) are checked once:
+/// a rigid placement crosses nothing. The verdicts do not depend on the threads.
+/// Result: 1 crossing, 0 not, -1 the check failed (left as is).
 std::vector<int> selfInterferingSolids(const TopTools_IndexedMapOfShape& solids) {
   const int n = solids.Extent();
+  std::vector<int> first(static_cast<std::size_t>(n) + 1, 0);  // the instance checked for solid i
+  std::vector<int> checked;
+  std::map<const TopoDS_TShape*, int> seen;
+  for (int i = 1; i <= n; ++i) {
+    const auto [it, added] = seen.emplace(solids(i).TShape().get(), i);
+    first[static_cast<std::size_t>(i)] = it->second;
+    if (added) checked.push_back(i);
+  }
   std::vector<int> verdict(static_cast<std::size_t>(n) + 1, 0);
   OSD_Parallel::SetUseOcctThreads(true);
-  OSD_Parallel::For(1, n + 1, [&](int i) {
+  const int m = static_cast<int>(checked.size());
+  OSD_Parallel::For(0, m, [&](int k) {
+    const int i = checked[static_cast<std::size_t>(k)];
     try {
-      verdict[static_cast<std::size_t>(i)] = selfInterfering(solids(i), n == 1) ? 1 : 0;
+      verdict[static_cast<std::size_t>(i)] = selfInterfering(solids(i), m == 1) ? 1 : 0;
     } catch (const Standard_Failure&) {
       verdict[static_cast<std::size_t>(i)] = -1;
     }
   });
+  for (int i = 1; i <= n; ++i) verdict[static_cast<std::size_t>(i)] = verdict[static_cast<std::size_t>(first[static_cast<std::size_t>(i)])];
   return verdict;
 }
 
