@@ -12,8 +12,8 @@ namespace aniso::cad {
 /// True for a degenerated edge of `face` (FORWARD) whose pcurve maps, at five points, to
 /// surface points farther from the edge's vertex than kFalsePoleTolFactor times the edge's
 /// tolerance and kFalsePoleRel of the face's size. (Not the vertex's tolerance: the
-/// translation grows it to cover the bridge, 0.07 and 0.8 on KiCad battery-holder peg tips
-/// of 0.4 radius.)
+/// translation grows it to cover the bridge, up to the size of the face itself;
+/// docs/measurements.md.)
 bool falsePole(const TopoDS_Edge& edge, const TopoDS_Face& face);
 
 /// Faces of `shape` with a wire made of degenerated edges and seams only, one of them a

@@ -9,14 +9,13 @@
 // into an exception in-process (OSD::SetSignal, OCC_CATCH_SIGNALS: a longjmp out of the
 // middle of OCCT) could leave the heap inconsistent for the rest of the run, which is why
 // the work runs in a process that is thrown away. Cost: one fork (copy-on-write) and one
-// binary BREP write + read of a changed shape (measured: reading 3 large STEP files is not
-// slower). The child's stdout and stderr go to /dev/null.
+// binary BREP write + read of a changed shape, not noticeable next to the work itself
+// (docs/measurements.md). The child's stdout and stderr go to /dev/null.
 //
 // A shape crosses the boundary exactly but for round-off: BinTools rebuilds transformations
 // and axes from their stored values (gp_Trsf::SetValues divides by det^(1/3), gp_Dir
-// normalises), so a tilted or rotated part may move by an ulp (assembly_workbench.step: one
-// solid's volume differs in the 16th digit; restoring the placements' gp_Trsf bit for bit
-// did not remove it). Counts, names and topology are unchanged.
+// normalises), so a tilted or rotated part may move by an ulp (docs/measurements.md).
+// Counts, names and topology are unchanged.
 //
 // Outcome:
 //   Done     impl holds the child's shape and names; `payload` what work returned.

@@ -51,9 +51,9 @@ void rebuildSelfIntersecting(CadModel::Impl& impl, PrepareReport& report);
 void imprintSelfContacts(CadModel::Impl& impl, PrepareReport& report);
 
 /// A fin a contact edge bounds, taken off its solid (imprintSelfContacts): above the line
-/// where two battery cradles touch stands a fin 0.3 mm tall and 0 to 18 µm thick, whose
-/// tetrahedra cannot have angles above 1–3°. The fin is the faces on one side of the edge
-/// (two of them closing a cusp there, at under 3°),
+/// where two battery cradles touch stands a fin far thinner than it is tall, whose
+/// tetrahedra cannot have angles above a few degrees (docs/measurements.md). The fin is the
+/// faces on one side of the edge (two of them closing a cusp there, at under 3°),
 /// flooded up to the holes of other faces they end on (its cross-section where it runs into
 /// a wall); without them, and without those holes, the solid stays closed and valid. Taken
 /// off when it holds at most 1e-3 of the solid's volume and is on average (2 V / A) at most
@@ -97,8 +97,8 @@ inline constexpr double kNoAreaRel = 1e-12;
 
 /// A loop closed in 3D within the CAD tolerance whose (u, v) gap exceeds this share of the
 /// face's parametric extent is meshed only by bridging the gap as a pole (FaceLoops.cpp): a
-/// fuse that leaves such loops where there were none is not trusted. (Trusting it was tried
-/// on KiCad's Schurter fuse holder: its loosest fuse then emptied another solid.)
+/// fuse that leaves such loops where there were none is not trusted. (Trusting it emptied a
+/// solid of a real part: docs/measurements.md.)
 inline constexpr double kFuseLoopGapShare = 0.1;
 
 /// For each part (a set of solids of `whole`), how many of its faces the mesher's own rule
@@ -123,8 +123,7 @@ void fragmentSolids(CadModel::Impl& impl, double diag, OverlapPolicy policy, Pre
 /// so the interfaces with other parts stay shared. The pieces themselves if that fails or
 /// gives a volume that matches neither the pieces' sum nor `partVolume`, the part's volume
 /// before the fuse (a fuzzy fuse loses slivers of its pieces' volume along the interfaces
-/// it glues: Ag9900M_MT's pieces sum 0.25 % below their part, while the merged solid is
-/// within 0.05 % of it).
+/// it glues, while the merged solid keeps the part's volume: docs/measurements.md).
 TopTools_ListOfShape mergePieces(const TopTools_ListOfShape& pieces, double partVolume);
 
 /// For a region common to several parts (a solid of the general fuse) and the parts' solids

@@ -11,9 +11,8 @@ ShapeSummary summarize(const CadModel::Impl& impl);
 
 /// The volume of a solid by OCCT's adaptive integral (relative error at most 1e-5), or by
 /// its fixed-order integral when the two agree within that; 0 when OCCT fails. The
-/// fixed-order integral OCCT gives by default can be far off on B-spline solids:
-/// bug23138_thread.brep (a helical thread) 19.057, where the adaptive integral gives 14.389
-/// and a tessellation at 0.2 µm deflection encloses 14.390.
+/// fixed-order integral OCCT gives by default can be far off on B-spline solids (by a third
+/// on a helical thread: docs/measurements.md).
 double accurateVolume(const TopoDS_Shape& solid);
 
 /// accurateVolume of a solid of impl's shape, remembered in impl.volumes.

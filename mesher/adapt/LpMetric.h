@@ -33,14 +33,11 @@ namespace aniso {
 inline constexpr double kHessianFloor = 1e-12;
 /// a_d, b_d above: nodes per unit of interior and of boundary complexity, measured on
 /// meshes of a uniform metric (the Hessian of |x|²) by `anisomesh adapt`, whose volume
-/// metric is kVolumeLengthFactor finer than its tets (AdaptSources.h). 3D, the
-/// 10 mm cube at 2000 / 16000 nodes asked (4529 / 27951 made): 1.659 and 2.657 (fit of the
-/// two; the 4000 and 8000 runs land within 3 %). For comparison, a regular unit tet has
-/// volume √2/12 and a Delaunay mesh ~6 tets per node (1.4 nodes per unit volume), a unit
-/// equilateral triangle area √3/4 and a triangle mesh 2 per node (1.15 per unit area).
-/// 2D, the unit square (an analytic plane) at 500 / 4000 nodes asked, 547 / 4128 made with
-/// a_2 = 2/√3 alone: b_2 = 0.55 from the excess per boundary length complexity (0.565 / 0.54).
-/// With these the cube makes 2006 / 8106 nodes for 2000 / 8000.
+/// metric is kVolumeLengthFactor finer than its tets (AdaptSources.h): 3D fitted on a cube,
+/// 2D a_2 = 2/√3 and b_2 from the unit square (docs/measurements.md). For comparison, a
+/// regular unit tet has volume √2/12 and a Delaunay mesh ~6 tets per node (1.4 nodes per unit
+/// volume), a unit equilateral triangle area √3/4 and a triangle mesh 2 per node (1.15 per
+/// unit area).
 inline constexpr double kInteriorNodesPerComplexity[4] = {0, 0, 1.1547, 1.659};
 inline constexpr double kBoundaryNodesPerComplexity[4] = {0, 0, 0.55, 2.657};
 

@@ -17,14 +17,14 @@ namespace aniso {
 inline constexpr double kDefaultElementsPerCircle = 12;
 
 /// The program's default h_max over the model diagonal: Gmsh's default size (a unit cube's
-/// edges get 6 segments: diagonal / 10). Measured at 12 per circle against the thesis' 0.5:
-/// box.brep 24 -> 1711 tets (Gmsh 1155), bracket 5911 -> 5777, as1-tu-203 73.9 k -> 70.0 k
-/// (a surface graded from smaller sizes needs fewer tets to reach the quality bar).
+/// edges get 6 segments: diagonal / 10). Against the thesis' 0.5 it refines small blocks and
+/// costs real parts no more tets (a surface graded from smaller sizes needs fewer tets to reach
+/// the quality bar; docs/measurements.md).
 inline constexpr double kDefaultHmaxRel = 0.1;
 
 /// The program's default chord deviation over the model diagonal (chordDeviationRel):
-/// 12 per circle alone lose volume and area on large radii (PRO10363 -3.9 % volume at the
-/// other defaults, -0.7 % with it; docs/census.md, session 13).
+/// 12 per circle alone lose volume and area on large radii (docs/defaults_vs_gmsh.md;
+/// docs/census.md, session 13).
 inline constexpr double kDefaultChordDeviationRel = 5e-4;
 
 /// γ_c (edge length / curvature radius) for n elements per full circle: 2π/n. n > 0.

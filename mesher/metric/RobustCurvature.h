@@ -25,9 +25,9 @@
 // Every h_i is raised to at least the result, then the anisotropy limit (eq. 2.42).
 // Which rule does what (models/passage.step, a B-spline patch whose v = 0 row of control
 // points is collapsed onto a corner, plus noise): the point curvature near the collapsed row
-// is spurious (the fan the row makes is nearly flat), and the secant check removes it: the
-// build before never left the control spaces (h_min along the row, > 120 s at the census
-// options), now 0.3 s. The floor is a backstop (see the constants).
+// is spurious (the fan the row makes is nearly flat), and the secant check removes it:
+// without it the row asked for h_min and the control spaces did not finish
+// (docs/measurements.md). The floor is a backstop (see the constants).
 // Throws MeshingError as surfaceCurvatureSizing() does.
 #include "mesher/geometry/ParametricSurface.h"
 #include "mesher/metric/CurvatureSizing.h"
@@ -48,8 +48,8 @@ inline constexpr double kToleranceFactor = 10.0;
 /// i.e. no curvature length below γ_c · kMinRadiusFraction · width: the backstop for
 /// curvature without bound (a singular point) when h_min is set far below the model's scale.
 /// Real features come close: the thesis' SURF2 ridge has radii down to 3.7e-4 of its face's
-/// width (the floor at 5e-3 cut SURF2 from 28 k to 10 k triangles); fillets and holes have
-/// radii of ~0.6 of their faces' widths.
+/// width (a floor at 5e-3 cut most of its triangles: docs/measurements.md); fillets and holes
+/// have radii of ~0.6 of their faces' widths.
 inline constexpr double kMinRadiusFraction = 1e-3;
 
 /// What the sampling and the floor of a face need to know.

@@ -5,9 +5,9 @@
 // S_f(p_f(t)) is the same point within the edge's tolerance (OCCT's SameParameter). Some
 // exporters and boolean operations leave a 3D curve that strays beyond its tolerance from
 // the faces while the faces still agree with each other (an intersection curve
-// approximated loosely: a 6 µm hook on a 1.3 µm tolerance). A mesh node placed on such a
-// curve lies off both faces, and the face mesher, which works on the pcurves, folds
-// triangles over it. The rule:
+// approximated loosely, straying several times its tolerance; docs/measurements.md). A
+// mesh node placed on such a curve lies off both faces, and the face mesher, which works on
+// the pcurves, folds triangles over it. The rule:
 //   the 3D curve's point c(t), unless the edge has pcurves on at least two faces, their
 //   images agree with one another within the tolerance (max(edge tolerance, the faces'))
 //   and c(t) is farther than that tolerance from their mean: then the mean.

@@ -1,7 +1,7 @@
 #pragma once
 // undoRefinementOfFailed — the proximity rounds' way back for one solid (VolumeStages.h):
-// a solid whose volume fails on the finer surface of a round (its boundary not recovered:
-// NEO's 1 µm labels at 0.016 mm) loses the sources that size only its faces, so the next
+// a solid whose volume fails on the finer surface of a round (its boundary not recovered;
+// docs/measurements.md) loses the sources that size only its faces, so the next
 // surface gives it back its earlier sizes while every other solid keeps its refinement
 // (rather than the whole model falling back to the first surface).
 #include <cstddef>

@@ -35,10 +35,9 @@ inline constexpr int kMaxProximityRounds = 2;
 /// Budget of the proximity rounds: their sources may ask for at most this many times the
 /// first surface mesh's triangles (predictedTriangles), all rounds together; beyond it the
 /// sizes are scaled up until the prediction fits (sourcesWithinBudget: refined as far as
-/// the budget allows) for a model thin as a whole. A resource guard, not a quality rule.
-/// Measured: simple_plane at the defaults asked 10x, then 46x in all (a budget per round
-/// gave 6 M tets in 185 s); water_module at the issue-20 options asks 23x of 642 k
-/// triangles: scaled to fit, the volume ran past 300 s.
+/// the budget allows) for a model thin as a whole. A resource guard, not a quality rule: a
+/// budget per round compounded, and thin models ask for tens of times the first surface
+/// (docs/measurements.md).
 inline constexpr double kMaxProximityGrowth = 10.0;
 /// A model thin as a whole — at least this share of the surface's triangles thin — gets
 /// sources beyond the budget scaled to fit (sourcesWithinBudget); a model thin in places
@@ -51,10 +50,7 @@ inline constexpr double kThinWholeShare = 0.5;
 /// thick: flat tetrahedra across it, about 20 deg at the base edges, but no slivers), to
 /// fit kThinInPlacesGrowth times the first surface, and when even that does not fit, the
 /// thin solids that fit are refined (cheapestGroupsWithinBudget). A time guard: the volume
-/// grows with the surface (about 4 tets per triangle). Measured at the defaults: u-blox_ZED's
-/// board asks 8.2x of 390 k triangles (16.2 M tets, 293 s; scaled to 2x: 3.7 M, 104 s);
-/// water_module's sheets 1.5 M of 235 k (scaled to 2x: 0.84 deg, volume -1.3 %; as asked:
-/// 5.1 deg); NEO's 1 um labels, at 4x: 5 M tets, 314 s.
+/// grows with the surface (about 4 tets per triangle; docs/measurements.md).
 inline constexpr double kMaxThinAspect = 8.0;
 inline constexpr double kThinInPlacesGrowth = 2.0;
 inline constexpr double kThinInPlacesTriangles = 1.6e6;

@@ -13,9 +13,8 @@
 // (elementQuality: the 3D scaled Jacobian of quads, the metric shape of triangles). A trial
 // position is taken only when the star stays strictly convex and counter-clockwise (exact),
 // neither its worst element nor its worst quad gets worse, and worst + meanWeight × mean
-// rises by more than `minGain` (measured on box, Block, RECT1, SURF0, SURF1:
-// pure max–min, meanWeight 0, raises the worst boundary quads but lowers the layer's mean
-// SJ on the box, 0.911 → 0.907; 0.5 raises both: 0.911 → 0.914, worst 0.29 → 0.45); the
+// rises by more than `minGain` (pure max–min, meanWeight 0, raises the worst boundary quads
+// but lowers the layer's mean; 0.5 raises both: docs/measurements.md); the
 // vertex never goes further than `maxDisplacement` (metric length) from where the
 // smoothing left it, and the metric length of every edge at the vertex stays at least
 // `shortestEdge` × the shortest edge of its star on entry (or its own length, if shorter)

@@ -3,8 +3,8 @@
 // requested length multiplied by kQuadSizeFactor = (2/√3)^{1/2} ≈ 1.0746, so that two
 // merged triangles of unit edge in this space cover the area of the unit square of the real
 // metric (2 · √3/4 · l² = 1). Without it the quads, once smoothed towards squares, have
-// edges of about 0.93 in the real metric (measured μ_M 0.942 on RECT1, thesis table A.1:
-// 1.010). The conversion itself and every quality figure use the real control space.
+// edges of about 0.93 in the real metric (docs/measurements.md; thesis table A.1). The
+// conversion itself and every quality figure use the real control space.
 // Read-only view; thread-safe when the wrapped space is.
 #include "mesher/control/ControlSpace2d.h"
 

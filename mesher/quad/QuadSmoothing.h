@@ -8,8 +8,8 @@
 // Check, then change: the move is accepted when every element around Q stays strictly
 // convex and counter-clockwise (exact) and the elements get better in metric
 // (elementQuality): a poor star (worst below qualityFloor) must raise its worst, another
-// must keep its worst ≥ qualityFloor (its mean may drop: measured on the box, mean scaled
-// Jacobian 0.908 with the mean condition of the triangle smoothing, 0.916 without); else
+// must keep its worst ≥ qualityFloor (its mean may drop: the mean condition of the triangle
+// smoothing gave poorer quads, docs/measurements.md); else
 // the half move is tried. In any case no quad of the star may end below minQuadQuality
 // (the star's worst may be a triangle, whose shape is another measure).
 // Boundary vertices never move, nor do the vertices of elements touching a pole (two

@@ -62,9 +62,8 @@ double thinFaceWidth(const BoundarySegments& segs, const std::vector<BoundaryGap
 /// The segments that cross another segment of the face's loops, or touch its interior with
 /// an end, other than at a shared end (exact orientation tests): a boundary whose polygons
 /// cross in (u, v) cannot be triangulated (two CAD edges a few micrometres apart, each
-/// discretized by its own chords: KiCad's KBPC bridge rectifier, a crescent face between two
-/// arcs 2-5 um apart, its chords 0.19 mm long deviating by more than the gap). Ascending,
-/// each once. Deterministic.
+/// discretized by its own chords deviating by more than the gap; docs/measurements.md).
+/// Ascending, each once. Deterministic.
 std::vector<int> crossingSegments(const BoundarySegments& segs);
 
 }  // namespace aniso

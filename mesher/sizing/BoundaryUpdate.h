@@ -14,13 +14,10 @@
 //     narrower at one end).
 //     Applied always to thin faces (below) and to strips — faces with more than
 //     stripFraction of their boundary length across a gap: a fillet, a trailing-edge band
-//     —, to the other faces only with options.vicinity. Measured on the public models at
-//     --hmax-rel 0.02 --anisotropy 1 (tools/bench/surface_small_features.py): on every
-//     face, the rule resolves wedges between tangent CAD edges and sharp corners into many
-//     mediocre elements and lowers the referee's mean ratio (part 0.972 → 0.950,
-//     component8 0.982 → 0.917); on strips and thin faces only, the needles (η < 0.1) not
-//     forced by the CAD go U_Joint_2 52 → 26, Block 4 → 0, wing_fuselage 36 → 0,
-//     SampleCrankshaft 3 → 1, SlenderSurface 108 → 0, the others unchanged.
+//     —, to the other faces only with options.vicinity. On every face the rule resolves
+//     wedges between tangent CAD edges and sharp corners into many mediocre elements and
+//     lowers the mean ratio; on strips and thin faces only, it removes most of the needles
+//     the CAD does not force (tools/bench/surface_small_features.py; docs/measurements.md).
 //
 //   - crossing boundary (crossingSegments, BoundaryGaps.h): segments whose chords cross
 //     another side in (u, v) (two CAD edges closer than their chords' deviation) ask for
@@ -35,30 +32,27 @@
 // thinFaceRatio · h_min and by kToleranceFactor × its CAD tolerance (never above h_min),
 // so that it meshes in well-shaped elements of its own width instead of needles h_min
 // long; faces that are only locally thin (a tapering tip, a neck) keep h_min.
-// In a volume mesh (thinFaces false) no face gets its own h_min: a face narrower than
-// h_min inside a solid is a step or a sliver face of the CAD (extruder-body.stp: a planar
-// rim 4 um wide and 38 mm long between two faces), and its width carried into the
-// neighbouring faces and the volume made 145 k of the 733 k tets, 4-20 um, graded up to
-// 2 mm (mean ratio 0.73; the solid's 0.794). Left at h_min its long edges take the
-// neighbours' sizes, its triangles are caps well below the local size, and the surface
-// repair removes them (SurfaceSlivers.h, kLocalSliverRatio): 507 k tets, mean ratio 0.825.
+// In a volume mesh (thinFaces false) no face gets its own h_min: a face narrower than h_min
+// inside a solid is a step or a sliver face of the CAD (a planar rim micrometres wide and
+// tens of millimetres long between two faces), and its width carried into the neighbouring
+// faces and the volume fills the solid around it with tiny, poor tets. Left at h_min its
+// long edges take the neighbours' sizes, its triangles are caps well below the local size,
+// and the surface repair removes them (SurfaceSlivers.h, kLocalSliverRatio;
+// docs/measurements.md).
 // Gaps narrower than resolvedGapRatio · h_min (on a thin face: half its h_min_f) get no
 // source: elements of the smallest size cannot span them well, and refining there only
 // multiplies the needles — at the tip of two CAD edges meeting at a tiny angle the gap
-// sources would carry the smallest size into the tip (measured with 0.5 instead of 2:
-// U_Joint_2's fillet tips 584 → 858 forced needles, mean ratio 0.931 → 0.914). Left
+// sources would carry the smallest size into the tip (docs/measurements.md). Left
 // coarse, the tip keeps few. Short-segment sources are bounded below by h_min_f too (a CAD
 // edge shorter than h_min_f does not drive the neighbourhood to round-off); in a volume
 // mesh, a strip narrower than resolvedGapRatio · h_min (its gaps get no source; a step or
 // sliver face of the CAD like the rim above) gets none for its segments shorter than that,
-// its ends: on KiCad's pin sockets (1 um steps around the pin holes) those sources graded
-// h_min into the faces around, the steps were meshed in needles 13 um long and the tets
-// there flat (mean ratio 0.793). Left coarse, the surface repair merges the step away. A
-// strip between two faces facing opposite ways is the rim of a film, not a step: nothing
-// merges it, and its ends keep their sources (without: KiCad's Everlight ITR8307, 1 um
-// pads, mean ratio 0.753 -> 0.705). Short segments of other
-// faces keep their sources: wing_fuselage's skins, narrower than h_min only towards their
-// sharp trailing edge, came out with 0.9 deg slivers without them.
+// its ends: those sources graded h_min into the faces around, and the steps were meshed in
+// needles with flat tets around them. Left coarse, the surface repair merges the step away.
+// A strip between two faces facing opposite ways is the rim of a film, not a step: nothing
+// merges it, and its ends keep their sources (without them the mean ratio dropped). Short
+// segments of other faces keep their sources: skins narrower than h_min only towards a
+// sharp trailing edge came out with slivers without them (docs/measurements.md).
 #include "mesher/control/CSAdaptive2d.h"
 #include "mesher/core/MeshOptions.h"
 #include "mesher/surface/FaceBoundary.h"

@@ -27,19 +27,18 @@ namespace aniso {
 
 /// Tets per (boundary triangles)^{3/2} of a solid. A uniform mesh of a cube of side L with
 /// size h has 6 L² / (√3/4 h²) = 13.9 L²/h² triangles and L³ / (h³/(6√2)) = 8.5 L³/h³
-/// tets: 0.165 T^{3/2}; graded meshes are coarser inside. Measured at the census options:
-/// cylinder.step 0.100, cantilever 0.074, bracket 0.047, U_Joint_2 0.029: the largest.
+/// tets: 0.165 T^{3/2}; graded meshes are coarser inside. 0.1: the largest ratio measured on
+/// real parts (docs/measurements.md).
 inline constexpr double kTetsPerTriangle32 = 0.1;
 /// Tets per V / h³ of a solid of volume V with boundary size h: a uniform mesh has 8.5
 /// (a regular tet holds h³ / (6√2)); 5.15 is kTetsPerTriangle32's share of the uniform
-/// cube's 0.165, so that both estimates agree on compact parts. Measured: u-blox's board and
-/// water_module's sheets were predicted ~50x their tets by T^{3/2} alone, and the budget's
-/// floor coarsened their proximity sources (the default limit, from the memory, reached).
+/// cube's 0.165, so that both estimates agree on compact parts. It bounds thin parts, whose
+/// tets T^{3/2} alone predicts many times over, so that the budget's floor does not coarsen
+/// their proximity sources (docs/measurements.md).
 inline constexpr double kTetsPerVolume = 5.15;
 /// Peak resident bytes per element while meshing, the program's own footprint included in
-/// the margin: per surface triangle (measured, Block.stp in 2D: 288 k triangles 113 MB,
-/// 985 k triangles 203 MB peak RSS, i.e. 130 B per triangle more), and per tet while meshing
-/// a volume (issue 18: ~140 B per tet at 0.5 M tets, surface included).
+/// the margin: per surface triangle, and per tet while meshing a volume (surface included);
+/// a margin above the peak measured per element (docs/measurements.md).
 inline constexpr double kBytesPerTriangle = 200.0;
 inline constexpr double kBytesPerTet = 150.0;
 /// Steps of the bisection for the floor (each halves log(h_max / h_smallest)).

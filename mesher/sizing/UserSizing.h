@@ -60,8 +60,8 @@ struct UserSizing {
 /// |M_s M_p y| = |M3 J y| for every parametric vector y, i.e.
 /// M_s² = M_p⁻¹ Jᵀ M3² J M_p⁻¹.
 /// The tensor gets kRestrictedTensorFloor times its trace added on its diagonal: a nearly
-/// singular J (a 3D box source over a face with a degenerate parametrisation, simple_plane's
-/// face 1: eigenvalues 8e-12 and 6e6) made the small eigenvalue round to ≤ 0 and the face's
+/// singular J (a 3D box source over a face with a degenerate parametrisation;
+/// docs/measurements.md) made the small eigenvalue round to ≤ 0 and the face's
 /// control space throw; the floor bounds the anisotropy of the restricted metric to 1e5.
 inline constexpr double kRestrictedTensorFloor = 1e-10;
 Metric2d restrictToSurface(const Metric3d& m3, const Vec3& pu, const Vec3& pv, const Mat2& mp);

@@ -12,11 +12,11 @@
 //     δ ≤ kVolumeChordRatio × V / B.
 // Convexity is sampled on a grid of each face's parametric box. One δ for the whole model:
 // the total volume is what a solver's mass and a reviewer's check see, and a small part of
-// an assembly does not refine the rest (per solid, as1-tu-203's rod took it from 83 k to
-// 530 k tets). A thin curved wall is bounded by its radius, not its thickness (its two
-// sides cancel but for their difference in area); models whose curved faces are a small
-// part of their volume keep δ. δ = 0 (the thesis' sizing) stays 0; a model with
-// an unknown CAD volume or face area, or no solid, keeps δ.
+// an assembly does not refine the rest (a per-solid bound multiplied an assembly's tets for
+// nothing the checks see: docs/census.md, session 14). A thin curved wall is bounded by its
+// radius, not its thickness (its two sides cancel but for their difference in area); models
+// whose curved faces are a small part of their volume keep δ. δ = 0 (the thesis' sizing)
+// stays 0; a model with an unknown CAD volume or face area, or no solid, keeps δ.
 #include "mesher/model/Model.h"
 
 namespace aniso {

@@ -6,8 +6,7 @@
 // in their interiors: no tetrahedralization has both as faces/edges, and neither flips nor
 // interior points recover it. Splitting the surface edges (new nodes on the CAD) can: where
 // two curved faces are closer than the chords' sagitta; not where two faces of the solid
-// overlap (Push_SMD_6.2x6.2mm after preparation: faces 41 and 49 in the plane z = 3.5,
-// 11611 missing edges, pipe reduction ran for minutes).
+// overlap (docs/measurements.md).
 #include <vector>
 
 #include "mesher/volume/Pipe.h"

@@ -6,8 +6,7 @@
 // For VolumeMetricSpace's grading of M_v from the surface (VolumeControlSpace.h).
 // With a near radius R, also a uniform grid of cells (R/2 wide, coarser beyond kMaxNearCells)
 // flagging those within R of a triangle (each triangle's box grown by R): beyond(x, d) then
-// answers most queries far from the surface without the tree (measured on the cube at h 0.02:
-// the distance search and the boundary-node lookup were 7 % of the run's cycles).
+// answers most queries far from the surface without the tree (docs/measurements.md).
 // Read-only after construction: queries are thread-safe. Deterministic (ties keep the first
 // triangle found in a fixed traversal order).
 #include <array>

@@ -35,8 +35,8 @@ namespace aniso {
 /// boundary triangles within this share of it (the patches stand where a few triangles
 /// are missing: far less; more means the fronts met in the wrong place). 1 %, the bar a
 /// volume mesh is judged by against its CAD solid: a surface that still folds over after the
-/// repair (KiCad's NXP MPL115A1 at the issue-20 options, its lid's edges 0.1-0.4 mm off
-/// their faces) encloses its own volume only roughly, and carving it lost 0.53 %.
+/// repair encloses its own volume only roughly, and carving it loses a fraction of a percent
+/// (docs/measurements.md).
 inline constexpr double kHoleVolumeTolerance = 1e-2;
 
 struct HoleCarving {

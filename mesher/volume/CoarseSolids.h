@@ -8,9 +8,9 @@
 // fill, a point at each cube's centre, has mean ratio 0.762 (four triangles per face, as
 // box.brep gets, allow 0.905). For every solid whose tets' referee mean ratio is below
 // kCoarseMeanRatio and whose surface is coarse — at most kCoarseTrianglesPerFace triangles
-// per face on average (a solid meshed finely but still poor, like the thin skins of
-// simple_plane at the defaults, 9 k tets at 0.77, is the proximity loop's: refined here
-// its boxes doubled the whole mesh) —, a box source over its boundary (grown by the mean edge length L of its
+// per face on average (a solid meshed finely but still poor, like thin skins, is the
+// proximity loop's: refined here its boxes doubled the whole mesh; docs/measurements.md) —,
+// a box source over its boundary (grown by the mean edge length L of its
 // boundary triangles) asks for the isotropic size kCoarseRefine · L on the solid's own
 // faces (SizingSource::faces: its neighbours in the box keep theirs); the caller meshes the
 // surface and the volumes again once and keeps the result with the better mean ratio.

@@ -8,9 +8,9 @@
 // other edges has a dihedral angle near 0 (the short edge subtends a small angle from the
 // opposite edge): no volume operator removes them. Both come from the CAD, where the
 // surface mesher must follow it: at the tip of a fillet two CAD edges run together
-// (U_Joint_2: two edges 1e-6 apart over 0.1 mm), and the strip of the face between them is
-// meshed with caps (a node of one edge between two nodes of the other) and with node pairs
-// a few micrometres apart.
+// (docs/measurements.md), and the strip of the face between them is meshed with caps (a
+// node of one edge between two nodes of the other) and with node pairs a few micrometres
+// apart.
 //
 // Two operations, each checked before the change, within the local tolerance: the larger
 // of `tolerance` (a geometric tolerance) and kLocalSliverRatio times the local size (for a

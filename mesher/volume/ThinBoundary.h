@@ -29,9 +29,8 @@
 // material between them, the second face parting to the inner side of the first — : its box
 // less the box of each such edge grown by kCuspClearance times its size (up to six boxes per
 // edge), so that the edge keeps the size of its faces. The tets at such an edge have the angle
-// between the chords of its two faces, which finer triangles make flatter (the battery cradles
-// at the defaults: the 0.2 mm cradle floor's box covered the contact line and sized it at
-// 0.2 mm, 1.1–1.6°). `faces` has one entry per box (a face may have several, consecutive).
+// between the chords of its two faces, which finer triangles make flatter
+// (docs/measurements.md). `faces` has one entry per box (a face may have several, consecutive).
 #include <vector>
 
 #include "mesher/model/Model.h"
@@ -52,25 +51,22 @@ inline constexpr double kCuspAngle = 0.0523598775598;
 /// within this angle, radians: 0.1°) with material between them: there the cusp opens with
 /// the distance from the edge and finer triangles make flatter tets. Faces of two parts
 /// meeting along an interface edge also have opposed normals but part by nothing; taken as
-/// cusps they cost quality for no gain (cutting_tool.step: 15.1° → 6.8°).
+/// cusps they cost quality for no gain (docs/measurements.md).
 inline constexpr double kTangentCuspAngle = 0.00174532925199;
 /// A thin source's box keeps this many times its size away from a cusp edge's box: the face
 /// control spaces interpolate between their vertices, so a narrower clearance still sized the
-/// edge (KiCad's Keystone 2468 at the defaults: 3 times, the edge at 0.2 mm, 1.09°; 10
-/// times, 3.12°).
+/// edge (docs/measurements.md).
 inline constexpr double kCuspClearance = 10.0;
 /// A solid is too coarse for its thickness when at least this fraction of its boundary
 /// triangles is thin: a few thin spots (a narrow rib of a large part) are left to sliver
-/// removal, meshing the surface again is for parts that are thin as a whole (measured:
-/// periodic_u_cst, 87 % of the tets spanning the part, needs it; Block.stp's ribs gave
-/// 157 faces of sources and 34 times the tets for no gain).
+/// removal, meshing the surface again is for parts that are thin as a whole
+/// (docs/measurements.md).
 inline constexpr double kThinFraction = 0.05;
 
 /// A face's thin source asks for this quantile of its spots' thicknesses, not the smallest:
 /// a thickness is an apex's height over a boundary triangle's plane, which on a coarse
-/// curved sheet dips towards the other side (measured: water_module's sheets, 2.4 mm
-/// thick, 0.06 mm at a few 60 mm triangles). Spots much thinner than the rest are measured
-/// again on the finer surface of the next round.
+/// curved sheet dips towards the other side (docs/volume.md, "How a solid is meshed"). Spots
+/// much thinner than the rest are measured again on the finer surface of the next round.
 inline constexpr double kFaceThicknessQuantile = 0.1;
 
 struct ThinSpot {

@@ -36,15 +36,11 @@
 // refinement's q(K) of eq. 5.2 and l_M > 1.5 edge check by eq. 2.18, the mean of their
 // length tensors, VolumeRefinement.h), so the size grades from h at the boundary to f·h
 // about one layer of tets inside: the tets on a boundary triangle are shaped for it, not
-// for a surface 1/f too fine (measured on the unit cube at size 0.02 with M / f up to the
-// boundary: tets with a boundary node mean ratio 0.844 against 0.873 inside; on
-// submarine.stp 0.84 on boundary triangles, 0.78-0.81 overall, below the 0.80 bar).
-// What kept μ_M below 1 on graded meshes (CYLINDER2 at the defaults: μ_M 0.82 in M_v,
-// interior edges 0.69) was not mainly the step from M at the surface nodes to M / f at
-// every other point (M_v until then): with f = 1 μ_M was 0.84, with f graded over 0.5-3
-// local sizes 0.79-0.82. It was the refinement measuring tets in the mean of the vertices'
-// tensors (VolumeRefinement.h: 0.97 without it); the grading then adds 0.01-0.016 (see
-// kVolumeTransitionLayers).
+// for a surface 1/f too fine (with M / f up to the boundary, the tets at the boundary were
+// poorer than those inside: docs/measurements.md). What kept μ_M below 1 on graded meshes
+// was not mainly the step from M at the surface nodes to M / f, but the refinement
+// measuring tets in the mean of the vertices' tensors (VolumeRefinement.h); the grading
+// then adds a little (see kVolumeTransitionLayers; docs/measurements.md).
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -61,27 +57,16 @@
 namespace aniso {
 
 /// f of the sizing convention above: the tetrahedra's edge length over the surface's.
-/// Measured on the unit cube at size 0.02 (tets; referee mean ratio; Gmsh HXT: 491 k, 0.815):
-/// f = 1: 1.32 M, 0.873; 1.4: 551 k, 0.8715 (tets on a boundary triangle 0.892, inside
-/// 0.871); 1.45: 511 k, 0.8706; 1.5: 473 k, 0.8702. Larger f costs quality where the mesh is
-/// graded (fewer layers between fine and coarse): referee mean ratio at --hmax-rel 0.02
-/// --curvature-ratio 0.26 (issue 5's bar 0.80), f = 1 / 1.4 / 1.45 / 1.5: U_Joint_2.stp
-/// 0.819 / 0.803 / - / 0.799 (inner tets 0.822 -> 0.780 at 1.5), simple_plane.brep
-/// - / 0.803 / 0.801 / 0.7997; with the gradation held in M_v (volumeGradation) at 1.4:
-/// U_Joint_2 0.808, ellipses.brep 0.801 (0.798 without; 0.8075 at f = 1). 1.4 lands at
-/// 1.12 x HXT's count on the cube (uniform: the gradation does not change it).
-/// CYLINDER2 (r 1, l 10, γ_a 10; tests/cli/cylinder2_test.py): η_M 0.793, μ_M 0.984 in M_v at
-/// the defaults (0.800 / 0.821 with the refinement in the mean of the vertex tensors and M_v
-/// stepping from M to M / f at the surface nodes).
+/// Larger f makes fewer tets but costs quality where the mesh is graded (fewer layers
+/// between fine and coarse); 1.4 keeps graded parts at the 0.80 bar and makes about Gmsh
+/// HXT's count on a uniform cube (docs/measurements.md).
 inline constexpr double kVolumeLengthFactor = 1.4;
 
 /// The depth, in unit lengths of M, over which M_v grades from M at the surface to M / f
 /// (VolumeMetricSpace with a surface): about one layer of tets, a size slope of (f − 1) /
-/// kVolumeTransitionLayers = 0.4, below γ_M's (eq. 2.27: 1.2 at γ_M 4). Measured (CYLINDER2
-/// at γ_c 0.15 / 0.1 / 0.05; the cube at size 0.02): the step M -> M / f at the surface nodes
-/// μ_M 0.974 / 0.948 / 0.938, η_M 0.786 / 0.794 / 0.772, cube 547 k tets; graded over 1:
-/// 0.979 / 0.962 / 0.954, η_M 0.796 / 0.790 / 0.775, cube 549 k; over 2: 0.997 / 0.983 /
-/// 0.970, cube 582 k (1.19 x HXT, the limit of the count asked for).
+/// kVolumeTransitionLayers = 0.4, below γ_M's (eq. 2.27: 1.2 at γ_M 4). Grading over one
+/// unit raises μ_M against a step at the surface nodes for about the same tets; over two
+/// the count grows to the limit of what is asked (docs/measurements.md).
 inline constexpr double kVolumeTransitionLayers = 1.0;
 
 /// M_v of the convention above: the metric of `user` with every requested length times

@@ -3,13 +3,9 @@
 // alg. 5.4), then sliver removal (issue 5):
 //   for i = 1..passes (table 5.6: one pass by default, later passes degrade graded and
 //   anisotropic meshes), and further passes up to maxPasses while the mean η_M of the solid
-//   is below passTarget (measured, referee mean ratio at check_mesh's options after 1 / 2 / 3
-//   passes: U_Joint_2.stp 0.812 / 0.827 / 0.832, simple_plane.brep 0.816 / 0.831 / -,
-//   ellipses.brep 0.807 / 0.823 / -; CYLINDER2 η_M 0.796 / 0.822 / 0.830 with μ_M 0.987 /
-//   0.975 / 0.973 in M_v — the degradation of table 5.6 is μ_M's, and small; the cube at
-//   h = 0.02 reaches 0.872 in one pass, 0.888 in two for 0.2-0.4 s more, so it stops at one;
-//   with the ascent step below, extruder-body's mean ratio after 3 / 5 / 8 passes is
-//   0.821 / 0.827 / 0.829 for 6.4 / 7.2 / 9.2 s of improvement, so at most 5):
+//   is below passTarget (graded parts gain from a second and a third pass, the degradation
+//   of table 5.6 being μ_M's and small; a uniform mesh above the target stops at one; beyond
+//   five passes the gain is small for the time: docs/measurements.md):
 //     smoothing of the free vertices (sec. 5.6.1): a step of steepest ascent of the star's
 //       mean η_M (VertexMover::smooth), else Laplace: the mean of the neighbours, or
 //       the metric version (eq. 4.3) where the local gradation is high; a move is kept
@@ -41,10 +37,7 @@
 // is dropped at its first tet that already rejects it, a trial's Euclidean score certifies
 // the orientation (orient3d only below kOrientationCertificate), run() of the flips skips
 // faces and edges already tried on the same tets, and the sliver test asks the mean ratio
-// bound η³ ≤ 2 sin²θ before the dihedral cosines. Cube at h = 0.02 (547 k tets): 5.0 G ->
-// 2.3 G instructions (callgrind); the output differs only through the stars' order (slot
-// order of the incidence instead of the walk's: the Laplace means sum in another order),
-// same referee figures. Fixed vertices
+// bound η³ ≤ 2 sin²θ before the dihedral cosines (docs/measurements.md). Fixed vertices
 // (node ≥ 0) never move; the hull (the constrained boundary triangles) is unchanged, so
 // validateSolidTetMesh holds afterwards.
 // Deterministic.
@@ -70,13 +63,12 @@ struct VolumeImproveOptions {
   bool ascentSmoothing = true;
   double lowGradation = 0.05;  ///< δ_M threshold of the mixed (plain / metric) smoothing
   double flipGain = 1e-3;      ///< required increase of the worst η_M for a flip
-  /// Tets visited by the flip pass: η_M below this (> 1: all tets, as the thesis).
-  /// Measured (cube, h = 0.05): all tets 0.859 mean ratio in 0.72 s; 0.7: 0.864 in 0.32 s;
-  /// 0.5: 0.855 in 0.26 s.
+  /// Tets visited by the flip pass: η_M below this (> 1: all tets, as the thesis). 0.7: a
+  /// better mean ratio than visiting all tets, in less than half the time
+  /// (docs/measurements.md).
   double flipCandidate = 0.7;
-  /// Sliver removal target (smallest dihedral angle in the metric). Measured on the cube at
-  /// h = 0.02 (1.3 M tets): 10° gives a smallest dihedral angle of 10.0°, 15° gives 14.1°
-  /// (Gmsh HXT: 13.8°) for the same time within noise.
+  /// Sliver removal target (smallest dihedral angle in the metric). 15°: a smallest angle
+  /// above Gmsh HXT's, for the time 10° takes (docs/measurements.md).
   double sliverAngleDeg = 15.0;
   /// Also a sliver: a Euclidean dihedral angle below this or above 180° minus this (the
   /// referee's measure; matters for anisotropic meshes).

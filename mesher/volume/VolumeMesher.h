@@ -76,12 +76,11 @@ struct VolumeMesherInput {
   /// the changed faces are meshed again; at most this many rounds, only while fewer than
   /// twice the first round's entities are missing, and until maxStalledSplitRounds rounds
   /// in a row leave no fewer missing than the best round (0: off, the solid fails). Each
-  /// round meshes only the solids that changed; ellipses.brep needs 7 (missing 17, 11, 8,
-  /// 6, 2, 1, 0 after the fold guard of the face mesher), 3 left it failed.
+  /// round meshes only the solids that changed; a curved model needs 7 of them
+  /// (docs/measurements.md).
   int maxSplitRounds = 8;
-  /// Splitting that stalls (KiCad's common-mode toroid: 471, 302, 298, 298, 316, 329, 327
-  /// missing; a DC-DC converter's pin: 3, 2, 5, 2, 7, 2) does not recover the solid, and
-  /// each round meshes the solids again. 0: no such bound.
+  /// Splitting that stalls does not recover the solid (docs/measurements.md), and each round
+  /// meshes the solids again. 0: no such bound.
   int maxStalledSplitRounds = 2;
   /// Alg. 3.3's proximity check (ThinBoundary.h): a solid with thin boundary triangles
   /// after carving, or after a recovery that left entities missing, stops there (no

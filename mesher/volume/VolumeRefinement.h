@@ -5,13 +5,13 @@
 // the ideal (unit, regular) tet over that of K, both in the metric M_K at K's centroid;
 // q = (R_I / R_K)³ with R_I = √6/4. M_K is interpolated from the vertices' tensors by
 // eq. 2.18, as the control space interpolates (the inverse of the mean of their length
-// tensors: refine/VertexTensors.h tetLengthMetric; one control-space call per vertex, the one
-// made for the insertion reused, not one per evaluated tet — measured 3.5 evaluations per
-// final tet; a tet with four isotropic vertices takes a scalar fast path). The mean of the
-// tensors themselves is ruled by the finest vertex where the size grades (a harmonic mean
-// of the sizes): measured so, the tets next to a fine boundary looked too large, and
-// the points inserted for them, each with the coarser metric of its place, ended closer
-// than a unit apart (CYLINDER2: interior edges 0.69 in M_v, μ_M 0.82).
+// tensors: refine/VertexTensors.h tetLengthMetric; one control-space call per vertex, the
+// one made for the insertion reused, not one per evaluated tet, which are several per final
+// tet: docs/measurements.md; a tet with four isotropic vertices takes a scalar fast path).
+// The mean of the tensors themselves is ruled by the finest vertex where the size grades (a
+// harmonic mean of the sizes): measured so, the tets next to a fine boundary looked too
+// large, and the points inserted for them, each with the coarser metric of its place, ended
+// closer than a unit apart (docs/measurements.md).
 // When q(K) ≥ q_t but an edge of K is longer than edgeLengthMax in the metric at its
 // midpoint (eq. 2.18 of its ends' tensors), q(K) = 0.95 q_t (5.5.1);
 // edges joining two surface nodes are not checked (a boundary edge cannot be shortened by
@@ -26,8 +26,8 @@
 // constant during the insertion — on the untransformed points when M(P) is isotropic, which
 // gives the same signs exactly; constrained faces are never crossed) with mustRemove = K.
 // The Inserter keeps every tet's circumsphere (Inserter::cacheSpheres): the cavity test with
-// the identity is a certified distance comparison backed by the exact insphere (measured on
-// the cube at h = 0.02: 654 of 3.2 M tests undecided), and q(K) reads R_K from it.
+// the identity is a certified distance comparison backed by the exact insphere (which
+// decides the few tests it leaves: docs/measurements.md), and q(K) reads R_K from it.
 // The insertion is cancelled (the mesh is unchanged) when:
 //   - P is outside the solid (the walk from K leaves through a boundary face: thesis
 //     "the refined and containing elements may be divided by some boundary face");
@@ -45,18 +45,18 @@
 //     (Inserter status Pointless, sec. 5.5.2 third rule); or the Inserter refuses.
 // A cancelled MLE falls back to CCS; a cancelled CCS does not fall back to MLE (the
 // midpoint of the longest edge of a tet whose circumcentre was refused lands 0.2-0.5 in
-// the metric from other vertices in anisotropic layers: CYLINDER2 μ_M 0.82 -> 0.86, η_M
-// 0.800 -> 0.811 without that fallback). When no point is inserted K is postponed: its q
-// is raised by postponeFactor (thesis: "moved further down the heap") and it is retried,
-// at most maxPostpones times, after other insertions.
+// the metric from other vertices in anisotropic layers: docs/measurements.md). When no
+// point is inserted K is postponed: its q is raised by postponeFactor (thesis: "moved
+// further down the heap") and it is retried, at most maxPostpones times, after other
+// insertions.
 // New vertices are free (node = −1, SolidTetMesh::addFreeVertex semantics); fixed vertices
 // and constrained faces are untouched, so validateSolidTetMesh holds afterwards.
 // Order: the queue is consumed in batches — the worst queue.size() / batchDivisor entries
 // (at most maxBatch) are refined in the Hilbert order of their centroids, entries made
 // stale by earlier insertions of the batch skipped. Worst first holds between batches;
 // within one, spatial order keeps the walks short and the memory accesses local (the
-// strict order jumps across the mesh at every insertion: measured 2.3 times slower per
-// tet at 1.4 M tets than at 90 k).
+// strict order jumps across the mesh at every insertion, ever slower per tet as the mesh
+// grows: docs/measurements.md).
 // Deterministic: no randomness beyond the Inserter's seeded walk.
 // Budget: refinement stops (stats.budgetExhausted) once the solid has maxVertices
 // vertices, or budgetFactor × max(eq. 6.2 prediction, 10⁵) vertices more than at the start
@@ -82,9 +82,9 @@ struct VolumeRefineProgress {
 struct VolumeRefineOptions {
   double qualityThreshold = 0.57;  ///< q_t (sec. 5.5.1)
   double edgeLengthMax = 1.5;      ///< l_M threshold of the edge check (sec. 5.5.1)
-  /// q_It: MLE below, CCS at or above (sec. 5.5.2, table 5.5). Measured on the cube fixture
-  /// (h = 1/8, after improvement): q_It = 0 (pure CCS) mean ratio 0.852, min dihedral
-  /// 10.5°; 0.02: 0.811, 2.4°; 0.3: 0.784, 1.4° — as the thesis found for isotropic meshes.
+  /// q_It: MLE below, CCS at or above (sec. 5.5.2, table 5.5). 0 (pure CCS) gives the best
+  /// mean ratio and smallest dihedral angle on isotropic meshes, as the thesis found
+  /// (docs/measurements.md).
   double methodSwitch = 0.0;
   double minVertexDistance = 0.4;    ///< cancellation: metric distance to the nearest vertex
   double minBoundaryDistance = 0.3;  ///< cancellation of MLE points: metric distance to the boundary

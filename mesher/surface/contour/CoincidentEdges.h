@@ -15,8 +15,8 @@
 // floor, a distance below which no element could resolve the model (the caller's: the
 // fuse's largest fuzzy value, 1e-6 of the diagonal; 0 for none). Two ends of one open edge
 // are merged only when the whole edge is shorter than the floor: the edge collapses to a
-// point (collapsedEdge). KiCad's barrel jacks carry faces 1–2 µm wide along a 9 mm edge
-// of a 20 mm part: meshed, they forced flat tetrahedra (0.0°). Representatives by
+// point (collapsedEdge). Faces a few micrometres wide along a long edge, meshed, force flat
+// tetrahedra (docs/measurements.md). Representatives by
 // union-find, the lowest index of each group; a group that would join the two ends of a
 // longer open edge through a third vertex cancels every merge (the CAD's vertices kept).
 // Edges: a < e are twins when they join the same two represented vertices (an open edge,

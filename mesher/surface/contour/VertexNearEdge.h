@@ -5,8 +5,7 @@
 // arc, up to the segment's sagitta s (the arc's largest distance from the chord). A corner
 // closer to the arc than the chord error can lie in that lens, or beyond the chord: the
 // discretized loops then cross in (u, v) and the face cannot be meshed, although the CAD
-// loops do not touch (measured: a 0.63 mm square hole whose corner is 2.5 um from a
-// 0.58 mm radius rim; chords of 0.15 mm have s = 4.8 um).
+// loops do not touch (docs/measurements.md).
 //
 // addNodesNearVertices puts a node on the edge at the point nearest to such a corner: the
 // discretized edge then passes through the point of the arc next to the corner, and the

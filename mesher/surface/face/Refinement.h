@@ -66,8 +66,8 @@ struct RefineOptions {
   /// the front — next to a contour or an accepted triangle — are refined, each by the
   /// frontal point on its front edge (the MLE/CCS point when that is cancelled); when the
   /// front is exhausted the remaining bad triangles get the mixed MLE/CCS method. Far more
-  /// regular meshes than MLE/CCS alone (measured: referee mean ratio 0.97 → 0.99 on a
-  /// uniform plane). false: the thesis' MLE/CCS method only.
+  /// regular meshes than MLE/CCS alone (docs/measurements.md). false: the thesis' MLE/CCS
+  /// method only.
   bool frontal = true;
   /// Receives the predicted final triangle count (thesis 6.5): eq. 6.2 once the initial
   /// triangles are evaluated, then eq. 6.1, NT_c · q_t / q(K_root), every

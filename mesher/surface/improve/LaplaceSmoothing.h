@@ -13,15 +13,12 @@
 //     a constant metric gives back eq. 4.2 (the sum would overshoot n-fold).
 //     Size normalisation (metricSize = false, the default; documented deviation): each M_i
 //     is scaled to the determinant of M_Q, so only the variation of the metric's shape
-//     (directions, aspect ratio) enters, not that of its size. Reason, measured: on meshes
+//     (directions, aspect ratio) enters, not that of its size. Reason: on meshes
 //     whose vertex density already follows a graded size (as the refinement of sec. 4.5
 //     produces them) the connectivity encodes the gradation — more neighbours on the fine
 //     side — and the plain average is close to equilibrium; weighting the neighbours
 //     additionally by 1/h at the edge midpoints counts the gradation twice and drags the
-//     vertices towards the fine side sweep after sweep. Measured (2 passes of alg. 4.2,
-//     mean η_M): size ×30 across a random-point face: plain 0.866, normalised 0.866,
-//     verbatim 0.858; direction turning by 6 rad: 0.849, 0.855, 0.855; face-mesher output
-//     of AN1 (k = 2): 0.956, 0.957, 0.955.
+//     vertices towards the fine side sweep after sweep (docs/measurements.md).
 //     metricSize = true is eq. 4.3 verbatim.
 // Check, then change: the move Q → Q' is accepted only when every triangle of the star
 // stays counter-clockwise (exact orient2d) and the star gets better, each star triangle

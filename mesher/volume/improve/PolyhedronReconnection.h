@@ -12,9 +12,9 @@
 // those grown once more (breadth first, each polyhedron once, kMaxReconnectionTries in all).
 //
 // The case it is for: a film whose top and bottom were meshed alike, each top node just
-// above a bottom one (a label 1 um thick). Its tets fill prisms between such columns, and
-// where two neighbouring prisms split the wall between two columns by different diagonals
-// a flat tet on the wall's four nodes fills the gap (0.06 deg); every flip of it or edge
+// above a bottom one (a label a micrometre thick). Its tets fill prisms between such columns,
+// and where two neighbouring prisms split the wall between two columns by different
+// diagonals a flat tet on the wall's four nodes fills the gap; every flip of it or edge
 // removal around it makes another such tet. Re-splitting the two prisms together, the
 // wall by one diagonal, removes it — or, when their other walls leave one of them no
 // split with that diagonal, together with a third prism.
@@ -41,7 +41,8 @@ inline constexpr std::size_t kMaxReconnectionTets = 12;
 /// At most this many vertices in the polyhedron.
 inline constexpr std::size_t kMaxReconnectionVertices = 10;
 /// Bounds of the search: candidate tets tried for one polyhedron, and over all the
-/// polyhedra of one call (about 50 ms; NEO's 1 um label needed 2 calls of about 60 000).
+/// polyhedra of one call (a call stays within tens of milliseconds, and a label's film needs
+/// only a few calls: docs/measurements.md).
 inline constexpr int kMaxReconnectionSteps = 5000;
 inline constexpr int kMaxReconnectionTotalSteps = 200000;
 /// When the polyhedron has no better tetrahedralization, it grown by the tet across one of

@@ -29,7 +29,7 @@
 //     with the same vertices and boundary (PolyhedronReconnection.h: a search, too dear for
 //     every tet of a film below the target), again on a tet it made still below that
 //     angle (kReconnectionChain), then flips as in 1. Tried before 3 and 4 it
-//     changed what they found later: a KiCad pin socket's flattest tet 0.74 -> 0.34 deg.
+//     changed what they found later, for the worse (docs/measurements.md).
 // A solid where more than kFilmSliverShare of the tets are slivers is thinner than its
 // elements (a film or label the proximity rounds could not refine): steps 3 and 4 are left
 // out, where every new point only adds flat tets, and so are the rounds in the metric,

@@ -20,8 +20,8 @@ namespace aniso::improve3d {
 
 /// The mean η_M (cube root of the score, negatives as 0) of the live tets of `mesh`, scores
 /// read from `score(TetId)`: exact up to kMeanExactSlots tet slots, above estimated from
-/// every kMeanStride-th slot (deterministic; 1/16 of the cube roots: on the cube at h = 0.02,
-/// 549 k tets, within 1e-4 of the exact mean).
+/// every kMeanStride-th slot (deterministic; 1/16 of the cube roots, close to the exact mean
+/// on large meshes: docs/measurements.md).
 inline constexpr std::uint32_t kMeanExactSlots = 1u << 16;
 inline constexpr std::uint32_t kMeanStride = 16;
 template <class Score>

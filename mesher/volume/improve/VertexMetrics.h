@@ -12,8 +12,7 @@
 // (what the referee measures) counts as poor, and of two poor tets the one with the smaller
 // dihedral angle is the worse — a spire (three vertices close together, every dihedral
 // angle large) has a mean ratio as low as a sliver's, and maximising the mean ratio alone
-// traded such tets for slivers at a short boundary feature (SampleCrankshaft4A: 1.73° ->
-// 0.83°).
+// traded such tets for slivers at a short boundary feature (docs/measurements.md).
 #include <array>
 #include <cmath>
 #include <cstdint>

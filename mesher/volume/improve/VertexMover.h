@@ -12,7 +12,7 @@
 //   Accepted when legal and the star gets better in η_M: a poor star (worst below
 //   qualityFloor) raises its worst, another keeps the worst ≥ qualityFloor and does not
 //   lower its mean of η_M³ (the cube: no cube roots, and the poorer tets weigh less than
-//   in the plain mean — measured on the cube, h = 1/40: same mean ratio 0.868); else the
+//   in the plain mean, for the same mean ratio: docs/measurements.md); else the
 //   half move is tried. Stars are compared on η_M³ throughout (VertexMetrics::score).
 //   With `ascent`, a step of steepest ascent of the star's mean η_M (analytic gradient,
 //   backtracking line search: ascentStep) is tried first, under the same acceptance: the

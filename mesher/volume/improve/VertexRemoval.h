@@ -4,8 +4,7 @@
 // control space asks for, and where a solid is only one or two elements across (a box
 // meshed at h close to its width, a thin wall) those points can be crowded, and no
 // relocation or flip of the tets around them reaches the quality the boundary alone allows
-// (box.brep at the defaults: five inner points, 48 tets, mean ratio 0.73; its boundary
-// nodes alone give 24 tets at 0.90).
+// (docs/measurements.md).
 //
 // tryRemove(v): the star of v (the tets around it) is a polyhedron bounded by its link (the
 // faces opposite v). It is re-tetrahedralised without v in two ways, and the better one
@@ -18,15 +17,15 @@
 // Before v alone, v with its free neighbours (at most maxGroup of them) is tried as a group:
 // their stars' union re-tetrahedralised by the Delaunay fill of its boundary vertices — one
 // at a time, crowded points may each fail (the mean drops on the way, or the last one's link
-// is cospherical and its fill misses link faces: box.brep's five points go only together).
+// is cospherical and its fill misses link faces).
 // Neither may lower the mesh's mean η_M: Σ new − Σ old ≥ mean · (new count − old count),
 // the mean taken at run()'s start (without it a removal that raised a star's worst lowered
-// box_1.5x1x1's mean ratio at the defaults from 0.820 to 0.729).
+// a box's mean ratio by a tenth: docs/measurements.md).
 // The retriangulation must also keep the star's worst guarded score (the smallest of η_M,
 // the Euclidean η and the cubed dihedral sine, VertexMetrics::setGuardEuclidean): a better
 // worst η_M bought with a smaller dihedral angle is refused (at the needle boundary
-// triangles of SampleCrankshaft4A's short edges, η_M alone let the smallest dihedral
-// angle fall from 2.16° to 1.96°, below what the sliver removal could repair).
+// triangles of short edges, η_M alone let the smallest dihedral angle fall below what the
+// sliver removal could repair: docs/measurements.md).
 // Check, then change: every new tet positively oriented (the exact orient3d, or a
 // Euclidean score that certifies it, VertexMetrics::certifiesOrientation); the new tets'
 // boundary is exactly the link (volume::replaceRegion refuses otherwise); every new edge
@@ -42,15 +41,11 @@
 // excepted) are fixed vertices. Crowding among free vertices is the smoothing's to undo
 // (they move); where the star hangs on the surface nodes they cannot, and that is where the
 // refinement crowds points (a layer one or two elements thick). The rule is also what keeps
-// the cost down: on the cube at h = 0.02 (548 k tets) it leaves about 1 k candidates of the
-// 234 k stars below 0.8 (0.035-0.05 s; every star below 0.8: 16 s), 135 removed.
+// the cost down: it leaves a small share of the poor stars (docs/measurements.md).
 // run(): the candidates from one scan of the tets, worst first (ties by vertex id:
 // deterministic); then rounds over the free vertices of the tets the previous round made,
-// by id, until a round removes nothing (at most maxRounds).
-// Measured (check_mesh --dim 3 at the options, referee mean ratio, one improvement
-// pass, before -> after the removal): ellipses.brep 0.8032 -> 0.8069, simple_plane.brep
-// 0.8074 -> 0.8162, U_Joint_2.stp 0.8111 -> 0.8122, Block.stp 0.8192 -> 0.8218; the cube
-// 0.8719 -> 0.8721. box.brep at the defaults: 48 tets, 0.731 -> 24 tets, 0.905 (one group).
+// by id, until a round removes nothing (at most maxRounds). What it gains:
+// docs/measurements.md.
 // With a score cache (TetScores) the stars' scores are read from it and the created tets
 // are measured into it (its contract).
 #include <array>
@@ -79,15 +74,13 @@ struct VertexRemovalOptions {
   std::size_t maxGroupTets = 128;  ///< and at most this many tets in their stars
   int maxRounds = 4;
   /// run()'s budget of Delaunay fills (single and group): max(minFills, tets / tetsPerFill),
-  /// spent worst star first. A fill costs about 50-150 µs (the kernel's set-up dominates for
-  /// a few tens of points); where nearly every star is held by the boundary and poor (a
-  /// plate 1 x 0.5 x 0.01 at the defaults: 5.9 k candidates in 70 k tets, 59 removed) an
-  /// unbounded run cost 0.79 s, 25 times the rest of the improvement. The cube at h = 0.02
-  /// (549 k tets) uses about 1 k of its 2.7 k.
+  /// spent worst star first. A fill is dear (the kernel's set-up dominates for a few tens of
+  /// points); where nearly every star is held by the boundary and poor (a thin plate) an
+  /// unbounded run costs many times the rest of the improvement, while a usual mesh stays
+  /// well within the budget (docs/measurements.md).
   std::size_t minFills = 256;
   std::size_t tetsPerFill = 200;
-  /// and of candidates (a candidate without a fill costs about 20 µs: the plate above, 5.9 k
-  /// candidates, 0.14 s): max(minCandidates, tets / tetsPerCandidate).
+  /// and of candidates (docs/measurements.md): max(minCandidates, tets / tetsPerCandidate).
   std::size_t minCandidates = 1024;
   std::size_t tetsPerCandidate = 50;
 };

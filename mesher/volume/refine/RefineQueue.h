@@ -1,11 +1,10 @@
 #pragma once
 // The refinement queue of alg. 5.3: tets with q(K) < q_t, worst first. A binary heap over
-// millions of entries spends most of its time in cache misses (measured: 17 % of the
-// refinement at 0.7 M tets in the heap's sift-down alone), so this is a bucket queue:
-// q ∈ [0, q_t) is cut into kBuckets equal buckets (width q_t / kBuckets ≈ 0.009), pop()
-// takes from the lowest non-empty bucket, last in first out within a bucket (the tets
-// made by the latest insertion, which lie together). Worst first holds to the bucket
-// width; push and pop are O(1). Deterministic.
+// millions of entries spends most of its time in cache misses (docs/measurements.md), so
+// this is a bucket queue: q ∈ [0, q_t) is cut into kBuckets equal buckets (width q_t /
+// kBuckets ≈ 0.009), pop() takes from the lowest non-empty bucket, last in first out within
+// a bucket (the tets made by the latest insertion, which lie together). Worst first holds
+// to the bucket width; push and pop are O(1). Deterministic.
 // Lazy deletion: each tet slot carries a stamp that changes whenever the slot gets a new
 // tet; an entry whose stamp differs, or whose slot is free, is stale and skipped by pop().
 // Entries are 12 bytes; compactIfGrown() drops stale ones when the queue has doubled.
