@@ -34,10 +34,14 @@ double accurateVolume(const TopoDS_Shape& solid) {
 }
 
 double solidVolumeOf(const CadModel::Impl& impl, const TopoDS_Shape& solid) {
-  if (const double* v = impl.volumes.Seek(solid)) return *v;
-  const double v = accurateVolume(solid);
-  impl.volumes.Bind(solid, v);
-  return v;
+  // instances of one part (one TShape, several locations) are integrated once, unplaced;
+  // a placement that scales scales the volume by the cube of its factor
+  const TopoDS_Shape part = solid.Located(TopLoc_Location());
+  const double scale = std::pow(std::abs(solid.Location().Transformation().ScaleFactor()), 3);
+  if (const double* v = impl.volumes.Seek(part)) return *v * scale;
+  const double v = accurateVolume(part);
+  impl.volumes.Bind(part, v);
+  return v * scale;
 }
 
 Box3 exactBoundingBox(const TopoDS_Shape& shape) {

@@ -44,8 +44,9 @@ struct CadModel::Impl {
   /// The length unit the file declares ("inch", "millimetre"; "" when it says none or is
   /// BREP); OCCT converts to mm on reading.
   std::string fileUnit;
-  /// accurateVolume of the solids measured so far, keyed by the solid (TShape + location):
-  /// summary() and topology() of one prepared shape integrate each solid once.
+  /// accurateVolume of the solids measured so far, keyed by the solid without its location
+  /// (solidVolumeOf): summary() and topology() of one prepared shape integrate each part
+  /// once, however many times the assembly places it.
   mutable TopTools_DataMapOfShapeReal volumes;
   /// The token of the operation under way (read, prepare): stops the child processes.
   const CancelToken* cancel = nullptr;

@@ -15,7 +15,8 @@ ShapeSummary summarize(const CadModel::Impl& impl);
 /// on a helical thread: docs/measurements.md).
 double accurateVolume(const TopoDS_Shape& solid);
 
-/// accurateVolume of a solid of impl's shape, remembered in impl.volumes.
+/// accurateVolume of a solid of impl's shape, remembered in impl.volumes (per part: every
+/// placement of one TShape shares it).
 double solidVolumeOf(const CadModel::Impl& impl, const TopoDS_Shape& solid);
 
 /// Bounding box of the shape from its geometry (no triangulation); B-splines bounded by
