@@ -5,7 +5,7 @@
 // vertices. The sibling of CSQuadtree2d: same SizingParameters (ε_M, ε_δ, l_Mmax), same
 // CSAdaptive2d operations, same grid() export (VTK_TRIANGLE cells).
 //
-// Structure and field: BackgroundMesh2d (see BackgroundMesh2d.h for the interpolation
+// Structure and field: BackgroundMesh2d (see BackgroundMesh.h for the interpolation
 // sets A_s / A_t / A_o of sec. 3.4.5 with the inverse squared-distance weights of eq. 3.2
 // in S^R and the ε_M shortcut, the kernel's enclosing box whose 4 corners are control
 // vertices too, and the thread-safety design). The interpolation set and the check
@@ -31,7 +31,7 @@
 //                         within about l_Mmax element lengths, as the quadtree's leaves
 //                         of that size do; otherwise the vertices of the containing
 //                         triangle are intersected with M_sQ (as the leaf corners).
-//   setContinuousSource   sec. 3.4.2, see BackgroundMesh2d::setContinuous; then folds in
+//   setContinuousSource   sec. 3.4.2, see BackgroundMesh::setContinuous; then folds in
 //                         point / extended sources collected while fresh.
 //   adaptToParameterization  sec. 3.4.3 (as 3.3.3): M_p cached at the vertices, triangles
 //                         refined where M_p varies by more than ε_δ.
@@ -44,7 +44,7 @@
 // the caller.
 #include <memory>
 
-#include "mesher/control/BackgroundMesh2d.h"
+#include "mesher/control/BackgroundMesh.h"
 #include "mesher/control/CSAdaptive2d.h"
 #include "mesher/control/ControlSpaceGrid.h"
 #include "mesher/control/PerThreadState.h"
@@ -84,7 +84,7 @@ class CSMesh2d final : public CSAdaptive2d {
   void setInterpolation(BackgroundInterpolation method) { mesh_.setInterpolation(method); }
   /// Triangles and per-vertex tensors for visualisation (cellSize 3, VTK_TRIANGLE).
   ControlSpaceGrid grid() const { return mesh_.grid(); }
-  /// Throws MeshingError naming the first broken invariant (BackgroundMesh2d::validate).
+  /// Throws MeshingError naming the first broken invariant (BackgroundMesh::validate).
   void validate() const { mesh_.validate(); }
 
  protected:

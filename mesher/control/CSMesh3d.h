@@ -14,7 +14,7 @@
 // For repeated queries at nearby points wrap calls in a MetricQueryCache3d.
 // Thread safety: getMetric() and the other const methods may run concurrently on a
 // control space that is not being modified (per-thread location hints, PerThreadState).
-#include "mesher/control/BackgroundMesh3d.h"
+#include "mesher/control/BackgroundMesh.h"
 #include "mesher/control/CSAdaptive3d.h"
 #include "mesher/control/ControlSpaceGrid.h"
 #include "mesher/control/PerThreadState.h"
