@@ -309,8 +309,8 @@ void BackgroundMesh<D>::setContinuous(const MetricFn& source) {
     return false;
   };
   const auto values = [&](const Vec& p, Elem near, MetricD& m, Aux& aux) {
-    // The field only where it is needed: for the intersection, or for M_p (pure: the
-    // source is evaluated after it as before).
+    // The field only where it is needed: for the intersection, or for M_p (fieldNear
+    // only reads the mesh, so it may come before the source).
     MetricD field;
     if (kParameterized || !exact) fieldNear(p, near, &field, &aux);
     const MetricD s = source(p);
