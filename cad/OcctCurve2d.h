@@ -19,6 +19,7 @@
 #include <memory>
 #include <string>
 
+#include "cad/detail/OcctCurveCommon.h"
 #include "mesher/geometry/ParametricCurve2d.h"
 
 namespace aniso::cad {
@@ -33,22 +34,21 @@ class OcctCurve2d final : public ParametricCurve2d {
   Curve2dD2 d2(double t) const override;
   /// The curve's natural range, extended to cover the edge's range (a periodic curve's edge
   /// may run past its period); an infinite end (lines) is the edge's end.
-  double tMin() const override { return tMin_; }
-  double tMax() const override { return tMax_; }
+  double tMin() const override { return range_.tMin; }
+  double tMax() const override { return range_.tMax; }
   std::unique_ptr<ParametricCurve2d> clone() const override;
 
   /// The parameter range the edge uses on this face.
-  double first() const { return first_; }
-  double last() const { return last_; }
+  double first() const { return range_.first; }
+  double last() const { return range_.last; }
   const std::string& name() const { return name_; }
 
  private:
   OcctCurve2d(const OcctCurve2d& other);
-  [[noreturn]] void fail(const char* what, double t, const std::string& occtMessage) const;
 
   Handle(Geom2d_Curve) curve_;
   Handle(Geom2dAdaptor_Curve) adaptor_;
-  double first_ = 0, last_ = 0, tMin_ = 0, tMax_ = 0;
+  detail::OcctCurveRange range_;
   std::string name_;
 };
 

@@ -17,6 +17,7 @@
 #include <memory>
 #include <string>
 
+#include "cad/detail/OcctCurveCommon.h"
 #include "mesher/geometry/ParametricCurve3d.h"
 
 namespace aniso::cad {
@@ -31,13 +32,13 @@ class OcctCurve3d final : public ParametricCurve3d {
   Vec3 point(double t) const override;
   Curve3dD2 d2(double t) const override;
   /// Natural range extended to cover the edge's range; infinite ends are the edge's ends.
-  double tMin() const override { return tMin_; }
-  double tMax() const override { return tMax_; }
+  double tMin() const override { return range_.tMin; }
+  double tMax() const override { return range_.tMax; }
   std::unique_ptr<ParametricCurve3d> clone() const override;
 
   /// The parameter range of the edge.
-  double first() const { return first_; }
-  double last() const { return last_; }
+  double first() const { return range_.first; }
+  double last() const { return range_.last; }
   /// True when evaluated through a curve on a surface (the edge has no 3D curve).
   bool onSurface() const { return curve_.IsNull(); }
   const std::string& name() const { return name_; }
@@ -45,13 +46,12 @@ class OcctCurve3d final : public ParametricCurve3d {
  private:
   OcctCurve3d(const OcctCurve3d& other);
   void makeAdaptor();
-  [[noreturn]] void fail(const char* what, double t, const std::string& occtMessage) const;
 
   Handle(Geom_Curve) curve_;       ///< the 3D curve (location applied), or null
   Handle(Geom2d_Curve) pcurve_;    ///< else: a pcurve ...
   Handle(Geom_Surface) surface_;   ///< ... on this surface (location applied)
   Handle(Adaptor3d_Curve) adaptor_;
-  double first_ = 0, last_ = 0, tMin_ = 0, tMax_ = 0;
+  detail::OcctCurveRange range_;
   std::string name_;
 };
 

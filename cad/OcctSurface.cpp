@@ -15,18 +15,14 @@
 #include <limits>
 #include <sstream>
 
+#include "cad/detail/OcctConvert.h"
 #include "mesher/core/Error.h"
 
 namespace aniso::cad {
 namespace {
 
-Vec3 toVec(const gp_Pnt& p) { return {p.X(), p.Y(), p.Z()}; }
-Vec3 toVec(const gp_Vec& v) { return {v.X(), v.Y(), v.Z()}; }
-
-std::string occtMessage(const Standard_Failure& e) {
-  const char* m = e.GetMessageString();
-  return (m && *m) ? std::string(m) : std::string(e.DynamicType()->Name());
-}
+using detail::occtMessage;
+using detail::toEigen;
 
 /// Fraction of a face's parametric extent added on each side of an unbounded direction.
 constexpr double kUnboundedMargin = 0.1;
@@ -110,7 +106,7 @@ Vec3 OcctSurface::point(const Vec2& uv) const {
   } catch (const Standard_Failure& e) {
     fail("point", uv, occtMessage(e).c_str());
   }
-  return toVec(p);
+  return toEigen(p);
 }
 
 SurfaceD1 OcctSurface::d1(const Vec2& uv) const {
@@ -121,7 +117,7 @@ SurfaceD1 OcctSurface::d1(const Vec2& uv) const {
   } catch (const Standard_Failure& e) {
     fail("first derivatives", uv, occtMessage(e).c_str());
   }
-  return {toVec(p), toVec(pu), toVec(pv)};
+  return {toEigen(p), toEigen(pu), toEigen(pv)};
 }
 
 SurfaceD2 OcctSurface::d2(const Vec2& uv) const {
@@ -132,7 +128,7 @@ SurfaceD2 OcctSurface::d2(const Vec2& uv) const {
   } catch (const Standard_Failure& e) {
     fail("second derivatives", uv, occtMessage(e).c_str());
   }
-  return {toVec(p), toVec(pu), toVec(pv), toVec(puu), toVec(puv), toVec(pvv)};
+  return {toEigen(p), toEigen(pu), toEigen(pv), toEigen(puu), toEigen(puv), toEigen(pvv)};
 }
 
 bool OcctSurface::isLocalMinimum(const Vec3& x, const Vec2& uv) const {

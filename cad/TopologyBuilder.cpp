@@ -58,6 +58,7 @@
 #include "cad/OcctCurve2d.h"
 #include "cad/OcctCurve3d.h"
 #include "cad/OcctSurface.h"
+#include "cad/detail/OcctConvert.h"
 #include "cad/detail/ShapeSummary.h"
 #include "cad/detail/SheetShell.h"
 #include "mesher/model/ChainLoop.h"
@@ -65,6 +66,8 @@
 
 namespace aniso::cad {
 namespace {
+
+using detail::occtMessage;
 
 /// The kernel's area or volume that `props` (a BRepGProp call) adds up; 0 when it fails
 /// or is not positive (not known).
@@ -77,11 +80,6 @@ double measure(const Props& props) {
   } catch (const Standard_Failure&) {
     return 0;
   }
-}
-
-std::string occtMessage(const Standard_Failure& e) {
-  const char* m = e.GetMessageString();
-  return (m && *m) ? std::string(m) : std::string(e.DynamicType()->Name());
 }
 
 std::string entityName(const char* kind, int index) {

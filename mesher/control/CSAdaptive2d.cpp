@@ -1,6 +1,6 @@
 #include "mesher/control/CSAdaptive2d.h"
 
-#include "mesher/metric/MetricIntersection.h"
+#include "mesher/control/CSAdaptiveGeneral.h"
 
 namespace aniso {
 
@@ -12,18 +12,7 @@ void CSAdaptive2d::initializeControlVertices() {
 }
 
 void CSAdaptive2d::superpose(const ControlSpace2d& other) {
-  if (&other == this) return;  // min_M(A, A) = A
-  const auto* adaptive = dynamic_cast<const CSAdaptive2d*>(&other);
-  if (!initialized() || !adaptive) {
-    setContinuousSource(other);
-    if (!adaptive) return;
-  }
-  const auto intersectWithOther = [&other](const Vec2& uv, Metric2d& m) {
-    return intersectInto(m, other.getMetric(uv).sizing);
-  };
-  modifyControlVertices(intersectWithOther);                                                     // (1)
-  adaptive->forEachControlVertex([this](const Vec2& uv, const Metric2d& m) { insertDiscreteSource(uv, m); });  // (2)
-  modifyControlVertices(intersectWithOther);                                                     // (3)
+  superposeAdaptive(*this, other, [](const ControlSpace2d& space, const Vec2& x) { return space.getMetric(x).sizing; });
 }
 
 void CSAdaptive2d::insertExtendedSource(const ExtendedSource2d& source, const Metric2d& sizing) {
@@ -39,10 +28,7 @@ void CSAdaptive2d::insertExtendedSource(const ExtendedSource2d& source, const Me
 }
 
 void CSAdaptive2d::applyExtendedDomain(const ExtendedSource2d& source, const Metric2d& sizing) {
-  const Box2 box = source.bounds();
-  modifyControlVertices([&](const Vec2& uv, Metric2d& m) {
-    return box.contains(uv, 1e-12 * (1 + box.diagonal())) && source.contains(uv) && intersectInto(m, sizing);
-  });
+  aniso::applyExtendedDomain(*this, source, sizing);
 }
 
 }  // namespace aniso

@@ -1,6 +1,6 @@
 #include "mesher/control/CSAdaptive3d.h"
 
-#include "mesher/metric/MetricIntersection.h"
+#include "mesher/control/CSAdaptiveGeneral.h"
 
 namespace aniso {
 
@@ -12,16 +12,7 @@ void CSAdaptive3d::initializeControlVertices() {
 }
 
 void CSAdaptive3d::superpose(const ControlSpace3d& other) {
-  if (&other == this) return;  // min_M(A, A) = A
-  const auto* adaptive = dynamic_cast<const CSAdaptive3d*>(&other);
-  if (!initialized() || !adaptive) {
-    setContinuousSource(other);
-    if (!adaptive) return;
-  }
-  const auto intersectWithOther = [&other](const Vec3& x, Metric3d& m) { return intersectInto(m, other.getMetric(x)); };
-  modifyControlVertices(intersectWithOther);                                                         // (1)
-  adaptive->forEachControlVertex([this](const Vec3& x, const Metric3d& m) { insertDiscreteSource(x, m); });  // (2)
-  modifyControlVertices(intersectWithOther);                                                         // (3)
+  superposeAdaptive(*this, other, [](const ControlSpace3d& space, const Vec3& x) { return space.getMetric(x); });
 }
 
 void CSAdaptive3d::insertExtendedSource(const ExtendedSource3d& source, const Metric3d& sizing) {
@@ -33,10 +24,7 @@ void CSAdaptive3d::insertExtendedSource(const ExtendedSource3d& source, const Me
 }
 
 void CSAdaptive3d::applyExtendedDomain(const ExtendedSource3d& source, const Metric3d& sizing) {
-  const Box3 box = source.bounds();
-  modifyControlVertices([&](const Vec3& x, Metric3d& m) {
-    return box.contains(x, 1e-12 * (1 + box.diagonal())) && source.contains(x) && intersectInto(m, sizing);
-  });
+  aniso::applyExtendedDomain(*this, source, sizing);
 }
 
 }  // namespace aniso

@@ -7,9 +7,6 @@
 
 namespace aniso {
 
-CSMesh2d::CSMesh2d(const Box2& bounds, const SizingParameters& params, const BackgroundMeshOptions& options)
-    : mesh_(bounds, params, options), hints_([] { return std::make_unique<MeshLocateHint2d>(); }) {}
-
 SurfaceMetricAt CSMesh2d::getMetric(const Vec2& uv) const { return getMetric(uv, hints_.local()); }
 
 SurfaceMetricAt CSMesh2d::getMetric(const Vec2& uv, MeshLocateHint2d& hint) const {

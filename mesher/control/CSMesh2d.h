@@ -5,7 +5,7 @@
 // vertices. The sibling of CSQuadtree2d: same SizingParameters (ε_M, ε_δ, l_Mmax), same
 // CSAdaptive2d operations, same grid() export (VTK_TRIANGLE cells).
 //
-// Structure and field: BackgroundMesh2d (see BackgroundMesh2d.h for the interpolation
+// Structure and field: BackgroundMesh2d (see BackgroundMesh.h for the interpolation
 // sets A_s / A_t / A_o of sec. 3.4.5 with the inverse squared-distance weights of eq. 3.2
 // in S^R and the ε_M shortcut, the kernel's enclosing box whose 4 corners are control
 // vertices too, and the thread-safety design). The interpolation set and the check
@@ -31,69 +31,45 @@
 //                         within about l_Mmax element lengths, as the quadtree's leaves
 //                         of that size do; otherwise the vertices of the containing
 //                         triangle are intersected with M_sQ (as the leaf corners).
-//   setContinuousSource   sec. 3.4.2, see BackgroundMesh2d::setContinuous; then folds in
+//   setContinuousSource   sec. 3.4.2, see BackgroundMesh::setContinuous; then folds in
 //                         point / extended sources collected while fresh.
 //   adaptToParameterization  sec. 3.4.3 (as 3.3.3): M_p cached at the vertices, triangles
 //                         refined where M_p varies by more than ε_δ.
 //   smoothGradation       sec. 3.4.4, edge marking until no change.
 // For repeated queries at nearby points wrap calls in a MetricQueryCache2d (sec. 3.2.4
 // item 3).
+// The operations shared with CSMesh3d are in CSMesh<D> (CSMesh.h).
 // Thread safety: getMetric(), parameterizationAt() and the other const methods may run
 // concurrently on a control space that is not being modified. getMetric(uv) keeps the
 // last located triangle per thread (PerThreadState); getMetric(uv, hint) takes it from
 // the caller.
 #include <memory>
 
-#include "mesher/control/BackgroundMesh2d.h"
-#include "mesher/control/CSAdaptive2d.h"
-#include "mesher/control/ControlSpaceGrid.h"
-#include "mesher/control/PerThreadState.h"
-#include "mesher/core/MeshOptions.h"
+#include "mesher/control/CSMesh.h"
 
 namespace aniso {
 
-class CSMesh2d final : public CSAdaptive2d {
+class CSMesh2d final : public CSMesh<2> {
  public:
   /// Throws InputError for an empty box or bad parameters / options.
-  CSMesh2d(const Box2& bounds, const SizingParameters& params, const BackgroundMeshOptions& options = {});
+  CSMesh2d(const Box2& bounds, const SizingParameters& params, const BackgroundMeshOptions& options = {})
+      : CSMesh<2>(bounds, params, options) {}
 
   // ControlSpace2d
   SurfaceMetricAt getMetric(const Vec2& uv) const override;
-  Box2 bounds() const override { return mesh_.bounds(); }
-  std::uint64_t revision() const override { return mesh_.revision(); }
 
   // CSAdaptive2d
-  void insertDiscreteSource(const Vec2& uv, const Metric2d& sizing) override { mesh_.insertDiscrete(uv, sizing); }
   void setContinuousSource(const ControlSpace2d& source) override;
-  bool initialized() const override { return mesh_.valued(); }
-  std::size_t pendingSourceCount() const override { return mesh_.pendingSources(); }
   void adaptToParameterization(const ParametricSurface& surface, double gMin) override;
   Mat2 parameterizationAt(const Vec2& uv) const override { return mesh_.auxAt(uv, hints_.local()); }
-  int smoothGradation(double gamma) override { return mesh_.smoothGradation(gamma); }
-  void forEachControlVertex(const VertexVisitor& visit) const override { mesh_.forEachVertex(visit); }
-  void modifyControlVertices(const VertexModifier& modify) override { mesh_.modifyVertices(modify); }
-  /// Every vertex of the background mesh, the 4 box corners included.
-  std::size_t controlVertexCount() const override { return mesh_.vertexCount(); }
 
   // background-mesh specifics
   /// getMetric with a caller-owned location hint (one per thread).
   SurfaceMetricAt getMetric(const Vec2& uv, MeshLocateHint2d& hint) const;
-  const BackgroundMesh2d& structure() const { return mesh_; }
   std::size_t triangleCount() const { return mesh_.triangulation().numTriangles(); }
-  BackgroundInterpolation interpolation() const { return mesh_.options().interpolation; }
-  void setInterpolation(BackgroundInterpolation method) { mesh_.setInterpolation(method); }
-  /// Triangles and per-vertex tensors for visualisation (cellSize 3, VTK_TRIANGLE).
-  ControlSpaceGrid grid() const { return mesh_.grid(); }
-  /// Throws MeshingError naming the first broken invariant (BackgroundMesh2d::validate).
-  void validate() const { mesh_.validate(); }
-
- protected:
-  void initializeVertexMetrics() override { mesh_.initializeVertices(); }
 
  private:
-  BackgroundMesh2d mesh_;
   std::unique_ptr<ParametricSurface> surface_;  ///< clone for M_p at new vertices
-  PerThreadState<MeshLocateHint2d> hints_;
 };
 
 }  // namespace aniso

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "mesher/control/ControlSpaceGridTensors.h"
 #include "mesher/control/TreeControlSpace.h"
 #include "mesher/core/Error.h"
 #include "mesher/metric/MetricGradation.h"
@@ -241,21 +242,8 @@ ControlSpaceGrid TreeControlSpace<D>::grid() const {
     for (int i = 0; i < Tree::kCorners; ++i) g.cells.push_back(tree_.corners(leaf)[kVtk[i]]);
     g.cellLevel.push_back(tree_.level(leaf));
   }
-  if (valued_) {
-    g.metric.assign(nv, Mat3::Zero());
-    g.lengths.assign(nv, Vec3::Zero());
-    g.directions.assign(nv, Mat3::Identity());
-    for (int v = 0; v < nv; ++v) {
-      const MetricAxes<D> a = metric_[v].axes();
-      g.metric[v].template topLeftCorner<D, D>() = metric_[v].matrix();
-      g.lengths[v].template head<D>() = a.lengths;
-      g.directions[v].template topLeftCorner<D, D>() = a.directions;
-    }
-  }
-  if (hasAux_) {
-    g.parameterization.assign(nv, Mat3::Zero());
-    for (int v = 0; v < nv; ++v) g.parameterization[v].template topLeftCorner<D, D>() = aux_[v];
-  }
+  if (valued_) setGridTensors<D>(g, metric_);
+  if (hasAux_) setGridParameterization<D>(g, aux_);
   return g;
 }
 
