@@ -31,7 +31,7 @@ std::pair<MeshResult, AdaptSourcesRecord> meshOnce(const Model& model, const Pat
 }  // namespace
 
 bool AdaptResult::reached() const {
-  return stop == "error asked" || (!rounds.empty() && stop == "within tolerance");
+  return stop == "error asked" || stop == "within tolerance";
 }
 
 std::size_t outputNodes(const MeshResult& r) {
